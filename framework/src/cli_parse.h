@@ -1,0 +1,21 @@
+#pragma once
+// Parsing of the command line's value formats, with one-line errors.
+#include "camera.h"
+
+#include <string>
+
+namespace raylab {
+
+struct Size {
+    int width = 0;
+    int height = 0;
+};
+
+// "WxH", each side 1..kMaxSide. Throws Error("--size '...': ...").
+Size parseSize(const std::string& text);
+inline constexpr int kMaxSide = 8192;
+
+// "x,y,z,yaw,pitch" (degrees; pitch within +-Camera::kMaxPitchDeg).
+CameraPose parseCamera(const std::string& text);
+
+} // namespace raylab

@@ -1,0 +1,60 @@
+#include "commands.h"
+#include "error.h"
+#include "image_compare.h"
+#include "paths.h"
+#include "stage_renderer.h"
+
+#include <cstdio>
+
+namespace raylab {
+
+int cmdCheck(const StageOptions& options, const CheckOptions& check) {
+    StageSetup setup = resolveStageOptions(options);
+    const StageInfo& stage = *setup.stage;
+    const std::filesystem::path against = check.againstDir;
+    std::error_code ec;
+    if (!against.empty() && !std::filesystem::is_directory(against, ec))
+        throw Error("--against '" + check.againstDir + "': folder does not exist");
+    if (!check.saveDir.empty()) {
+        std::filesystem::create_directories(check.saveDir, ec);
+        if (ec) throw Error("--save '" + check.saveDir + "': cannot create the folder");
+    }
+
+    auto context = createHeadlessContext(check.backend);
+    const int w = setup.size.width, h = setup.size.height;
+    StageRenderer student(stage, setup.sources, setup.scene, w, h);
+    reportOpenTodos(student.openTodos());
+    std::unique_ptr<StageRenderer> reference;
+    if (against.empty()) reference = std::make_unique<StageRenderer>(stage, solutionSources(stage), setup.scene, w, h);
+
+    const CompareTolerance tolerance;
+    std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(), setup.sources.label.c_str(),
+                against.empty() ? "the solution rendered here" : displayPath(against).c_str(), w, h, context->backendName().c_str());
+    std::printf("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 from every pixel of the\n"
+                "  reference's 3x3 neighbourhood\n",
+                tolerance.maxBadShare * 100.0, tolerance.channel);
+    int passed = 0;
+    for (const CheckView& view : stage.checkViews) {
+        Camera camera = cameraFor(view.pose, setup.scene);
+        student.render(camera, view.time);
+        Image mine = student.read();
+        Image expected;
+        if (reference) {
+            reference->render(camera, view.time);
+            expected = reference->read();
+        } else {
+            expected = loadPng(against / (view.name + ".png"));
+        }
+        if (!check.saveDir.empty()) writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
+        ImageDiff diff = compareImages(mine, expected, tolerance.channel);
+        bool ok = imagesAgree(diff, tolerance);
+        passed += ok;
+        std::printf("  %s %-14s %s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str());
+        if (!ok) std::printf("       this view checks: %s\n", view.why.c_str());
+    }
+    int failed = int(stage.checkViews.size()) - passed;
+    std::printf("%d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
+
+} // namespace raylab

@@ -1,0 +1,41 @@
+#pragma once
+// The subcommands of `raylab`, one file each (cmd_*.cpp). Each returns the
+// process exit code: 0 success, 1 a check failed, 2 bad input or an error.
+#include "gl_context.h"
+#include "stage_setup.h"
+
+#include <string>
+
+namespace raylab {
+
+int cmdStages();
+
+struct RunOptions {
+    bool noVsync = false;
+    int exitAfterFrames = 0;
+    std::string screenshot;
+};
+int cmdRun(const StageOptions& stage, const RunOptions& run);
+
+int cmdRender(const StageOptions& stage, const std::string& outFile, Backend backend);
+
+struct DemoOptions {
+    std::string size = "800x600";
+    std::string outDir = "raylab-demo";
+    int frames = 15;
+    bool headless = false;
+    Backend backend = Backend::Auto;
+};
+int cmdDemo(const DemoOptions& demo);
+
+struct CheckOptions {
+    std::string againstDir;  // compare with these PNGs instead of the live solution
+    std::string saveDir;     // write the checked images here
+    Backend backend = Backend::Auto;
+};
+int cmdCheck(const StageOptions& stage, const CheckOptions& check);
+
+// True when a window can be opened (X11 or Wayland display set).
+bool displayAvailable();
+
+} // namespace raylab

@@ -1,0 +1,23 @@
+#pragma once
+// The single way RayLab measures a frame time: from issuing the frame until
+// the GPU (or llvmpipe's threads) has finished it, on a steady clock; median
+// over several frames after a warm-up. Timer queries are not used: on
+// llvmpipe GL_TIME_ELAPSED misses the rasteriser threads (a query said
+// 0.6 ms for a frame that took 1.5 s).
+#include <functional>
+#include <string>
+
+namespace raylab {
+
+struct FrameTiming {
+    double medianMs = 0, minMs = 0, maxMs = 0;
+    int frames = 0;
+    const char* method = "glFinish + steady_clock (median)";
+    std::string summary() const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish + steady_clock)"
+};
+
+// Calls drawFrame() warmup times unmeasured, then frames times measured; each
+// frame is fenced with glFinish before and after.
+FrameTiming timeFrames(const std::function<void()>& drawFrame, int warmup, int frames);
+
+} // namespace raylab

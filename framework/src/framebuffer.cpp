@@ -1,0 +1,65 @@
+#include "framebuffer.h"
+
+#include "error.h"
+
+#include <cstring>
+#include <string>
+
+namespace raylab {
+
+Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+    if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
+        throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is not supported (at most " +
+                    std::to_string(maxSize) + " per side)");
+    glGenTextures(1, &color_);
+    glBindTexture(GL_TEXTURE_2D, color_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        glDeleteFramebuffers(1, &fbo_);
+        glDeleteTextures(1, &color_);
+        throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " framebuffer (status 0x" +
+                    std::to_string(status) + ")");
+    }
+}
+
+Framebuffer::~Framebuffer() {
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteTextures(1, &color_);
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
+Image Framebuffer::read() const {
+    Image image(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<std::uint8_t> bottomUp(image.rgba.size());
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    const std::size_t row = std::size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::memcpy(image.pixel(0, y), bottomUp.data() + std::size_t(height_ - 1 - y) * row, row);
+    return image;
+}
+
+void Framebuffer::blitToScreen(int screenWidth, int screenHeight) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, screenWidth, screenHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace raylab

@@ -1,0 +1,3 @@
+#pragma once
+// The one place that includes the OpenGL headers (GLEW first, as it requires).
+#include <GL/glew.h>

@@ -1,0 +1,27 @@
+#pragma once
+// An 8-bit RGBA image with rows stored top to bottom, and PNG I/O through
+// SDL2_image. Writes are atomic: a failed or interrupted write never leaves a
+// partial file under the requested name.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace raylab {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * std::size_t(h) * 4, 0) {}
+    const std::uint8_t* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+    std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+};
+
+Image loadPng(const std::filesystem::path& file);
+
+// Writes FILE.tmp-PID next to FILE, then renames it over FILE.
+void writePngAtomic(const Image& image, const std::filesystem::path& file);
+
+} // namespace raylab

@@ -1,0 +1,73 @@
+#include "image_compare.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace raylab {
+
+namespace {
+
+int pixelDiff(const std::uint8_t* p, const std::uint8_t* q) {
+    return std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])});
+}
+
+// Smallest difference between a's pixel (x, y) and b's pixels around (x, y).
+int nearestMatch(const Image& a, const Image& b, int x, int y) {
+    int best = 255;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= b.width || ny >= b.height) continue;
+            best = std::min(best, pixelDiff(a.pixel(x, y), b.pixel(nx, ny)));
+        }
+    return best;
+}
+
+} // namespace
+
+ImageDiff compareImages(const Image& a, const Image& b, int channelTolerance) {
+    ImageDiff diff;
+    if (a.width != b.width || a.height != b.height) {
+        diff.sameSize = false;
+        diff.badShare = 1.0;
+        diff.maxDiff = 255;
+        return diff;
+    }
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int d = std::max(nearestMatch(a, b, x, y), nearestMatch(b, a, x, y));
+            diff.maxDiff = std::max(diff.maxDiff, d);
+            if (d > channelTolerance) ++diff.badPixels;
+        }
+    diff.badShare = a.width * a.height > 0 ? double(diff.badPixels) / (double(a.width) * a.height) : 0.0;
+    return diff;
+}
+
+bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol) {
+    return diff.sameSize && diff.badShare <= tol.maxBadShare;
+}
+
+std::string describe(const ImageDiff& diff) {
+    if (!diff.sameSize) return "image sizes differ";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.2f%% of pixels differ (max %d/255)", diff.badShare * 100.0, diff.maxDiff);
+    return buf;
+}
+
+Image diffHeatMap(const Image& a, const Image& b) {
+    Image heat(a.width, a.height);
+    if (a.width != b.width || a.height != b.height) return heat;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int d = std::max(nearestMatch(a, b, x, y), nearestMatch(b, a, x, y));
+            std::uint8_t* p = heat.pixel(x, y);
+            p[0] = static_cast<std::uint8_t>(std::min(255, d * 4));
+            p[1] = static_cast<std::uint8_t>(d > 0 ? 32 : 0);
+            p[2] = 0;
+            p[3] = 255;
+        }
+    return heat;
+}
+
+} // namespace raylab

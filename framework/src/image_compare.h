@@ -1,0 +1,36 @@
+#pragma once
+// How two renders of the same view are compared, everywhere in RayLab (tests,
+// `raylab check`, grading). See tests/README.md for why these numbers.
+#include "image.h"
+
+#include <string>
+
+namespace raylab {
+
+struct ImageDiff {
+    int badPixels = 0;      // pixels with no close match in the other image's 3x3 neighbourhood
+    double badShare = 0.0;  // badPixels / all pixels
+    int maxDiff = 0;        // largest per-channel difference (0..255) after the neighbourhood search
+    bool sameSize = true;
+};
+
+struct CompareTolerance {
+    int channel = 8;              // a pixel matches if some neighbour differs by at most this in every channel (of 255)
+    double maxBadShare = 0.005;   // the images agree if at most this share of pixels has no match
+};
+
+// For each pixel of A, the smallest difference (max over RGB) to a pixel of B
+// in the 3x3 neighbourhood around the same position, and the same from B to A:
+// a one-pixel shift of an edge (rasterisation, float rounding on another GPU)
+// is not counted as a difference, a wrong colour or a moved object is.
+ImageDiff compareImages(const Image& a, const Image& b, int channelTolerance);
+
+bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol);
+
+// "0.12% of pixels differ (max 37/255)"
+std::string describe(const ImageDiff& diff);
+
+// A heat map of the per-pixel difference (black = equal, red = max), for reports.
+Image diffHeatMap(const Image& a, const Image& b);
+
+} // namespace raylab

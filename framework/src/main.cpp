@@ -1,0 +1,111 @@
+// raylab: the command line of the course framework. See `raylab --help`.
+#include "commands.h"
+#include "error.h"
+#include "shader_program.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+using namespace raylab;
+
+namespace {
+
+void addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
+    cmd->add_option("--stage", o.stage, "stage id or number, e.g. 01-raycast or 01 (see `raylab stages`)")->required();
+    cmd->add_option("--lab", o.labDir, "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
+        ->expected(0, 1)
+        ->each([&o](const std::string&) { o.labGiven = true; })
+        ->trigger_on_parse();
+    cmd->add_flag("--solution", o.solution, "use the complete solution instead of a lab");
+    cmd->add_option("--scene", o.scene, "scene file (default: the stage's scene under assets/scenes/)");
+    cmd->add_option("--size", o.size, "image size WIDTHxHEIGHT")->capture_default_str();
+    if (withCamera) {
+        cmd->add_option("--camera", o.camera, "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
+        cmd->add_option("--time", o.time, "animation time in seconds")->capture_default_str();
+    }
+}
+
+Backend backendFrom(const std::string& name) { return parseBackend(name); }
+
+} // namespace
+
+int main(int argc, char** argv) {
+    rememberProgramArguments(argc, argv);
+    CLI::App app{"RayLab: build a real-time GPU ray tracer stage by stage, and grade it headlessly."};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "help for every subcommand");
+
+    app.add_subcommand("stages", "list the stages of the course");
+
+    StageOptions runStage;
+    RunOptions run;
+    CLI::App* runCmd = app.add_subcommand("run", "open a stage in a window (W/A/S/D, mouse, V vsync, P pause, F12 screenshot)");
+    addStageOptions(runCmd, runStage, true);
+    runCmd->add_flag("--no-vsync", run.noVsync, "start with vsync off");
+    runCmd->add_option("--frames", run.exitAfterFrames, "quit after N frames (for scripts)")->check(CLI::Range(1, 1000000));
+    runCmd->add_option("--screenshot", run.screenshot, "with --frames: write the last frame to this PNG");
+
+    StageOptions renderStage;
+    renderStage.size = "800x600";
+    std::string renderOut, renderBackend = "auto";
+    CLI::App* renderCmd = app.add_subcommand("render", "render one frame headless to a PNG file");
+    addStageOptions(renderCmd, renderStage, true);
+    renderCmd->add_option("--out", renderOut, "output PNG file")->required();
+    renderCmd->add_option("--backend", renderBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+
+    DemoOptions demo;
+    std::string demoBackend = "auto";
+    CLI::App* demoCmd = app.add_subcommand("demo", "run the full solution; without a display render it to an image and time it");
+    demoCmd->add_option("--size", demo.size, "image size WIDTHxHEIGHT")->capture_default_str();
+    demoCmd->add_option("--out", demo.outDir, "output folder for the headless images")->capture_default_str();
+    demoCmd->add_option("--frames", demo.frames, "frames to time (after 3 warm-up frames)")->capture_default_str();
+    demoCmd->add_flag("--headless", demo.headless, "render to a file even when a display is available");
+    demoCmd->add_option("--backend", demoBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+
+    StageOptions checkStage;
+    checkStage.size = "160x120";
+    CheckOptions check;
+    std::string checkBackend = "auto";
+    CLI::App* checkCmd = app.add_subcommand("check", "check a stage against the solution from several camera views");
+    addStageOptions(checkCmd, checkStage, false);
+    checkCmd->add_option("--against", check.againstDir, "compare with DIR/<view>.png instead of the solution rendered now");
+    checkCmd->add_option("--save", check.saveDir, "write the checked images to DIR/<view>.png");
+    checkCmd->add_option("--backend", checkBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "raylab: error: %s (see raylab --help)\n", e.what());
+        return 2;
+    }
+
+    try {
+        if (app.got_subcommand("stages")) return cmdStages();
+        if (runCmd->parsed()) return cmdRun(runStage, run);
+        if (renderCmd->parsed()) return cmdRender(renderStage, renderOut, backendFrom(renderBackend));
+        if (demoCmd->parsed()) {
+            demo.backend = backendFrom(demoBackend);
+            return cmdDemo(demo);
+        }
+        if (checkCmd->parsed()) {
+            check.backend = backendFrom(checkBackend);
+            return cmdCheck(checkStage, check);
+        }
+    } catch (const ShaderError& e) {
+        std::fputs(e.log().c_str(), stderr);
+        std::fprintf(stderr, "raylab: error: shader does not compile: %s\n", e.what());
+        return 2;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "raylab: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "raylab: internal error: %s\n", e.what());
+        return 2;
+    }
+    return 2;
+}

@@ -1,0 +1,110 @@
+#include "scene.h"
+
+#include "error.h"
+#include "paths.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace raylab {
+
+using nlohmann::json;
+
+glm::vec3 Motion::offsetAt(float t) const {
+    if (amplitude == 0.0f) return glm::vec3(0.0f);
+    return axis * amplitude * std::sin(6.28318530718f * t / periodSeconds);
+}
+
+namespace {
+
+// Reads values with messages that name the file and the JSON path.
+struct Reader {
+    const std::string& file;
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw Error(file + ": " + where + ": " + what);
+    }
+    const json& member(const json& obj, const std::string& where, const char* key) const {
+        if (!obj.is_object()) fail(where, "expected an object");
+        auto it = obj.find(key);
+        if (it == obj.end()) fail(where, std::string("missing \"") + key + "\"");
+        return *it;
+    }
+    float number(const json& v, const std::string& where) const {
+        if (!v.is_number()) fail(where, "expected a number");
+        double d = v.get<double>();
+        if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(where, "number out of range");
+        return float(d);
+    }
+    float positive(const json& v, const std::string& where) const {
+        float f = number(v, where);
+        if (!(f > 0.0f)) fail(where, "expected a positive number");
+        return f;
+    }
+    glm::vec3 vec3(const json& v, const std::string& where) const {
+        if (!v.is_array() || v.size() != 3) fail(where, "expected [x, y, z]");
+        return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
+    }
+    glm::vec3 color(const json& v, const std::string& where) const {
+        glm::vec3 c = vec3(v, where);
+        for (int i = 0; i < 3; ++i)
+            if (c[i] < 0.0f || c[i] > 1.0f) fail(where, "colour components must lie in [0, 1]");
+        return c;
+    }
+};
+
+std::string lineColumn(const std::string& text, std::size_t byte) {
+    int line = 1, column = 1;
+    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+} // namespace
+
+Scene loadScene(const std::filesystem::path& file) {
+    Scene scene;
+    scene.file = displayPath(file);
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw Error("scene file " + scene.file + " does not exist");
+    std::string text = readTextFile(file);
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": JSON syntax error");
+    }
+    Reader r{scene.file};
+    scene.background = r.color(r.member(doc, "scene", "background"), "background");
+    const json& cam = r.member(doc, "scene", "camera");
+    scene.camera.position = r.vec3(r.member(cam, "camera", "position"), "camera.position");
+    scene.camera.yawDeg = r.number(r.member(cam, "camera", "yaw"), "camera.yaw");
+    scene.camera.pitchDeg = r.number(r.member(cam, "camera", "pitch"), "camera.pitch");
+    if (cam.contains("fov_y")) {
+        scene.fovYDeg = r.positive(cam["fov_y"], "camera.fov_y");
+        if (scene.fovYDeg >= 170.0f) r.fail("camera.fov_y", "must be below 170 degrees");
+    }
+    const json& spheres = r.member(doc, "scene", "spheres");
+    if (!spheres.is_array()) r.fail("spheres", "expected a list");
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        std::string where = "spheres[" + std::to_string(i) + "]";
+        const json& s = spheres[i];
+        Sphere sphere;
+        sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
+        sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
+        sphere.color = r.color(r.member(s, where, "color"), where + ".color");
+        if (s.contains("motion")) {
+            const json& m = s["motion"];
+            std::string mw = where + ".motion";
+            sphere.motion.axis = r.vec3(r.member(m, mw, "axis"), mw + ".axis");
+            sphere.motion.amplitude = r.number(r.member(m, mw, "amplitude"), mw + ".amplitude");
+            sphere.motion.periodSeconds = r.positive(r.member(m, mw, "period"), mw + ".period");
+        }
+        scene.spheres.push_back(sphere);
+    }
+    return scene;
+}
+
+} // namespace raylab

@@ -1,0 +1,39 @@
+#pragma once
+// A linked GLSL program built from two assembled shaders. Compile and link
+// errors are reported with the students' file names and lines.
+#include "gl.h"
+#include "shader_source.h"
+
+#include <string>
+#include <unordered_map>
+
+namespace raylab {
+
+// Thrown when a shader does not compile or link. what() is one line: the first
+// error, mapped to file:line; log() has every mapped line.
+class ShaderError : public std::runtime_error {
+public:
+    ShaderError(const std::string& firstLine, std::string log) : std::runtime_error(firstLine), log_(std::move(log)) {}
+    const std::string& log() const { return log_; }
+
+private:
+    std::string log_;
+};
+
+class ShaderProgram {
+public:
+    ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment);
+    ~ShaderProgram();
+    ShaderProgram(const ShaderProgram&) = delete;
+    ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+    void use() const { glUseProgram(id_); }
+    // -1 when the program has no such (active) uniform; setting it is then a no-op.
+    GLint uniform(const std::string& name) const;
+
+private:
+    GLuint id_ = 0;
+    mutable std::unordered_map<std::string, GLint> uniforms_;
+};
+
+} // namespace raylab

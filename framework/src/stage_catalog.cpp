@@ -1,0 +1,89 @@
+#include "stage_catalog.h"
+
+#include "error.h"
+#include "paths.h"
+
+namespace raylab {
+
+namespace {
+
+std::vector<StageInfo> makeStages() {
+    std::vector<StageInfo> stages;
+
+    StageInfo raycast;
+    raycast.id = "01-raycast";
+    raycast.title = "ray casting: primary rays, ray-sphere intersection, nearest hit, flat colours";
+    raycast.scene = "stage01.json";
+    raycast.maxSpheres = 16;
+    raycast.defines = {"MAX_SPHERES 16"};
+    raycast.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: overlapping spheres at several depths"},
+        {"close-overlap", CameraPose{{1.9f, 1.1f, 3.2f}, -28.0f, -8.0f}, 0.0f,
+         "spheres in front of one another: only the nearest root of the nearest sphere may win"},
+        {"inside", CameraPose{{5.0f, 1.0f, -2.4f}, 0.0f, 0.0f}, 0.0f,
+         "camera inside a large sphere: the near root is behind the eye, the far one is the hit"},
+        {"among", CameraPose{{0.2f, 1.3f, -4.0f}, 180.0f, -4.0f}, 0.0f,
+         "spheres behind the camera must not be seen (t > 0)"},
+        {"moving", std::nullopt, 1.3f, "time 1.3 s: the white sphere has moved"},
+    };
+    stages.push_back(raycast);
+
+    // The later stages of the ray tracing track (see issue "stages 02-08").
+    const std::pair<const char*, const char*> later[] = {
+        {"02-shading", "Blinn-Phong shading with three point lights and a material table"},
+        {"03-shadows", "shadow rays toward each light, offset on the correct side"},
+        {"04-recursion", "reflection and refraction with an explicit stack instead of recursion"},
+        {"05-primitives", "planes, discs, triangles, a glass cube and a torus"},
+        {"06-textures", "textured spheres and planes, sky box, sun glow"},
+        {"07-normalmaps", "normal mapping on the textured spheres"},
+        {"08-full", "the full demo: lite and pro scenes"},
+    };
+    for (const auto& [id, title] : later) {
+        StageInfo s;
+        s.id = id;
+        s.title = title;
+        stages.push_back(s);
+    }
+    return stages;
+}
+
+std::string stageList() {
+    std::string list;
+    for (const StageInfo& s : allStages()) list += (list.empty() ? "" : ", ") + s.id;
+    return list;
+}
+
+} // namespace
+
+bool StageInfo::available() const {
+    std::error_code ec;
+    return std::filesystem::is_directory(projectRoot() / "solution" / id, ec);
+}
+
+const std::vector<StageInfo>& allStages() {
+    static const std::vector<StageInfo> stages = makeStages();
+    return stages;
+}
+
+const StageInfo& findStage(const std::string& idOrNumber) {
+    for (const StageInfo& s : allStages()) {
+        bool numberMatches = !idOrNumber.empty() && idOrNumber.size() <= 2 &&
+                             idOrNumber.find_first_not_of("0123456789") == std::string::npos &&
+                             std::stoi(idOrNumber) == std::stoi(s.number());
+        if (idOrNumber == s.id || numberMatches) {
+            if (!s.available()) throw Error("stage " + s.id + " is not available yet (no solution/" + s.id + "/)");
+            return s;
+        }
+    }
+    throw Error("unknown stage '" + idOrNumber + "' (stages: " + stageList() + ")");
+}
+
+const StageInfo& latestAvailableStage() {
+    const StageInfo* latest = nullptr;
+    for (const StageInfo& s : allStages())
+        if (s.available()) latest = &s;
+    if (!latest) throw Error("no stage is available (solution/ is empty)");
+    return *latest;
+}
+
+} // namespace raylab

@@ -1,0 +1,40 @@
+#pragma once
+// The stages of the course, in the order the seed thesis builds the tracer.
+// A stage exists once solution/<id>/ does; labs/<id>/ is generated from it.
+#include "camera.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// One camera view used to check a stage (tests, `raylab check`, grading).
+struct CheckView {
+    std::string name;
+    std::optional<CameraPose> pose;  // none: the scene's own camera
+    float time = 0.0f;
+    std::string why;  // what this view exercises
+};
+
+struct StageInfo {
+    std::string id;                 // "01-raycast"
+    std::string title;              // one line for `raylab stages`
+    std::string scene;              // default scene, relative to assets/scenes/
+    std::vector<std::string> defines;
+    int maxSpheres = 0;             // scene limits the shader was written for
+    std::vector<CheckView> checkViews;
+
+    std::string number() const { return id.substr(0, 2); }
+    bool available() const;         // solution/<id>/ exists
+};
+
+const std::vector<StageInfo>& allStages();
+
+// Accepts "01-raycast", "01" or "1". Throws Error listing the stage ids.
+const StageInfo& findStage(const std::string& idOrNumber);
+
+// The highest stage whose solution exists.
+const StageInfo& latestAvailableStage();
+
+} // namespace raylab

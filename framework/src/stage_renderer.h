@@ -1,0 +1,55 @@
+#pragma once
+// Renders one stage of the tracer: builds its shader program, uploads the
+// camera and the scene, and draws the canvas into an off-screen framebuffer.
+// Used the same way by the window, headless rendering and the checks.
+#include "camera.h"
+#include "canvas.h"
+#include "framebuffer.h"
+#include "scene.h"
+#include "shader_program.h"
+#include "stage_catalog.h"
+#include "stage_sources.h"
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace raylab {
+
+class StageRenderer {
+public:
+    // Needs a current GL context. Throws Error (bad scene, missing file) or
+    // ShaderError (compile/link error, mapped to file:line).
+    StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height);
+
+    void render(const Camera& camera, float timeSeconds);
+    Image read() const { return target_->read(); }
+    const Framebuffer& target() const { return *target_; }
+    // A new render target of another size (the window was resized).
+    void resize(int width, int height) { target_ = std::make_unique<Framebuffer>(width, height); }
+    const Scene& scene() const { return scene_; }
+
+    // Rebuilds the program from the files on disk. On failure the previous
+    // program stays in use and the error is thrown.
+    void rebuild();
+    // The files the current program was built from (for hot reload).
+    const std::vector<std::filesystem::path>& sourceFiles() const { return files_; }
+    // Stubs of the lab that are still unsolved (empty for the solution).
+    const std::vector<OpenTodo>& openTodos() const { return todos_; }
+
+private:
+    const StageInfo& stage_;
+    StageSources sources_;
+    Scene scene_;
+    std::unique_ptr<Framebuffer> target_;
+    Canvas canvas_;
+    std::unique_ptr<ShaderProgram> program_;
+    std::vector<std::filesystem::path> files_;
+    std::vector<OpenTodo> todos_;
+};
+
+// Where the framework's vertex shader and a stage's entry fragment shader are.
+inline constexpr const char* kVertexEntry = "canvas.vert";
+inline constexpr const char* kFragmentEntry = "main.frag";
+
+} // namespace raylab

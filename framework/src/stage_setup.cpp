@@ -1,0 +1,40 @@
+#include "stage_setup.h"
+
+#include "error.h"
+#include "paths.h"
+#include "shader_source.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace raylab {
+
+StageSetup resolveStageOptions(const StageOptions& o) {
+    StageSetup s;
+    if (o.labGiven && o.solution) throw Error("--lab and --solution exclude each other");
+    if (!std::isfinite(o.time) || std::fabs(o.time) > 1e6f) throw Error("--time must be a finite number of seconds");
+    s.stage = &findStage(o.stage);
+    s.sources = o.solution ? solutionSources(*s.stage)
+                           : labSources(*s.stage, o.labDir.empty() ? defaultLabRoot() : std::filesystem::path(o.labDir));
+    s.size = parseSize(o.size);
+    std::filesystem::path sceneFile = o.scene.empty() ? projectRoot() / "assets" / "scenes" / s.stage->scene : std::filesystem::path(o.scene);
+    s.scene = loadScene(sceneFile);
+    s.camera = o.camera.empty() ? Camera(s.scene.camera, s.scene.fovYDeg) : Camera(parseCamera(o.camera), s.scene.fovYDeg);
+    s.time = o.time;
+    return s;
+}
+
+Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene) {
+    return Camera(pose ? *pose : scene.camera, scene.fovYDeg);
+}
+
+void reportOpenTodos(const std::vector<OpenTodo>& todos) {
+    static bool reported = false;
+    if (todos.empty() || reported) return;
+    reported = true;
+    std::fprintf(stderr, "raylab: %zu open TODO%s in this lab (their pixels show magenta stripes):\n", todos.size(),
+                 todos.size() == 1 ? "" : "s");
+    for (const OpenTodo& t : todos) std::fprintf(stderr, "  %s:%d: %s\n", t.file.c_str(), t.line, t.title.c_str());
+}
+
+} // namespace raylab

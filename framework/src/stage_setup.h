@@ -1,0 +1,45 @@
+#pragma once
+// What every command that draws a stage needs: which stage, whose shaders
+// (lab or solution), which scene, image size and camera - from the command
+// line, checked, with one-line errors.
+#include "camera.h"
+#include "cli_parse.h"
+#include "scene.h"
+#include "stage_catalog.h"
+#include "stage_sources.h"
+
+#include <optional>
+#include <string>
+
+namespace raylab {
+
+struct StageOptions {
+    std::string stage;
+    bool labGiven = false;  // --lab with or without a folder
+    std::string labDir;     // empty: labs/
+    bool solution = false;
+    std::string scene;      // empty: the stage's default scene
+    std::string size = "800x600";
+    std::string camera;     // empty: the scene's camera
+    float time = 0.0f;
+};
+
+struct StageSetup {
+    const StageInfo* stage = nullptr;
+    StageSources sources;
+    Scene scene;
+    Size size;
+    Camera camera;
+    float time = 0.0f;
+};
+
+// Validates everything before any window or context is created.
+StageSetup resolveStageOptions(const StageOptions& options);
+
+// The camera a check view uses in SCENE.
+Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene);
+
+// Prints the open TODOs of a lab to stderr, once per program run.
+void reportOpenTodos(const std::vector<struct OpenTodo>& todos);
+
+} // namespace raylab

@@ -1,0 +1,124 @@
+#include "viewer_app.h"
+
+#include "error.h"
+#include "paths.h"
+
+#include <cstdio>
+#include <ctime>
+
+namespace raylab {
+
+namespace {
+constexpr float kMoveSpeed = 3.0f;        // units per second
+constexpr float kSlowFactor = 0.2f;       // while Left Shift is held
+constexpr float kMouseDegPerPixel = 0.2f;
+constexpr float kReloadPollSeconds = 0.3f;
+} // namespace
+
+ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync)
+    : Application(Options{"RayLab " + setup.stage->id + " (" + setup.sources.label + ")", setup.size.width, setup.size.height, vsync}),
+      setup_(std::move(setup)), automation_(std::move(automation)) {}
+
+void ViewerApp::init() {
+    int w = 0, h = 0;
+    drawableSize(&w, &h);
+    renderer_ = std::make_unique<StageRenderer>(*setup_.stage, setup_.sources, setup_.scene, w, h);
+    reportOpenTodos(renderer_->openTodos());
+    watcher_.watch(renderer_->sourceFiles());
+    time_ = setup_.time;
+}
+
+void ViewerApp::reloadShaders() {
+    try {
+        renderer_->rebuild();
+        setStatus("");
+        std::fprintf(stderr, "raylab: shaders reloaded\n");
+        reportOpenTodos(renderer_->openTodos());
+    } catch (const ShaderError& e) {
+        // Keep the last good program running; show where the error is.
+        std::fprintf(stderr, "%s", e.log().c_str());
+        setStatus(std::string("shader error: ") + e.what());
+    } catch (const Error& e) {
+        std::fprintf(stderr, "raylab: error: %s\n", e.what());
+        setStatus(std::string("error: ") + e.what());
+    }
+    watcher_.watch(renderer_->sourceFiles());
+}
+
+void ViewerApp::update(float dt) {
+    if (!paused_) time_ += dt;
+    const Uint8* keys = SDL_GetKeyboardState(nullptr);
+    float step = kMoveSpeed * dt * (keys[SDL_SCANCODE_LSHIFT] ? kSlowFactor : 1.0f);
+    float forward = float(keys[SDL_SCANCODE_W]) - float(keys[SDL_SCANCODE_S]);
+    float right = float(keys[SDL_SCANCODE_D]) - float(keys[SDL_SCANCODE_A]);
+    if (forward != 0.0f || right != 0.0f) setup_.camera.move(forward * step, right * step);
+
+    sinceReloadCheck_ += dt;
+    if (sinceReloadCheck_ >= kReloadPollSeconds) {
+        sinceReloadCheck_ = 0.0f;
+        if (watcher_.changed()) reloadShaders();
+    }
+}
+
+void ViewerApp::render() {
+    int w = 0, h = 0;
+    drawableSize(&w, &h);
+    if (w != renderer_->target().width() || h != renderer_->target().height()) renderer_->resize(w, h);
+    renderer_->render(setup_.camera, time_);
+    renderer_->target().blitToScreen(w, h);
+    ++frames_;
+    if (automation_.exitAfterFrames > 0 && frames_ >= automation_.exitAfterFrames) {
+        if (!automation_.screenshotFile.empty()) screenshot(automation_.screenshotFile);
+        quit();
+    }
+}
+
+void ViewerApp::screenshot(const std::string& file) {
+    writePngAtomic(renderer_->read(), file);
+    std::printf("raylab: screenshot written to %s\n", file.c_str());
+    std::fflush(stdout);
+}
+
+void ViewerApp::onEvent(const SDL_Event& event) {
+    switch (event.type) {
+    case SDL_MOUSEBUTTONDOWN:
+        if (event.button.button == SDL_BUTTON_LEFT) looking_ = true;
+        break;
+    case SDL_MOUSEBUTTONUP:
+        if (event.button.button == SDL_BUTTON_LEFT) looking_ = false;
+        break;
+    case SDL_MOUSEMOTION:
+        if (looking_) setup_.camera.turn(float(event.motion.xrel) * kMouseDegPerPixel, -float(event.motion.yrel) * kMouseDegPerPixel);
+        break;
+    case SDL_KEYDOWN:
+        if (event.key.repeat) break;
+        switch (event.key.keysym.sym) {
+        case SDLK_ESCAPE: quit(); break;
+        case SDLK_v:
+            setVsync(!vsync());
+            std::printf("vsync %s\n", vsync() ? "on" : "off");
+            break;
+        case SDLK_p:
+            paused_ = !paused_;
+            std::printf("animation %s\n", paused_ ? "paused" : "running");
+            break;
+        case SDLK_F12: {
+            char name[64];
+            std::time_t now = std::time(nullptr);
+            std::strftime(name, sizeof name, "raylab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+            try {
+                screenshot(name);
+            } catch (const Error& e) {
+                std::fprintf(stderr, "raylab: error: %s\n", e.what());
+            }
+            break;
+        }
+        default: break;
+        }
+        std::fflush(stdout);
+        break;
+    default: break;
+    }
+}
+
+} // namespace raylab

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Sets up RayLab on Debian 12 / Ubuntu 22.04+: installs the packages it needs
+# with apt, then configures and builds Release into build/. Safe to run twice.
+#   bash install.sh          install + build
+#   bash install.sh --test   install + build + run the whole test suite
+set -euo pipefail
+cd "$(dirname "$0")"
+
+run_tests=0
+for arg in "$@"; do
+  case "$arg" in
+    --test) run_tests=1 ;;
+    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    *) echo "install.sh: unknown option '$arg' (try --help)" >&2; exit 2 ;;
+  esac
+done
+
+packages=(
+  build-essential cmake pkg-config                 # toolchain
+  libsdl2-dev libsdl2-image-dev                    # window, input, PNG I/O
+  libglew-dev libglm-dev libgl1-mesa-dev           # OpenGL loading and maths
+  libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL (surfaceless Mesa, llvmpipe)
+  libosmesa6-dev                                   # headless OSMesa backend
+  libcli11-dev nlohmann-json3-dev                  # command line, scene files
+  libgtest-dev libgmock-dev                        # tests
+  glslang-tools                                    # Khronos reference GLSL compiler (tests)
+  xvfb xauth                                       # windowed-mode tests without a display
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  echo "install.sh: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
+echo "install.sh: built build/raylab"
+
+if [ "$run_tests" -eq 1 ]; then
+  ctest --test-dir build --output-on-failure -j "$(nproc)"
+fi

@@ -1,0 +1,15 @@
+// Where does a ray first meet a sphere?
+//
+// A point p is on the sphere when |p - center| = radius. Put the ray's point
+// p(t) = o + t d in: with oc = o - center and |d| = 1,
+//     t^2 + 2 (oc . d) t + (oc . oc - radius^2) = 0.
+// Returns the smallest t > T_MIN, or NO_HIT.
+float intersectSphere(Ray ray, vec3 center, float radius)
+{
+    // TODO(01.a): solve the quadratic above for the nearest hit in front of
+    // the ray origin. Return NO_HIT when the ray misses the sphere or the
+    // sphere lies behind the origin. The camera may be inside a sphere.
+    // Checked by: raylab check --stage 01 (all views).
+    labTodo();
+    return NO_HIT;
+}

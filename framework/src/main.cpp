@@ -11,12 +11,11 @@ using namespace raylab;
 
 namespace {
 
-void addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
+// Returns the --lab option: whether it was given is known only after parsing.
+CLI::Option* addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
     cmd->add_option("--stage", o.stage, "stage id or number, e.g. 01-raycast or 01 (see `raylab stages`)")->required();
-    cmd->add_option("--lab", o.labDir, "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
-        ->expected(0, 1)
-        ->each([&o](const std::string&) { o.labGiven = true; })
-        ->trigger_on_parse();
+    CLI::Option* lab = cmd->add_option("--lab", o.labDir, "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
+                           ->expected(0, 1);
     cmd->add_flag("--solution", o.solution, "use the complete solution instead of a lab");
     cmd->add_option("--scene", o.scene, "scene file (default: the stage's scene under assets/scenes/)");
     cmd->add_option("--size", o.size, "image size WIDTHxHEIGHT")->capture_default_str();
@@ -24,6 +23,7 @@ void addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
         cmd->add_option("--camera", o.camera, "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
         cmd->add_option("--time", o.time, "animation time in seconds")->capture_default_str();
     }
+    return lab;
 }
 
 Backend backendFrom(const std::string& name) { return parseBackend(name); }
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     StageOptions runStage;
     RunOptions run;
     CLI::App* runCmd = app.add_subcommand("run", "open a stage in a window (W/A/S/D, mouse, V vsync, P pause, F12 screenshot)");
-    addStageOptions(runCmd, runStage, true);
+    CLI::Option* runLab = addStageOptions(runCmd, runStage, true);
     runCmd->add_flag("--no-vsync", run.noVsync, "start with vsync off");
     runCmd->add_option("--frames", run.exitAfterFrames, "quit after N frames (for scripts)")->check(CLI::Range(1, 1000000));
     runCmd->add_option("--screenshot", run.screenshot, "with --frames: write the last frame to this PNG");
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     renderStage.size = "800x600";
     std::string renderOut, renderBackend = "auto";
     CLI::App* renderCmd = app.add_subcommand("render", "render one frame headless to a PNG file");
-    addStageOptions(renderCmd, renderStage, true);
+    CLI::Option* renderLab = addStageOptions(renderCmd, renderStage, true);
     renderCmd->add_option("--out", renderOut, "output PNG file")->required();
     renderCmd->add_option("--backend", renderBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
 
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     CheckOptions check;
     std::string checkBackend = "auto";
     CLI::App* checkCmd = app.add_subcommand("check", "check a stage against the solution from several camera views");
-    addStageOptions(checkCmd, checkStage, false);
+    CLI::Option* checkLab = addStageOptions(checkCmd, checkStage, false);
     checkCmd->add_option("--against", check.againstDir, "compare with DIR/<view>.png instead of the solution rendered now");
     checkCmd->add_option("--save", check.saveDir, "write the checked images to DIR/<view>.png");
     checkCmd->add_option("--backend", checkBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
@@ -83,6 +83,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "raylab: error: %s (see raylab --help)\n", e.what());
         return 2;
     }
+
+    runStage.labGiven = runLab->count() > 0;
+    renderStage.labGiven = renderLab->count() > 0;
+    checkStage.labGiven = checkLab->count() > 0;
 
     try {
         if (app.got_subcommand("stages")) return cmdStages();

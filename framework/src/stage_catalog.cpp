@@ -20,6 +20,8 @@ std::vector<StageInfo> makeStages() {
         {"front", std::nullopt, 0.0f, "the scene camera: overlapping spheres at several depths"},
         {"close-overlap", CameraPose{{1.9f, 1.1f, 3.2f}, -28.0f, -8.0f}, 0.0f,
          "spheres in front of one another: only the nearest root of the nearest sphere may win"},
+        {"hidden", CameraPose{{5.0f, 1.2f, 3.0f}, 0.0f, -2.0f}, 0.0f,
+         "a small sphere inside a big one stays hidden: the nearest root wins, not the far one"},
         {"inside", CameraPose{{5.0f, 1.0f, -2.4f}, 0.0f, 0.0f}, 0.0f,
          "camera inside a large sphere: the near root is behind the eye, the far one is the hit"},
         {"among", CameraPose{{0.2f, 1.3f, -4.0f}, 180.0f, -4.0f}, 0.0f,

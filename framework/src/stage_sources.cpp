@@ -28,7 +28,7 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot) {
     if (!fs::is_directory(labRoot / stage.id, ec))
         throw Error("lab folder " + labRoot.string() + " has no " + stage.id + "/ (it should be laid out like labs/)");
     StageSources s;
-    s.label = "lab " + displayPath(labRoot);
+    s.label = "lab " + displayPath(labRoot) + "/";
     s.search = {labRoot / stage.id, projectRoot() / "framework" / "shaders"};
     return s;
 }

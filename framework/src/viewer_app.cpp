@@ -46,7 +46,8 @@ void ViewerApp::reloadShaders() {
 }
 
 void ViewerApp::update(float dt) {
-    if (!paused_) time_ += dt;
+    // Scripted runs (--frames) keep the time fixed so their frames are reproducible.
+    if (!paused_ && automation_.exitAfterFrames == 0) time_ += dt;
     const Uint8* keys = SDL_GetKeyboardState(nullptr);
     float step = kMoveSpeed * dt * (keys[SDL_SCANCODE_LSHIFT] ? kSlowFactor : 1.0f);
     float forward = float(keys[SDL_SCANCODE_W]) - float(keys[SDL_SCANCODE_S]);

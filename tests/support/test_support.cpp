@@ -1,0 +1,85 @@
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace raylab::test {
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void writeFile(const fs::path& file, const std::string& text) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+CommandResult runCommand(const std::string& command) {
+    ScratchDir tmp;
+    const fs::path out = tmp / "stdout", err = tmp / "stderr";
+    std::string full = "(" + command + ") </dev/null >" + quote(out) + " 2>" + quote(err);
+    int status = std::system(full.c_str());
+    CommandResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    r.out = readFile(out);
+    r.err = readFile(err);
+    return r;
+}
+
+CommandResult runRaylab(const std::string& args) { return runCommand(quote(RAYLAB_EXE) + " " + args); }
+CommandResult runLabgen(const std::string& args) { return runCommand(quote(RAYLAB_LABGEN_EXE) + " " + args); }
+
+fs::path sourceDir() { return RAYLAB_SOURCE_DIR; }
+
+ScratchDir::ScratchDir() {
+    std::random_device rd;
+    path_ = fs::temp_directory_path() / ("raylab-test-" + std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+}
+
+void writeSolvedLabs(const fs::path& dir) {
+    CommandResult r = runLabgen("--solved " + quote(dir));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+}
+
+void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
+    std::string text = readFile(file);
+    auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << "'" << from << "' not found in " << file << " - did the solution change?";
+    text.replace(at, from.size(), to);
+    writeFile(file, text);
+}
+
+std::vector<std::string> failedViews(const std::string& checkOutput) {
+    std::vector<std::string> views;
+    std::istringstream in(checkOutput);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string verdict, name;
+        words >> verdict >> name;
+        if (verdict == "FAIL") views.push_back(name);
+    }
+    return views;
+}
+
+} // namespace raylab::test

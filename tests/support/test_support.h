@@ -1,0 +1,56 @@
+#pragma once
+// Helpers for tests that run the `raylab` binary: a scratch folder and a
+// command runner that captures exit code, stdout and stderr.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::test {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+    std::string all() const { return out + err; }
+};
+
+// Runs `command` through /bin/sh (no stdin), capturing both streams.
+CommandResult runCommand(const std::string& command);
+
+// `build/raylab ARGS` and `build/raylab-labgen ARGS`.
+CommandResult runRaylab(const std::string& args);
+CommandResult runLabgen(const std::string& args);
+
+// The source tree and a single-quoted shell word.
+fs::path sourceDir();
+std::string quote(const std::string& s);
+
+// A fresh empty folder removed when the object goes away.
+class ScratchDir {
+public:
+    ScratchDir();
+    ~ScratchDir();
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    const fs::path& path() const { return path_; }
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    fs::path path_;
+};
+
+// A fully solved copy of the labs (raylab-labgen --solved) in DIR.
+void writeSolvedLabs(const fs::path& dir);
+
+// Replaces the first occurrence of FROM by TO in FILE; fails the test if FROM is absent.
+void replaceInFile(const fs::path& file, const std::string& from, const std::string& to);
+
+std::string readFile(const fs::path& file);
+void writeFile(const fs::path& file, const std::string& text);
+
+// Names of the views reported as FAIL by `raylab check` output.
+std::vector<std::string> failedViews(const std::string& checkOutput);
+
+} // namespace raylab::test

@@ -1,0 +1,121 @@
+// Assembling shaders from files: includes, defines, and mapping compiler
+// errors back to the file and line the student wrote.
+#include "error.h"
+#include "shader_source.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace raylab;
+using raylab::test::ScratchDir;
+using raylab::test::writeFile;
+
+namespace {
+
+// Assembled line number (1-based) of the first line containing NEEDLE.
+int lineOf(const ShaderSource& s, const std::string& needle) {
+    std::istringstream in(s.text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+        if (line.find(needle) != std::string::npos) return n;
+    return -1;
+}
+
+struct Tree {
+    ScratchDir dir;
+    Tree() {
+        writeFile(dir / "stage/main.frag", "// main\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() { int m; }\n");
+        writeFile(dir / "stage/a.glsl", "#include \"b.glsl\"\nint a;\n");
+        writeFile(dir / "shared/b.glsl", "// b line 1\nint b;  // b line 2\n");
+    }
+    std::vector<fs::path> search() const { return {dir / "stage", dir / "shared"}; }
+};
+
+} // namespace
+
+TEST(ShaderSource, VersionAndDefinesComeFirst) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {"MAX_SPHERES 16", "SHADOWS"});
+    EXPECT_EQ(s.text.rfind("#version 330 core\n#define MAX_SPHERES 16\n#define SHADOWS\n", 0), 0u) << s.text;
+}
+
+TEST(ShaderSource, IncludesAreResolvedOnceThroughTheSearchPath) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {});
+    EXPECT_EQ(s.files.size(), 3u);
+    std::size_t first = s.text.find("int b;");
+    ASSERT_NE(first, std::string::npos);
+    EXPECT_EQ(s.text.find("int b;", first + 1), std::string::npos) << "b.glsl was included twice";
+    EXPECT_LT(s.text.find("int b;"), s.text.find("int a;")) << "a.glsl includes b.glsl first";
+}
+
+TEST(ShaderSource, EveryAssembledLineKnowsItsFileAndLine) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {"X 1"});
+    SourceLine b = s.where(lineOf(s, "int b;"));
+    EXPECT_NE(b.file.find("shared/b.glsl"), std::string::npos) << b.file;
+    EXPECT_EQ(b.line, 2);
+    SourceLine m = s.where(lineOf(s, "void main"));
+    EXPECT_NE(m.file.find("stage/main.frag"), std::string::npos) << m.file;
+    EXPECT_EQ(m.line, 4);
+    EXPECT_EQ(s.where(1).file, "<raylab>");
+}
+
+TEST(ShaderSource, FirstDirectoryWinsSoALaterStageCanReplaceAFile) {
+    Tree t;
+    writeFile(t.dir / "stage/b.glsl", "int replacedB;\n");
+    ShaderSource s = assembleShader("main.frag", t.search(), {});
+    EXPECT_NE(s.text.find("replacedB"), std::string::npos);
+    EXPECT_EQ(s.text.find("int b;"), std::string::npos);
+}
+
+TEST(ShaderSource, MissingIncludeNamesTheIncludingFileAndLine) {
+    Tree t;
+    writeFile(t.dir / "stage/a.glsl", "int a;\n#include \"nope.glsl\"\n");
+    try {
+        assembleShader("main.frag", t.search(), {});
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        std::string msg = e.what();
+        EXPECT_NE(msg.find("stage/a.glsl:2: cannot find shader file \"nope.glsl\""), std::string::npos) << msg;
+    }
+}
+
+TEST(ShaderSource, IncludesCannotLeaveTheSearchPath) {
+    Tree t;
+    for (const char* bad : {"../secret.glsl", "/etc/passwd", "sub/../../x.glsl"}) {
+        writeFile(t.dir / "stage/a.glsl", std::string("#include \"") + bad + "\"\n");
+        EXPECT_THROW(assembleShader("main.frag", t.search(), {}), Error) << bad;
+    }
+}
+
+TEST(ShaderSource, MapsMesaNvidiaAndGlslangLogs) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {});
+    int n = lineOf(s, "int b;");
+    std::string log = "0:" + std::to_string(n) + "(5): error: syntax error\n" +           // Mesa
+                      "0(" + std::to_string(n) + ") : error C0000: syntax error\n" +        // NVIDIA
+                      "ERROR: 0:" + std::to_string(n) + ": 'x' : undeclared identifier\n" +  // glslang
+                      "something else\n";
+    std::string mapped = mapCompilerLog(log, s);
+    std::string file = s.where(n).file;
+    EXPECT_NE(mapped.find(file + ":2:5: error: syntax error"), std::string::npos) << mapped;
+    EXPECT_NE(mapped.find(file + ":2: error C0000: syntax error"), std::string::npos) << mapped;
+    EXPECT_NE(mapped.find(file + ":2: error: 'x' : undeclared identifier"), std::string::npos) << mapped;
+    EXPECT_NE(mapped.find("something else"), std::string::npos) << mapped;
+}
+
+TEST(ShaderSource, FindsOpenTodosOutsideComments) {
+    ScratchDir dir;
+    writeFile(dir / "s/main.frag",
+              "// TODO(9.a): do the thing\n"
+              "//     more words\n"
+              "labTodo();\n"
+              "// labTodo(); in a comment does not count\n"
+              "    x = 1; // TODO(9.b): done already, no stub call\n");
+    ShaderSource s = assembleShader("main.frag", {dir / "s"}, {});
+    auto todos = findOpenTodos(s);
+    ASSERT_EQ(todos.size(), 1u);
+    EXPECT_EQ(todos[0].line, 3);
+    EXPECT_EQ(todos[0].title, "TODO(9.a): do the thing");
+}

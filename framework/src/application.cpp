@@ -5,10 +5,26 @@
 #include "gl_loader.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace raylab {
 
+namespace {
+// Without a display SDL falls back to its invisible "offscreen" driver and the
+// loop would run unseen forever; refuse unless a driver was asked for.
+bool canShowAWindow() {
+    for (const char* var : {"DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"}) {
+        const char* value = std::getenv(var);
+        if (value && *value) return true;
+    }
+    return false;
+}
+} // namespace
+
 Application::Application(const Options& options) : options_(options) {
+    if (!canShowAWindow())
+        throw Error("cannot open a window: no display (DISPLAY and WAYLAND_DISPLAY are unset); use `raylab render` or "
+                    "`raylab demo`, or run under xvfb-run");
     if (SDL_Init(SDL_INIT_VIDEO) != 0)
         throw Error(std::string("cannot open a window (") + SDL_GetError() + "); without a display use `raylab render` or `raylab demo`");
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);

@@ -42,3 +42,24 @@ TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) {
     raylab::ImageDiff d = raylab::compareImages(window, headless, raylab::CompareTolerance{}.channel);
     EXPECT_EQ(d.maxDiff, 0) << raylab::describe(d);
 }
+
+// With no usable EGL (here: glvnd finds no EGL vendor), `auto` falls back to
+// OSMesa with a note, and still renders the same image.
+TEST(Backends, AutoFallsBackToOsMesaWhenEglIsUnavailable) {
+    ScratchDir dir;
+    raylab::Image egl = render(dir, "egl");
+    fs::path out = dir / "fallback.png";
+    CommandResult r = runCommand("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json " + quote(RAYLAB_EXE) + " render " + kView +
+                                 " --out " + quote(out));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.err.find("using the OSMesa backend"), std::string::npos) << r.all();
+    EXPECT_NE(r.out.find("osmesa backend"), std::string::npos) << r.all();
+    EXPECT_EQ(raylab::loadPng(out).rgba, egl.rgba);
+}
+
+// Without a display, the window refuses at once instead of running unseen.
+TEST(Backends, RunWithoutADisplayIsAClearError) {
+    CommandResult r = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + quote(RAYLAB_EXE) + " run --stage 01 --solution");
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("raylab: error: cannot open a window: no display"), std::string::npos) << r.err;
+}

@@ -12,8 +12,8 @@ namespace raylab {
 struct FrameTiming {
     double medianMs = 0, minMs = 0, maxMs = 0;
     int frames = 0;
-    const char* method = "glFinish + steady_clock (median)";
-    std::string summary() const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish + steady_clock)"
+    const char* method = "glFinish-fenced, steady clock";
+    std::string summary() const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish-fenced, steady clock)"
 };
 
 // Calls drawFrame() warmup times unmeasured, then frames times measured; each

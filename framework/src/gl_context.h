@@ -35,7 +35,8 @@ std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
 // main() registers its arguments here so that the process can be re-executed.
 void rememberProgramArguments(int argc, char** argv);
 
-// True in the process re-executed for OSMesa (libOSMesa preloaded).
+// True when this process's linked GL 1.1 symbols are OSMesa's (it was
+// re-executed with libOSMesa preloaded).
 bool inOsMesaProcess();
 
 // Replaces this process by the remembered command with libOSMesa preloaded

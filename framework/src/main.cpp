@@ -80,7 +80,9 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "raylab: error: %s (see raylab --help)\n", e.what());
+        std::string help = "raylab --help";
+        for (const CLI::App* sub : app.get_subcommands()) help = "raylab " + sub->get_name() + " --help";
+        std::fprintf(stderr, "raylab: error: %s (see %s)\n", e.what(), help.c_str());
         return 2;
     }
 

@@ -73,11 +73,15 @@ std::vector<std::string> gArguments;
 } // namespace
 
 bool inOsMesaProcess() {
-    const char* marker = std::getenv(kPreloadedMarker);
-    return marker && std::strcmp(marker, "1") == 0;
+    // The invariant that matters: the linked GL 1.1 symbols are OSMesa's.
+    Dl_info info{};
+    const void* clear = reinterpret_cast<const void*>(&glClear);
+    return dladdr(clear, &info) != 0 && info.dli_fname && std::strstr(info.dli_fname, "OSMesa") != nullptr;
 }
 
 void reexecWithOsMesa() {
+    if (const char* marker = std::getenv(kPreloadedMarker); marker && std::strcmp(marker, "1") == 0)
+        throw Error("the OSMesa backend needs libOSMesa preloaded, but preloading it did not take effect");
     std::string preload = kOsMesaLibrary;
     if (const char* old = std::getenv("LD_PRELOAD"); old && *old) preload += std::string(":") + old;
     setenv("LD_PRELOAD", preload.c_str(), 1);

@@ -1,36 +1,18 @@
-// Stage 01 (ray casting), end to end through the `raylab` binary:
-//  - the solution matches the committed reference images from every view;
-//  - the same check fails on the untouched lab and on each known mistake;
+// Stage 01 specifics (the checks every stage gets are in stage_checks_test.cpp):
+//  - the untouched lab names each open TODO with file and line;
 //  - the C++ camera and the GPU agree on the ray through a pixel.
-// Metric and tolerance: see tests/README.md ("How images are compared").
 #include "camera.h"
 #include "image.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 using namespace raylab::test;
 
-namespace {
-const std::string kReferences = quote((sourceDir() / "tests/reference/01-raycast").string());
-}
-
-TEST(Stage01, SolutionMatchesTheCommittedReferenceImages) {
-    CommandResult r = runRaylab("check --stage 01 --solution --against " + kReferences);
-    EXPECT_EQ(r.exitCode, 0) << r.all();
-    EXPECT_NE(r.out.find("6 passed, 0 failed"), std::string::npos) << r.all();
-}
-
-TEST(Stage01, SolutionMatchesTheSolutionRenderedLive) {
-    CommandResult r = runRaylab("check --stage 01 --solution");
-    EXPECT_EQ(r.exitCode, 0) << r.all();
-}
-
-TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodos) {
+TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodosWithFileAndLine) {
     CommandResult r = runRaylab("check --stage 01 --lab");
     EXPECT_EQ(r.exitCode, 1) << r.all();
     EXPECT_EQ(failedViews(r.out).size(), 6u) << r.all();
@@ -38,33 +20,10 @@ TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodos) {
     EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos) << r.err;
 }
 
-TEST(Stage01, SolvedLabCopyPasses) {
-    ScratchDir lab;
-    writeSolvedLabs(lab.path());
-    CommandResult r = runRaylab("check --stage 01 --lab " + quote(lab.path()));
-    EXPECT_EQ(r.exitCode, 0) << r.all();
-    EXPECT_EQ(r.err.find("open TODO"), std::string::npos) << "a solved lab has no open TODOs: " << r.err;
-}
-
-// Each file in tests/mistakes/01-raycast/ is a typical mistake, written as a
-// text replacement in the solved lab. The check must fail on the views it names.
-TEST(Stage01, EveryKnownMistakeIsCaught) {
-    int mistakes = 0;
-    for (const auto& entry : fs::directory_iterator(sourceDir() / "tests/mistakes/01-raycast")) {
-        auto spec = nlohmann::json::parse(readFile(entry.path()));
-        SCOPED_TRACE(entry.path().filename().string() + ": " + spec["mistake"].get<std::string>());
-        ScratchDir lab;
-        writeSolvedLabs(lab.path());
-        for (const auto& pair : spec["replace"]) replaceInFile(lab / ("01-raycast/" + spec["file"].get<std::string>()), pair[0], pair[1]);
-        CommandResult r = runRaylab("check --stage 01 --lab " + quote(lab.path()));
-        EXPECT_EQ(r.exitCode, 1) << r.all();
-        std::vector<std::string> failed = failedViews(r.out);
-        for (const auto& view : spec["caught_by"])
-            EXPECT_NE(std::find(failed.begin(), failed.end(), view.get<std::string>()), failed.end())
-                << "expected view " << view << " to fail\n" << r.out;
-        ++mistakes;
-    }
-    EXPECT_GE(mistakes, 3);
+TEST(Stage01, KnownMistakesCoverTheGuidesList) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(sourceDir() / "tests/mistakes/01-raycast")) count += entry.path().extension() == ".json";
+    EXPECT_GE(count, 3) << "issue: far root, discriminant sign, no t > 0 check at least";
 }
 
 // A tiny sphere placed on the C++ camera's ray through one pixel must show up

@@ -1,0 +1,89 @@
+// For every available stage, through the `raylab` binary:
+//  - the solution matches the committed reference images (tests/reference/<stage>/);
+//  - the untouched lab fails the check (proof that the check can fail);
+//  - a fully solved copy of the lab passes, with no open TODOs;
+//  - every known mistake in tests/mistakes/<stage>/ fails on the views it names.
+// A new stage gets these tests by adding its references and mistakes.
+// Metric and tolerance: tests/README.md ("How images are compared").
+#include "stage_catalog.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+using namespace raylab::test;
+
+namespace {
+
+std::vector<std::string> availableStages() {
+    std::vector<std::string> ids;
+    for (const raylab::StageInfo& s : raylab::allStages())
+        if (s.available()) ids.push_back(s.id);
+    return ids;
+}
+
+class StageChecks : public ::testing::TestWithParam<std::string> {
+protected:
+    const std::string& stage() const { return GetParam(); }
+    std::string stageArg() const { return "--stage " + stage(); }
+};
+
+} // namespace
+
+TEST_P(StageChecks, SolutionMatchesTheCommittedReferenceImages) {
+    fs::path refs = sourceDir() / "tests/reference" / stage();
+    ASSERT_TRUE(fs::is_directory(refs)) << "make them with: build/raylab check " << stageArg() << " --solution --save " << refs;
+    CommandResult r = runRaylab("check " + stageArg() + " --solution --against " + quote(refs));
+    EXPECT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_TRUE(failedViews(r.out).empty()) << r.out;
+}
+
+TEST_P(StageChecks, UntouchedLabFailsAndListsItsOpenTodos) {
+    CommandResult r = runRaylab("check " + stageArg() + " --lab");
+    EXPECT_EQ(r.exitCode, 1) << r.all();
+    EXPECT_FALSE(failedViews(r.out).empty()) << r.out;
+    EXPECT_NE(r.err.find("open TODO"), std::string::npos) << r.err;
+}
+
+TEST_P(StageChecks, SolvedLabCopyPassesWithNoOpenTodos) {
+    ScratchDir lab;
+    writeSolvedLabs(lab.path());
+    CommandResult r = runRaylab("check " + stageArg() + " --lab " + quote(lab.path()));
+    EXPECT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_EQ(r.err.find("open TODO"), std::string::npos) << r.err;
+}
+
+// Each file in tests/mistakes/<stage>/ is a typical mistake, written as text
+// replacements in a solved copy of the lab. The check must fail on the views
+// the file names under "caught_by".
+TEST_P(StageChecks, EveryKnownMistakeIsCaught) {
+    fs::path dir = sourceDir() / "tests/mistakes" / stage();
+    ASSERT_TRUE(fs::is_directory(dir)) << "every stage needs a mistakes catalogue: " << dir;
+    int mistakes = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        auto spec = nlohmann::json::parse(readFile(entry.path()));
+        SCOPED_TRACE(entry.path().filename().string() + ": " + spec["mistake"].get<std::string>());
+        EXPECT_EQ(spec["stage"], stage());
+        ScratchDir lab;
+        writeSolvedLabs(lab.path());
+        for (const auto& pair : spec["replace"])
+            replaceInFile(lab / stage() / spec["file"].get<std::string>(), pair[0], pair[1]);
+        CommandResult r = runRaylab("check " + stageArg() + " --lab " + quote(lab.path()));
+        EXPECT_EQ(r.exitCode, 1) << r.all();
+        std::vector<std::string> failed = failedViews(r.out);
+        for (const auto& view : spec["caught_by"])
+            EXPECT_NE(std::find(failed.begin(), failed.end(), view.get<std::string>()), failed.end())
+                << "expected view " << view << " to fail\n" << r.out;
+        ++mistakes;
+    }
+    EXPECT_GE(mistakes, 2) << "at least two typical mistakes per stage";
+}
+
+INSTANTIATE_TEST_SUITE_P(AllStages, StageChecks, ::testing::ValuesIn(availableStages()),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                             std::string name = param.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });

@@ -2,7 +2,6 @@
 
 #include "error.h"
 #include "paths.h"
-#include "shader_source.h"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +18,7 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     s.size = parseSize(o.size);
     std::filesystem::path sceneFile = o.scene.empty() ? projectRoot() / "assets" / "scenes" / s.stage->scene : std::filesystem::path(o.scene);
     s.scene = loadScene(sceneFile);
-    s.camera = o.camera.empty() ? Camera(s.scene.camera, s.scene.fovYDeg) : Camera(parseCamera(o.camera), s.scene.fovYDeg);
+    s.camera = cameraFor(o.camera.empty() ? std::nullopt : std::optional<CameraPose>(parseCamera(o.camera)), s.scene);
     s.time = o.time;
     return s;
 }

@@ -5,6 +5,7 @@
 #include "camera.h"
 #include "cli_parse.h"
 #include "scene.h"
+#include "shader_source.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 
@@ -40,6 +41,6 @@ StageSetup resolveStageOptions(const StageOptions& options);
 Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene);
 
 // Prints the open TODOs of a lab to stderr, once per program run.
-void reportOpenTodos(const std::vector<struct OpenTodo>& todos);
+void reportOpenTodos(const std::vector<OpenTodo>& todos);
 
 } // namespace raylab

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab {
@@ -86,6 +87,31 @@ Scene loadScene(const std::filesystem::path& file) {
         scene.fovYDeg = r.positive(cam["fov_y"], "camera.fov_y");
         if (scene.fovYDeg >= 170.0f) r.fail("camera.fov_y", "must be below 170 degrees");
     }
+    if (doc.contains("materials")) {
+        const json& materials = doc["materials"];
+        if (!materials.is_object()) r.fail("materials", "expected an object of named materials");
+        for (const auto& [name, m] : materials.items()) {
+            std::string where = "materials." + name;
+            Material mat;
+            mat.name = name;
+            mat.ambient = r.color(r.member(m, where, "ambient"), where + ".ambient");
+            mat.diffuse = r.color(r.member(m, where, "diffuse"), where + ".diffuse");
+            mat.specular = r.color(r.member(m, where, "specular"), where + ".specular");
+            mat.shininess = r.positive(r.member(m, where, "shininess"), where + ".shininess");
+            scene.materials.push_back(mat);
+        }
+    }
+    if (doc.contains("lights")) {
+        const json& lights = doc["lights"];
+        if (!lights.is_array()) r.fail("lights", "expected a list");
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            std::string where = "lights[" + std::to_string(i) + "]";
+            PointLight light;
+            light.position = r.vec3(r.member(lights[i], where, "position"), where + ".position");
+            light.color = r.color(r.member(lights[i], where, "color"), where + ".color");
+            scene.lights.push_back(light);
+        }
+    }
     const json& spheres = r.member(doc, "scene", "spheres");
     if (!spheres.is_array()) r.fail("spheres", "expected a list");
     for (std::size_t i = 0; i < spheres.size(); ++i) {
@@ -94,7 +120,19 @@ Scene loadScene(const std::filesystem::path& file) {
         Sphere sphere;
         sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
         sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
-        sphere.color = r.color(r.member(s, where, "color"), where + ".color");
+        if (s.is_object() && s.contains("material")) {
+            if (!s["material"].is_string()) r.fail(where + ".material", "expected the name of a material");
+            std::string name = s["material"].get<std::string>();
+            auto it = std::find_if(scene.materials.begin(), scene.materials.end(), [&](const Material& m) { return m.name == name; });
+            if (it == scene.materials.end()) r.fail(where + ".material", "unknown material \"" + name + "\"");
+            sphere.material = int(it - scene.materials.begin());
+        } else {
+            Material flat;
+            flat.name = where;
+            flat.diffuse = r.color(r.member(s, where, "color"), where + ".color");
+            sphere.material = int(scene.materials.size());
+            scene.materials.push_back(flat);
+        }
         if (s.contains("motion")) {
             const json& m = s["motion"];
             std::string mw = where + ".motion";

@@ -17,10 +17,25 @@ struct Motion {
     glm::vec3 offsetAt(float t) const;
 };
 
+// Blinn-Phong material. Scenes name materials in a table; objects refer to
+// them by name.
+struct Material {
+    std::string name;
+    glm::vec3 ambient{0.0f};
+    glm::vec3 diffuse{1.0f};   // also the flat colour of stage 01
+    glm::vec3 specular{0.0f};
+    float shininess = 30.0f;   // the seed's exponent
+};
+
+struct PointLight {
+    glm::vec3 position{0.0f};
+    glm::vec3 color{1.0f};
+};
+
 struct Sphere {
     glm::vec3 center{0.0f};
     float radius = 1.0f;
-    glm::vec3 color{1.0f};
+    int material = 0;  // index into Scene::materials
     Motion motion;
 };
 
@@ -29,11 +44,15 @@ struct Scene {
     glm::vec3 background{0.0f};
     CameraPose camera;
     float fovYDeg = 36.87f;
+    std::vector<Material> materials;
+    std::vector<PointLight> lights;
     std::vector<Sphere> spheres;
 };
 
 // Throws Error "FILE: where: what" for a missing file, a JSON syntax error
-// (with line and column) or a wrong or missing value.
+// (with line and column), a wrong or missing value, or an unknown material.
+// A sphere gives either "material" (a name from "materials") or "color" (a
+// flat colour: a material of its own with that diffuse colour).
 Scene loadScene(const std::filesystem::path& file);
 
 } // namespace raylab

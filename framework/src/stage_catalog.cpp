@@ -14,8 +14,6 @@ std::vector<StageInfo> makeStages() {
     raycast.id = "01-raycast";
     raycast.title = "ray casting: primary rays, ray-sphere intersection, nearest hit, flat colours";
     raycast.scene = "stage01.json";
-    raycast.maxSpheres = 16;
-    raycast.defines = {"MAX_SPHERES 16"};
     raycast.checkViews = {
         {"front", std::nullopt, 0.0f, "the scene camera: overlapping spheres at several depths"},
         {"close-overlap", CameraPose{{1.9f, 1.1f, 3.2f}, -28.0f, -8.0f}, 0.0f,
@@ -30,9 +28,24 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(raycast);
 
+    StageInfo shading;
+    shading.id = "02-shading";
+    shading.title = "Blinn-Phong shading: ambient once, diffuse and specular from three point lights, a material table";
+    shading.scene = "stage02.json";
+    shading.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: every sphere lit by three lights"},
+        {"highlights", CameraPose{{1.6f, 1.9f, 3.6f}, -18.0f, -14.0f}, 0.0f,
+         "close to shiny spheres: the size and place of the highlights (half vector, exponent)"},
+        {"dark-side", CameraPose{{-1.5f, 1.6f, -6.5f}, 160.0f, -6.0f}, 0.0f,
+         "the sides facing away from the lights: ambient only, no negative light"},
+        {"inside", CameraPose{{5.0f, 1.0f, -2.4f}, 0.0f, 0.0f}, 0.0f,
+         "camera inside a large sphere: its inside is lit with the normal facing the eye"},
+        {"moving", std::nullopt, 1.3f, "time 1.3 s: the white sphere has moved, its shading with it"},
+    };
+    stages.push_back(shading);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"02-shading", "Blinn-Phong shading with three point lights and a material table"},
         {"03-shadows", "shadow rays toward each light, offset on the correct side"},
         {"04-recursion", "reflection and refraction with an explicit stack instead of recursion"},
         {"05-primitives", "planes, discs, triangles, a glass cube and a torus"},
@@ -56,6 +69,13 @@ std::string stageList() {
 }
 
 } // namespace
+
+std::vector<std::string> StageInfo::defines() const {
+    std::vector<std::string> all = {"MAX_SPHERES " + std::to_string(maxSpheres), "MAX_MATERIALS " + std::to_string(maxMaterials),
+                                    "MAX_LIGHTS " + std::to_string(maxLights)};
+    all.insert(all.end(), extraDefines.begin(), extraDefines.end());
+    return all;
+}
 
 bool StageInfo::available() const {
     std::error_code ec;

@@ -21,11 +21,15 @@ struct StageInfo {
     std::string id;                 // "01-raycast"
     std::string title;              // one line for `raylab stages`
     std::string scene;              // default scene, relative to assets/scenes/
-    std::vector<std::string> defines;
-    int maxSpheres = 0;             // scene limits the shader was written for
+    std::vector<std::string> extraDefines;  // besides the scene limits below
+    int maxSpheres = 16;            // scene limits the shader is compiled for
+    int maxMaterials = 16;
+    int maxLights = 4;
     std::vector<CheckView> checkViews;
 
     std::string number() const { return id.substr(0, 2); }
+    // MAX_SPHERES, MAX_MATERIALS, MAX_LIGHTS and the extra defines.
+    std::vector<std::string> defines() const;
     bool available() const;         // solution/<id>/ exists
 };
 

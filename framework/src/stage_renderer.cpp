@@ -8,10 +8,21 @@ namespace raylab {
 
 namespace {
 
+void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count, int limit) {
+    if (int(count) > limit)
+        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what + ", but stage " + stage.id +
+                    " supports at most " + std::to_string(limit));
+}
+
 void checkSceneFits(const StageInfo& stage, const Scene& scene) {
-    if (int(scene.spheres.size()) > stage.maxSpheres)
-        throw Error(scene.file + ": spheres: " + std::to_string(scene.spheres.size()) + " spheres, but stage " + stage.id +
-                    " supports at most " + std::to_string(stage.maxSpheres));
+    checkFits(scene, stage, "spheres", scene.spheres.size(), stage.maxSpheres);
+    checkFits(scene, stage, "materials", scene.materials.size(), stage.maxMaterials);
+    checkFits(scene, stage, "lights", scene.lights.size(), stage.maxLights);
+}
+
+// Uploads an array uniform NAME[0..] of vec3s when the program has it.
+void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec3>& values) {
+    if (!values.empty()) glUniform3fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
 }
 
 } // namespace
@@ -23,8 +34,8 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
 }
 
 void StageRenderer::rebuild() {
-    ShaderSource vertex = assembleShader(kVertexEntry, sources_.search, stage_.defines);
-    ShaderSource fragment = assembleShader(kFragmentEntry, sources_.search, stage_.defines);
+    ShaderSource vertex = assembleShader(kVertexEntry, sources_.search, stage_.defines());
+    ShaderSource fragment = assembleShader(kFragmentEntry, sources_.search, stage_.defines());
     auto program = std::make_unique<ShaderProgram>(vertex, fragment);
     program_ = std::move(program);
     files_ = fragment.files;
@@ -48,17 +59,45 @@ void StageRenderer::render(const Camera& camera, float timeSeconds) {
     glUniform1f(p.uniform("uTime"), timeSeconds);
     glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
 
+    // Spheres: position (moving ones at this time), flat colour, material index.
     std::vector<glm::vec4> spheres;
     std::vector<glm::vec3> colors;
+    std::vector<GLint> materialOf;
     for (const Sphere& s : scene_.spheres) {
         spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
-        colors.push_back(s.color);
+        colors.push_back(scene_.materials[std::size_t(s.material)].diffuse);
+        materialOf.push_back(s.material);
     }
     glUniform1i(p.uniform("uSphereCount"), GLint(spheres.size()));
     if (!spheres.empty()) {
         glUniform4fv(p.uniform("uSpheres[0]"), GLsizei(spheres.size()), glm::value_ptr(spheres[0]));
-        glUniform3fv(p.uniform("uSphereColors[0]"), GLsizei(colors.size()), glm::value_ptr(colors[0]));
+        glUniform1iv(p.uniform("uSphereMaterial[0]"), GLsizei(materialOf.size()), materialOf.data());
     }
+    setVec3Array(p, "uSphereColors", colors);
+
+    // The material table.
+    std::vector<glm::vec3> ambient, diffuse, specular;
+    std::vector<GLfloat> shininess;
+    for (const Material& m : scene_.materials) {
+        ambient.push_back(m.ambient);
+        diffuse.push_back(m.diffuse);
+        specular.push_back(m.specular);
+        shininess.push_back(m.shininess);
+    }
+    setVec3Array(p, "uMatAmbient", ambient);
+    setVec3Array(p, "uMatDiffuse", diffuse);
+    setVec3Array(p, "uMatSpecular", specular);
+    if (!shininess.empty()) glUniform1fv(p.uniform("uMatShininess[0]"), GLsizei(shininess.size()), shininess.data());
+
+    // Point lights.
+    std::vector<glm::vec3> lightPositions, lightColors;
+    for (const PointLight& l : scene_.lights) {
+        lightPositions.push_back(l.position);
+        lightColors.push_back(l.color);
+    }
+    glUniform1i(p.uniform("uLightCount"), GLint(lightPositions.size()));
+    setVec3Array(p, "uLightPositions", lightPositions);
+    setVec3Array(p, "uLightColors", lightColors);
     canvas_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -32,6 +32,9 @@ void expectCleanFailure(const ScratchDir& dir, const BadCase& c) {
 TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
     ScratchDir dir;
     writeFile(dir / "broken.json", "{ \"background\": [0, 0, 0], ");
+    std::string manyLights = "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 5], \"yaw\": 0, \"pitch\": 0}, \"lights\": [";
+    for (int i = 0; i < 9; ++i) manyLights += std::string(i ? "," : "") + "{\"position\": [0, 0, 0], \"color\": [1, 1, 1]}";
+    writeFile(dir / "many-lights.json", manyLights + "], \"spheres\": []}");
     const BadCase cases[] = {
         {"unknown-stage", "--stage 42", "unknown stage '42'"},
         {"unknown-stage-name", "--stage 01-raytrace", "unknown stage '01-raytrace'"},
@@ -40,6 +43,7 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
         {"lab-without-stage", "--stage 01 --lab " + quote(dir.path()), "has no 01-raycast/"},
         {"missing-scene", "--stage 01 --solution --scene /nonexistent/s.json", "scene file /nonexistent/s.json does not exist"},
         {"malformed-scene", "--stage 01 --solution --scene " + quote(dir / "broken.json"), "JSON syntax error"},
+        {"too-many-lights", "--stage 02 --solution --scene " + quote(dir / "many-lights.json"), "lights: 9 lights, but stage 02-shading supports at most 4"},
         {"size-format", "--stage 01 --solution --size 800by600", "--size '800by600': expected WIDTHxHEIGHT"},
         {"size-absurd", "--stage 01 --solution --size 100000x100000", "--size"},
         {"size-zero", "--stage 01 --solution --size 0x10", "each side must be between 1 and"},

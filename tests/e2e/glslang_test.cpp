@@ -28,8 +28,8 @@ TEST(Glslang, EveryStageShaderIsValidGlsl330Core) {
         if (!stage.available()) continue;
         for (const StageSources& sources : {solutionSources(stage), labSources(stage, defaultLabRoot())}) {
             SCOPED_TRACE(stage.id + " " + sources.label);
-            ShaderSource vert = assembleShader(kVertexEntry, sources.search, stage.defines);
-            ShaderSource frag = assembleShader(kFragmentEntry, sources.search, stage.defines);
+            ShaderSource vert = assembleShader(kVertexEntry, sources.search, stage.defines());
+            ShaderSource frag = assembleShader(kFragmentEntry, sources.search, stage.defines());
             CommandResult rv = validate(dir, vert, "s.vert"), rf = validate(dir, frag, "s.frag");
             EXPECT_EQ(rv.exitCode, 0) << mapCompilerLog(rv.out, vert);
             EXPECT_EQ(rf.exitCode, 0) << mapCompilerLog(rf.out, frag);

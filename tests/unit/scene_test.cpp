@@ -68,6 +68,47 @@ TEST(Scene, BadFilesGiveOneLineErrorsThatSayWhere) {
     EXPECT_NE(errorFor("[]").find("expected an object"), std::string::npos);
 }
 
+TEST(Scene, MaterialsAreATableAndSpheresNameTheirEntry) {
+    ScratchDir dir;
+    writeFile(dir / "scene.json", R"({
+      "background": [0, 0, 0],
+      "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+      "materials": {
+        "shiny": {"ambient": [0.1, 0, 0], "diffuse": [0.8, 0, 0], "specular": [1, 1, 1], "shininess": 80},
+        "matte": {"ambient": [0, 0.1, 0], "diffuse": [0, 0.8, 0], "specular": [0, 0, 0], "shininess": 1}
+      },
+      "lights": [{"position": [1, 2, 3], "color": [1, 1, 1]}, {"position": [-1, 2, 3], "color": [0.5, 0.5, 0.5]}],
+      "spheres": [
+        {"center": [0, 0, 0], "radius": 1, "material": "matte"},
+        {"center": [2, 0, 0], "radius": 1, "material": "shiny"},
+        {"center": [4, 0, 0], "radius": 1, "color": [0, 0, 1]}
+      ]})");
+    Scene s = loadScene(dir / "scene.json");
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_FLOAT_EQ(s.lights[1].color.r, 0.5f);
+    ASSERT_EQ(s.materials.size(), 3u) << "two named materials plus one for the flat-coloured sphere";
+    EXPECT_EQ(s.materials[std::size_t(s.spheres[0].material)].name, "matte");
+    EXPECT_EQ(s.materials[std::size_t(s.spheres[1].material)].name, "shiny");
+    EXPECT_FLOAT_EQ(s.materials[std::size_t(s.spheres[1].material)].shininess, 80.0f);
+    EXPECT_FLOAT_EQ(s.materials[std::size_t(s.spheres[2].material)].diffuse.b, 1.0f) << "a flat colour is a diffuse colour";
+}
+
+TEST(Scene, UnknownOrMalformedMaterialsAreErrors) {
+    const std::string base = R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+      "materials": {"m": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 30}},
+      "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "m"}]})";
+    auto with = [&](const std::string& from, const std::string& to) {
+        std::string t = base;
+        t.replace(t.find(from), from.size(), to);
+        return t;
+    };
+    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": \"gold\"")).find("spheres[0].material: unknown material \"gold\""), std::string::npos);
+    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": 3")).find("spheres[0].material: expected the name"), std::string::npos);
+    EXPECT_NE(errorFor(with("\"shininess\": 30", "\"shininess\": 0")).find("materials.m.shininess: expected a positive number"), std::string::npos);
+    EXPECT_NE(errorFor(with("\"specular\": [0, 0, 0], ", "")).find("materials.m: missing \"specular\""), std::string::npos);
+    EXPECT_NE(errorFor(with("\"spheres\"", "\"lights\": [{\"position\": [0, 0]}], \"spheres\"")).find("lights[0].position: expected [x, y, z]"), std::string::npos);
+}
+
 TEST(Scene, MissingFileIsAnError) {
     EXPECT_THROW(loadScene("/nonexistent/scene.json"), Error);
 }

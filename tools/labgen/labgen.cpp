@@ -41,7 +41,7 @@ std::map<std::string, std::string> generateStage(const StageInfo& stage, MarkedF
     const fs::path framework = projectRoot() / "framework";
     std::map<std::string, std::string> files;
     for (const char* entry : {kVertexEntry, kFragmentEntry}) {
-        ShaderSource src = assembleShader(entry, sources.search, stage.defines);
+        ShaderSource src = assembleShader(entry, sources.search, stage.defines());
         for (const fs::path& f : src.files) {
             fs::path canonical = fs::weakly_canonical(f);
             if (canonical.lexically_relative(framework).begin()->string() != "..") continue;

@@ -36,11 +36,12 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
         Camera camera = cameraFor(view.pose, setup.scene);
-        student.render(camera, view.time);
+        const RenderSettings settings{view.shadows};
+        student.render(camera, view.time, settings);
         Image mine = student.read();
         Image expected;
         if (reference) {
-            reference->render(camera, view.time);
+            reference->render(camera, view.time, settings);
             expected = reference->read();
         } else {
             expected = loadPng(against / (view.name + ".png"));

@@ -32,7 +32,7 @@ int cmdDemo(const DemoOptions& demo) {
 
     auto context = createHeadlessContext(demo.backend);
     StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height);
-    FrameTiming timing = timeFrames([&] { renderer.render(setup.camera, setup.time); }, 3, demo.frames);
+    FrameTiming timing = timeFrames([&] { renderer.render(setup.camera, setup.time, setup.settings); }, 3, demo.frames);
     std::filesystem::path out = outDir / (stage.id + ".png");
     writePngAtomic(renderer.read(), out);
     std::printf("raylab demo: stage %s (the highest finished stage), %dx%d, %s backend, %s\n", stage.id.c_str(), setup.size.width,

@@ -22,7 +22,7 @@ int cmdRender(const StageOptions& options, const std::string& outFile, Backend b
     auto context = createHeadlessContext(backend);
     StageRenderer renderer(*setup.stage, setup.sources, setup.scene, setup.size.width, setup.size.height);
     reportOpenTodos(renderer.openTodos());
-    renderer.render(setup.camera, setup.time);
+    renderer.render(setup.camera, setup.time, setup.settings);
     writePngAtomic(renderer.read(), outFile);
     std::printf("raylab: wrote %s (%dx%d, stage %s, %s, %s backend)\n", outFile.c_str(), setup.size.width, setup.size.height,
                 setup.stage->id.c_str(), setup.sources.label.c_str(), context->backendName().c_str());

@@ -44,9 +44,24 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(shading);
 
+    StageInfo shadows;
+    shadows.id = "03-shadows";
+    shadows.title = "shadows: a ray toward each light, started just off the surface on the correct side";
+    shadows.scene = "stage02.json";
+    shadows.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: spheres shadow each other"},
+        {"shadow-closeup", CameraPose{{2.6f, 1.5f, 3.2f}, -40.0f, -12.0f}, 0.0f,
+         "close to shadows cast by one sphere on another, from three lights"},
+        {"grazing", CameraPose{{-4.5f, 1.4f, 1.5f}, 115.0f, -4.0f}, 0.0f,
+         "surfaces lit at a grazing angle, where a badly started shadow ray hits its own surface"},
+        {"beyond-light", CameraPose{{-3.5f, 4.5f, 5.0f}, 35.0f, -30.0f}, 0.0f,
+         "a sphere behind a light must not shadow anything: only blockers closer than the light count"},
+        {"shadows-off", std::nullopt, 0.0f, "key 1: with shadows off every light reaches every point", false},
+    };
+    stages.push_back(shadows);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"03-shadows", "shadow rays toward each light, offset on the correct side"},
         {"04-recursion", "reflection and refraction with an explicit stack instead of recursion"},
         {"05-primitives", "planes, discs, triangles, a glass cube and a torus"},
         {"06-textures", "textured spheres and planes, sky box, sun glow"},

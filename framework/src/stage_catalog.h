@@ -15,6 +15,7 @@ struct CheckView {
     std::optional<CameraPose> pose;  // none: the scene's own camera
     float time = 0.0f;
     std::string why;  // what this view exercises
+    bool shadows = true;
 };
 
 struct StageInfo {

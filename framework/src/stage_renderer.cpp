@@ -43,7 +43,7 @@ void StageRenderer::rebuild() {
     todos_ = findOpenTodos(fragment);
 }
 
-void StageRenderer::render(const Camera& camera, float timeSeconds) {
+void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
     target_->bind();
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -57,6 +57,7 @@ void StageRenderer::render(const Camera& camera, float timeSeconds) {
     glUniform1f(p.uniform("uFocal"), camera.focalLength());
     glUniform1f(p.uniform("uAspect"), float(target_->width()) / float(target_->height()));
     glUniform1f(p.uniform("uTime"), timeSeconds);
+    glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
     glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
 
     // Spheres: position (moving ones at this time), flat colour, material index.

@@ -16,13 +16,18 @@
 
 namespace raylab {
 
+// Run-time switches a frame is drawn with (window keys, command-line flags).
+struct RenderSettings {
+    bool shadows = true;  // key 1, --no-shadows
+};
+
 class StageRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene, missing file) or
     // ShaderError (compile/link error, mapped to file:line).
     StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height);
 
-    void render(const Camera& camera, float timeSeconds);
+    void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
     Image read() const { return target_->read(); }
     const Framebuffer& target() const { return *target_; }
     // A new render target of another size (the window was resized).

@@ -20,6 +20,7 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     s.scene = loadScene(sceneFile);
     s.camera = cameraFor(o.camera.empty() ? std::nullopt : std::optional<CameraPose>(parseCamera(o.camera)), s.scene);
     s.time = o.time;
+    s.settings.shadows = !o.noShadows;
     return s;
 }
 

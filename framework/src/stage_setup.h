@@ -7,6 +7,7 @@
 #include "scene.h"
 #include "shader_source.h"
 #include "stage_catalog.h"
+#include "stage_renderer.h"
 #include "stage_sources.h"
 
 #include <optional>
@@ -23,6 +24,7 @@ struct StageOptions {
     std::string size = "800x600";
     std::string camera;     // empty: the scene's camera
     float time = 0.0f;
+    bool noShadows = false;
 };
 
 struct StageSetup {
@@ -32,6 +34,7 @@ struct StageSetup {
     Size size;
     Camera camera;
     float time = 0.0f;
+    RenderSettings settings;
 };
 
 // Validates everything before any window or context is created.

@@ -65,7 +65,7 @@ void ViewerApp::render() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
     if (w != renderer_->target().width() || h != renderer_->target().height()) renderer_->resize(w, h);
-    renderer_->render(setup_.camera, time_);
+    renderer_->render(setup_.camera, time_, setup_.settings);
     renderer_->target().blitToScreen(w, h);
     ++frames_;
     if (automation_.exitAfterFrames > 0 && frames_ >= automation_.exitAfterFrames) {
@@ -95,6 +95,10 @@ void ViewerApp::onEvent(const SDL_Event& event) {
         if (event.key.repeat) break;
         switch (event.key.keysym.sym) {
         case SDLK_ESCAPE: quit(); break;
+        case SDLK_1:
+            setup_.settings.shadows = !setup_.settings.shadows;
+            std::printf("shadows %s\n", setup_.settings.shadows ? "on" : "off");
+            break;
         case SDLK_v:
             setVsync(!vsync());
             std::printf("vsync %s\n", vsync() ? "on" : "off");

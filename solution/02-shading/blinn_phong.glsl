@@ -3,42 +3,52 @@
 //   normal  - unit surface normal, facing the eye
 //   toEye   - unit vector from the point toward the eye
 //   m       - the surface's material
-// Returns ambient + sum over the lights of (diffuse + specular).
+// Returns ambient + sum over the lights that reach the point of
+// (diffuse + specular).
+#include "light_visibility.glsl"
+
 vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
 {
     vec3 color = vec3(0.0);
 
-    // TODO(02.a): ambient and diffuse. Add the ambient colour once (it
-    // stands for light that arrives from everywhere, not from one lamp),
-    // then for every light i < uLightCount the diffuse term
-    //     lightColor * m.diffuse * max(N . L, 0)
-    // with L the unit vector from the point toward the light.
-    // Checked by: raylab check --stage 02 (views front, dark-side, inside).
+    // TODO(02.a): the ambient colour, added once: it stands for light that
+    // arrives from everywhere, not from one lamp.
+    // Checked by: raylab check --stage 02 (views dark-side, inside).
     //@solution
     color += m.ambient;
-    for (int i = 0; i < uLightCount; ++i) {
-        vec3 toLight = normalize(uLightPositions[i] - point);
-        color += uLightColors[i] * m.diffuse * max(dot(normal, toLight), 0.0);
-    }
     //@stub
     //@ labTodo();
-    //@ color = m.diffuse;  // placeholder: the flat colour of lab 01
     //@end
 
-    // TODO(02.b): specular highlights. For every light add
-    //     lightColor * m.specular * max(N . H, 0)^m.shininess
-    // with H the unit half vector between L and toEye - but only where the
-    // light reaches the front of the surface (N . L > 0).
-    // Checked by: raylab check --stage 02 (views front, highlights).
-    //@solution
     for (int i = 0; i < uLightCount; ++i) {
+        if (!lightVisible(point, normal, i)) continue;  // in shadow (lab 03); always visible here
         vec3 toLight = normalize(uLightPositions[i] - point);
-        if (dot(normal, toLight) <= 0.0) continue;  // the light is behind the surface
-        vec3 halfway = normalize(toLight + toEye);
-        color += uLightColors[i] * m.specular * pow(max(dot(normal, halfway), 0.0), m.shininess);
+
+        // TODO(02.b): the diffuse term of light i,
+        //     uLightColors[i] * m.diffuse * max(N . L, 0)
+        // with L = toLight.
+        // Checked by: raylab check --stage 02 (views front, dark-side).
+        //@solution
+        float lambert = max(dot(normal, toLight), 0.0);
+        color += uLightColors[i] * m.diffuse * lambert;
+        //@stub
+        //@ labTodo();
+        //@ color += m.diffuse / float(uLightCount);  // placeholder: the flat colour of lab 01
+        //@end
+
+        // TODO(02.c): the specular term of light i,
+        //     uLightColors[i] * m.specular * max(N . H, 0)^m.shininess
+        // with H the unit half vector between L and toEye - only where the
+        // light reaches the front of the surface (N . L > 0).
+        // Checked by: raylab check --stage 02 (view highlights).
+        //@solution
+        if (lambert > 0.0) {
+            vec3 halfway = normalize(toLight + toEye);
+            color += uLightColors[i] * m.specular * pow(max(dot(normal, halfway), 0.0), m.shininess);
+        }
+        //@stub
+        //@ labTodo();
+        //@end
     }
-    //@stub
-    //@ labTodo();
-    //@end
     return color;
 }

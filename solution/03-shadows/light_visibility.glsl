@@ -1,0 +1,42 @@
+// Does light `light` reach `point`, or is something in between?
+//   point  - a surface point (a hit found by findClosest)
+//   normal - unit surface normal at the point (facing the eye)
+// uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
+uniform int uShadows;
+
+// How far above the surface a shadow ray starts. A hit point computed in
+// floating point lies a tiny bit above or below the true surface; started
+// exactly there, the ray could hit its own surface ("shadow acne").
+const float SHADOW_OFFSET = 1e-3;
+
+bool lightVisible(vec3 point, vec3 normal, int light)
+{
+    if (uShadows == 0) return true;
+    vec3 toLight = uLightPositions[light] - point;
+    float distanceToLight = length(toLight);
+    vec3 dir = toLight / distanceToLight;
+
+    // TODO(03.a): start the shadow ray just off the surface, on the side it
+    // leaves from - the side the light is on: point + side * SHADOW_OFFSET,
+    // with side = normal if the light is in front of the surface, -normal if
+    // behind it.
+    // Checked by: raylab check --stage 03 (views front, grazing).
+    //@solution
+    vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;
+    Ray shadowRay = Ray(point + side * SHADOW_OFFSET, dir);
+    //@stub
+    //@ labTodo();
+    //@ Ray shadowRay = Ray(point, dir);
+    //@end
+
+    // TODO(03.b): the light is blocked when findClosest finds an object
+    // between the start of the shadow ray and the light - not beyond it.
+    // Checked by: raylab check --stage 03 (views front, beyond-light).
+    //@solution
+    Hit blocker;
+    return !(findClosest(shadowRay, blocker) && blocker.t < distanceToLight);
+    //@stub
+    //@ labTodo();
+    //@ return true;
+    //@end
+}

@@ -11,7 +11,7 @@
 namespace raylab {
 
 int cmdDemo(const DemoOptions& demo) {
-    const StageInfo& stage = latestAvailableStage();
+    const StageInfo& stage = demo.stage.empty() ? latestAvailableStage() : findStage(demo.stage);
     StageOptions options;
     options.stage = stage.id;
     options.solution = true;
@@ -35,7 +35,8 @@ int cmdDemo(const DemoOptions& demo) {
     FrameTiming timing = timeFrames([&] { renderer.render(setup.camera, setup.time, setup.settings); }, 3, demo.frames);
     std::filesystem::path out = outDir / (stage.id + ".png");
     writePngAtomic(renderer.read(), out);
-    std::printf("raylab demo: stage %s (the highest finished stage), %dx%d, %s backend, %s\n", stage.id.c_str(), setup.size.width,
+    std::printf("raylab demo: stage %s%s, %dx%d, %s backend, %s\n", stage.id.c_str(),
+                demo.stage.empty() ? " (the highest finished stage)" : "", setup.size.width,
                 setup.size.height, context->backendName().c_str(), glDescription().c_str());
     std::printf("  frame time: %s\n", timing.summary().c_str());
     std::printf("  image written to %s\n", std::filesystem::absolute(out).lexically_normal().c_str());

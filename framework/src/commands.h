@@ -20,6 +20,7 @@ int cmdRun(const StageOptions& stage, const RunOptions& run);
 int cmdRender(const StageOptions& stage, const std::string& outFile, Backend backend);
 
 struct DemoOptions {
+    std::string stage;  // empty: the highest finished stage
     std::string size = "800x600";
     std::string outDir = "raylab-demo";
     int frames = 15;

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
     DemoOptions demo;
     std::string demoBackend = "auto";
     CLI::App* demoCmd = app.add_subcommand("demo", "run the full solution; without a display render it to an image and time it");
+    demoCmd->add_option("--stage", demo.stage, "show this stage's solution (default: the highest finished stage)");
     demoCmd->add_option("--size", demo.size, "image size WIDTHxHEIGHT")->capture_default_str();
     demoCmd->add_option("--out", demo.outDir, "output folder for the headless images")->capture_default_str();
     demoCmd->add_option("--frames", demo.frames, "frames to time (after 3 warm-up frames)")->capture_default_str();

@@ -17,7 +17,7 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
     labTodo();
 
     for (int i = 0; i < uLightCount; ++i) {
-        if (!lightVisible(point, normal, i)) continue;  // in shadow (lab 03); always visible here
+        if (!lightVisible(point, normal, i)) continue;  // blocked: in shadow (from lab 03 on)
         vec3 toLight = normalize(uLightPositions[i] - point);
 
         // TODO(02.b): the diffuse term of light i,

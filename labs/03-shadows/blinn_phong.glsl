@@ -14,7 +14,7 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
     color += m.ambient;
 
     for (int i = 0; i < uLightCount; ++i) {
-        if (!lightVisible(point, normal, i)) continue;  // in shadow (lab 03); always visible here
+        if (!lightVisible(point, normal, i)) continue;  // blocked: in shadow (from lab 03 on)
         vec3 toLight = normalize(uLightPositions[i] - point);
 
         float lambert = max(dot(normal, toLight), 0.0);

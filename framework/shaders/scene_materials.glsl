@@ -1,21 +1,34 @@
 // The scene's material table, uploaded by the framework from the scene file:
 // one entry per material, each sphere names its entry. (Students need not
 // change this file.)
+const int MAT_PLASTIC = 0;  // Blinn-Phong only
+const int MAT_MIRROR = 1;   // also reflects, with the specular colour as reflectance
+const int MAT_GLASS = 2;    // also reflects and refracts (Fresnel, index of refraction `ior`)
+const int MAT_METAL = 3;    // also reflects, Fresnel from the complex index n + ik
+
 struct Material {
     vec3 ambient;     // seen even where no light arrives
     vec3 diffuse;     // matte reflection, the same in every direction
     vec3 specular;    // shiny highlight colour
     float shininess;  // highlight exponent: larger = smaller, sharper highlight
+    int type;         // MAT_PLASTIC, MAT_MIRROR, MAT_GLASS or MAT_METAL
+    float ior;        // glass: index of refraction
+    vec3 n;           // metal: real part of the index of refraction, per channel
+    vec3 k;           // metal: extinction coefficient, per channel
 };
 
 uniform vec3 uMatAmbient[MAX_MATERIALS];
 uniform vec3 uMatDiffuse[MAX_MATERIALS];
 uniform vec3 uMatSpecular[MAX_MATERIALS];
 uniform float uMatShininess[MAX_MATERIALS];
+uniform int uMatType[MAX_MATERIALS];
+uniform float uMatIor[MAX_MATERIALS];
+uniform vec3 uMatN[MAX_MATERIALS];
+uniform vec3 uMatK[MAX_MATERIALS];
 uniform int uSphereMaterial[MAX_SPHERES];   // material index of each sphere
 
 Material materialOfSphere(int sphere)
 {
     int m = uSphereMaterial[sphere];
-    return Material(uMatAmbient[m], uMatDiffuse[m], uMatSpecular[m], uMatShininess[m]);
+    return Material(uMatAmbient[m], uMatDiffuse[m], uMatSpecular[m], uMatShininess[m], uMatType[m], uMatIor[m], uMatN[m], uMatK[m]);
 }

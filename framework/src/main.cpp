@@ -23,6 +23,7 @@ CLI::Option* addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
         cmd->add_option("--camera", o.camera, "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
         cmd->add_option("--time", o.time, "animation time in seconds")->capture_default_str();
         cmd->add_flag("--no-shadows", o.noShadows, "start with shadows off (stage 03 on; key 1 in the window)");
+        cmd->add_option("--depth", o.maxDepth, "rays per path, 1..8 (stage 04 on; arrow keys in the window)")->capture_default_str();
     }
     return lab;
 }

@@ -98,6 +98,23 @@ Scene loadScene(const std::filesystem::path& file) {
             mat.diffuse = r.color(r.member(m, where, "diffuse"), where + ".diffuse");
             mat.specular = r.color(r.member(m, where, "specular"), where + ".specular");
             mat.shininess = r.positive(r.member(m, where, "shininess"), where + ".shininess");
+            std::string type = m.contains("type") && m["type"].is_string() ? m["type"].get<std::string>() : "plastic";
+            if (m.contains("type") && !m["type"].is_string()) r.fail(where + ".type", "expected plastic, mirror, glass or metal");
+            if (type == "plastic") mat.type = Material::Type::Plastic;
+            else if (type == "mirror") mat.type = Material::Type::Mirror;
+            else if (type == "glass") {
+                mat.type = Material::Type::Glass;
+                mat.ior = r.positive(r.member(m, where, "ior"), where + ".ior");
+                if (mat.ior < 1.0f || mat.ior > 4.0f) r.fail(where + ".ior", "index of refraction must lie in [1, 4]");
+            } else if (type == "metal") {
+                mat.type = Material::Type::Metal;
+                mat.n = r.vec3(r.member(m, where, "n"), where + ".n");
+                mat.k = r.vec3(r.member(m, where, "k"), where + ".k");
+                for (int c = 0; c < 3; ++c)
+                    if (mat.n[c] <= 0.0f || mat.k[c] < 0.0f) r.fail(where, "n must be positive and k not negative");
+            } else {
+                r.fail(where + ".type", "unknown type \"" + type + "\" (plastic, mirror, glass or metal)");
+            }
             scene.materials.push_back(mat);
         }
     }

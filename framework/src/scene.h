@@ -20,7 +20,12 @@ struct Motion {
 // Blinn-Phong material. Scenes name materials in a table; objects refer to
 // them by name.
 struct Material {
+    // How light leaves the surface besides Blinn-Phong (from stage 04 on).
+    enum class Type { Plastic = 0, Mirror = 1, Glass = 2, Metal = 3 };
     std::string name;
+    Type type = Type::Plastic;
+    float ior = 1.5f;          // glass: index of refraction
+    glm::vec3 n{0.0f}, k{0.0f};  // metal: complex index n + ik per RGB channel
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{1.0f};   // also the flat colour of stage 01
     glm::vec3 specular{0.0f};

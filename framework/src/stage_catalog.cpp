@@ -60,9 +60,24 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(shadows);
 
+    StageInfo recursion;
+    recursion.id = "04-recursion";
+    recursion.title = "reflection and refraction (Fresnel, total internal reflection, gold) with an explicit stack instead of recursion";
+    recursion.scene = "stage04.json";
+    recursion.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera, depth 8: glass, mirror and gold"},
+        {"depth-1", std::nullopt, 0.0f, "depth 1: primary rays only, no reflection or refraction", true, 1},
+        {"depth-2", std::nullopt, 0.0f, "depth 2: one bounce; mirrors in mirrors stay dark", true, 2},
+        {"glass-closeup", CameraPose{{0.4f, 1.3f, 4.0f}, 0.0f, -6.0f}, 0.0f,
+         "through the glass sphere: refraction in and out, Fresnel at the rim"},
+        {"inside-glass", CameraPose{{0.0f, 1.0f, 1.6f}, 20.0f, 0.0f}, 0.0f,
+         "camera inside the glass: leaving the glass, index inverted, total internal reflection"},
+        {"gold", CameraPose{{3.6f, 1.6f, 1.6f}, -30.0f, -12.0f}, 0.0f, "the gold sphere: conductor Fresnel per colour channel"},
+    };
+    stages.push_back(recursion);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"04-recursion", "reflection and refraction with an explicit stack instead of recursion"},
         {"05-primitives", "planes, discs, triangles, a glass cube and a torus"},
         {"06-textures", "textured spheres and planes, sky box, sun glow"},
         {"07-normalmaps", "normal mapping on the textured spheres"},

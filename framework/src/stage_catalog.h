@@ -16,6 +16,7 @@ struct CheckView {
     float time = 0.0f;
     std::string why;  // what this view exercises
     bool shadows = true;
+    int maxDepth = 8;
 };
 
 struct StageInfo {

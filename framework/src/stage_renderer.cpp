@@ -58,6 +58,7 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     glUniform1f(p.uniform("uAspect"), float(target_->width()) / float(target_->height()));
     glUniform1f(p.uniform("uTime"), timeSeconds);
     glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
+    glUniform1i(p.uniform("uMaxDepth"), settings.maxDepth);
     glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
 
     // Spheres: position (moving ones at this time), flat colour, material index.
@@ -77,18 +78,29 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     setVec3Array(p, "uSphereColors", colors);
 
     // The material table.
-    std::vector<glm::vec3> ambient, diffuse, specular;
-    std::vector<GLfloat> shininess;
+    std::vector<glm::vec3> ambient, diffuse, specular, metalN, metalK;
+    std::vector<GLfloat> shininess, ior;
+    std::vector<GLint> type;
     for (const Material& m : scene_.materials) {
         ambient.push_back(m.ambient);
         diffuse.push_back(m.diffuse);
         specular.push_back(m.specular);
         shininess.push_back(m.shininess);
+        type.push_back(GLint(m.type));
+        ior.push_back(m.ior);
+        metalN.push_back(m.n);
+        metalK.push_back(m.k);
     }
     setVec3Array(p, "uMatAmbient", ambient);
     setVec3Array(p, "uMatDiffuse", diffuse);
     setVec3Array(p, "uMatSpecular", specular);
-    if (!shininess.empty()) glUniform1fv(p.uniform("uMatShininess[0]"), GLsizei(shininess.size()), shininess.data());
+    setVec3Array(p, "uMatN", metalN);
+    setVec3Array(p, "uMatK", metalK);
+    if (!type.empty()) {
+        glUniform1fv(p.uniform("uMatShininess[0]"), GLsizei(shininess.size()), shininess.data());
+        glUniform1fv(p.uniform("uMatIor[0]"), GLsizei(ior.size()), ior.data());
+        glUniform1iv(p.uniform("uMatType[0]"), GLsizei(type.size()), type.data());
+    }
 
     // Point lights.
     std::vector<glm::vec3> lightPositions, lightColors;

@@ -18,7 +18,9 @@ namespace raylab {
 
 // Run-time switches a frame is drawn with (window keys, command-line flags).
 struct RenderSettings {
-    bool shadows = true;  // key 1, --no-shadows
+    static constexpr int kMaxDepth = 8;
+    bool shadows = true;       // key 1, --no-shadows
+    int maxDepth = kMaxDepth;  // rays per path, 1..8: arrow keys, --depth (from stage 04 on)
 };
 
 class StageRenderer {

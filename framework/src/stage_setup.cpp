@@ -21,6 +21,8 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     s.camera = cameraFor(o.camera.empty() ? std::nullopt : std::optional<CameraPose>(parseCamera(o.camera)), s.scene);
     s.time = o.time;
     s.settings.shadows = !o.noShadows;
+    if (o.maxDepth < 1 || o.maxDepth > RenderSettings::kMaxDepth) throw Error("--depth must be between 1 and 8");
+    s.settings.maxDepth = o.maxDepth;
     return s;
 }
 

@@ -25,6 +25,7 @@ struct StageOptions {
     std::string camera;     // empty: the scene's camera
     float time = 0.0f;
     bool noShadows = false;
+    int maxDepth = RenderSettings::kMaxDepth;
 };
 
 struct StageSetup {

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "paths.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 
@@ -99,6 +100,13 @@ void ViewerApp::onEvent(const SDL_Event& event) {
             setup_.settings.shadows = !setup_.settings.shadows;
             std::printf("shadows %s\n", setup_.settings.shadows ? "on" : "off");
             break;
+        case SDLK_RIGHT:
+        case SDLK_LEFT: {
+            int& depth = setup_.settings.maxDepth;
+            depth = std::clamp(depth + (event.key.keysym.sym == SDLK_RIGHT ? 1 : -1), 1, RenderSettings::kMaxDepth);
+            std::printf("max depth %d\n", depth);
+            break;
+        }
         case SDLK_v:
             setVsync(!vsync());
             std::printf("vsync %s\n", vsync() ? "on" : "off");

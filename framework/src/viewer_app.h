@@ -1,7 +1,8 @@
 #pragma once
 // The interactive window for one stage: FPS-style camera, shader hot reload,
 // screenshots. Keys: W/A/S/D move, Left Shift slows down, mouse look while the
-// left button is held, 1 shadows, V vsync, P pause time, F12 screenshot, Esc quit.
+// left button is held, 1 shadows, Right/Left max depth, V vsync, P pause time,
+// F12 screenshot, Esc quit.
 #include "application.h"
 #include "file_watcher.h"
 #include "stage_renderer.h"

@@ -49,6 +49,8 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
         {"size-zero", "--stage 01 --solution --size 0x10", "each side must be between 1 and"},
         {"camera-format", "--stage 01 --solution --camera 1,2,3", "--camera '1,2,3': expected x,y,z,yaw,pitch"},
         {"camera-nan", "--stage 01 --solution --camera nan,0,0,0,0", "--camera"},
+        {"depth-zero", "--stage 04 --solution --depth 0", "--depth must be between 1 and 8"},
+        {"depth-nine", "--stage 04 --solution --depth 9", "--depth must be between 1 and 8"},
         {"backend", "--stage 01 --solution --backend vulkan", "unknown backend 'vulkan'"},
         {"both-lab-and-solution", "--stage 01 --solution --lab", "exclude each other"},
     };

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace raylab;
 using raylab::test::ScratchDir;
 using raylab::test::writeFile;
@@ -107,6 +109,39 @@ TEST(Scene, UnknownOrMalformedMaterialsAreErrors) {
     EXPECT_NE(errorFor(with("\"shininess\": 30", "\"shininess\": 0")).find("materials.m.shininess: expected a positive number"), std::string::npos);
     EXPECT_NE(errorFor(with("\"specular\": [0, 0, 0], ", "")).find("materials.m: missing \"specular\""), std::string::npos);
     EXPECT_NE(errorFor(with("\"spheres\"", "\"lights\": [{\"position\": [0, 0]}], \"spheres\"")).find("lights[0].position: expected [x, y, z]"), std::string::npos);
+}
+
+TEST(Scene, MaterialTypesForReflectionAndRefraction) {
+    ScratchDir dir;
+    writeFile(dir / "scene.json", R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+      "materials": {
+        "glass": {"type": "glass", "ior": 1.5, "ambient": [0, 0, 0], "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 100},
+        "gold": {"type": "metal", "n": [0.143, 0.375, 1.442], "k": [3.983, 2.386, 1.603], "ambient": [0, 0, 0], "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 50},
+        "plain": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 1}
+      },
+      "spheres": []})");
+    Scene s = loadScene(dir / "scene.json");
+    ASSERT_EQ(s.materials.size(), 3u);
+    auto byName = [&](const std::string& n) { return *std::find_if(s.materials.begin(), s.materials.end(), [&](const Material& m) { return m.name == n; }); };
+    EXPECT_EQ(byName("glass").type, Material::Type::Glass);
+    EXPECT_FLOAT_EQ(byName("glass").ior, 1.5f);
+    EXPECT_EQ(byName("gold").type, Material::Type::Metal);
+    EXPECT_FLOAT_EQ(byName("gold").k.r, 3.983f);
+    EXPECT_EQ(byName("plain").type, Material::Type::Plastic) << "plastic is the default";
+
+    const std::string bad = R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+      "materials": {"m": {"type": "TYPE", "ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 30 EXTRA}},
+      "spheres": []})";
+    auto with = [&](const std::string& type, const std::string& extra) {
+        std::string t = bad;
+        t.replace(t.find("TYPE"), 4, type);
+        t.replace(t.find("EXTRA"), 5, extra);
+        return t;
+    };
+    EXPECT_NE(errorFor(with("wood", "")).find("materials.m.type: unknown type \"wood\""), std::string::npos);
+    EXPECT_NE(errorFor(with("glass", "")).find("materials.m: missing \"ior\""), std::string::npos);
+    EXPECT_NE(errorFor(with("glass", ", \"ior\": 0.5")).find("index of refraction must lie in [1, 4]"), std::string::npos);
+    EXPECT_NE(errorFor(with("metal", ", \"n\": [1, 1, 1]")).find("materials.m: missing \"k\""), std::string::npos);
 }
 
 TEST(Scene, MissingFileIsAnError) {

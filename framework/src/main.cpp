@@ -28,8 +28,6 @@ CLI::Option* addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
     return lab;
 }
 
-Backend backendFrom(const std::string& name) { return parseBackend(name); }
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -96,13 +94,13 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("stages")) return cmdStages();
         if (runCmd->parsed()) return cmdRun(runStage, run);
-        if (renderCmd->parsed()) return cmdRender(renderStage, renderOut, backendFrom(renderBackend));
+        if (renderCmd->parsed()) return cmdRender(renderStage, renderOut, parseBackend(renderBackend));
         if (demoCmd->parsed()) {
-            demo.backend = backendFrom(demoBackend);
+            demo.backend = parseBackend(demoBackend);
             return cmdDemo(demo);
         }
         if (checkCmd->parsed()) {
-            check.backend = backendFrom(checkBackend);
+            check.backend = parseBackend(checkBackend);
             return cmdCheck(checkStage, check);
         }
     } catch (const ShaderError& e) {

@@ -98,8 +98,11 @@ Scene loadScene(const std::filesystem::path& file) {
             mat.diffuse = r.color(r.member(m, where, "diffuse"), where + ".diffuse");
             mat.specular = r.color(r.member(m, where, "specular"), where + ".specular");
             mat.shininess = r.positive(r.member(m, where, "shininess"), where + ".shininess");
-            std::string type = m.contains("type") && m["type"].is_string() ? m["type"].get<std::string>() : "plastic";
-            if (m.contains("type") && !m["type"].is_string()) r.fail(where + ".type", "expected plastic, mirror, glass or metal");
+            std::string type = "plastic";
+            if (m.contains("type")) {
+                if (!m["type"].is_string()) r.fail(where + ".type", "expected plastic, mirror, glass or metal");
+                type = m["type"].get<std::string>();
+            }
             if (type == "plastic") mat.type = Material::Type::Plastic;
             else if (type == "mirror") mat.type = Material::Type::Mirror;
             else if (type == "glass") {

@@ -41,40 +41,23 @@ void StageRenderer::rebuild() {
     files_ = fragment.files;
     files_.insert(files_.end(), vertex.files.begin(), vertex.files.end());
     todos_ = findOpenTodos(fragment);
+    uploadSceneConstants();
 }
 
-void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
-    target_->bind();
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
+void StageRenderer::uploadSceneConstants() {
     const ShaderProgram& p = *program_;
     p.use();
-    const CameraPose& pose = camera.pose();
-    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(pose.position));
-    glUniform3fv(p.uniform("uForward"), 1, glm::value_ptr(camera.forward()));
-    glUniform3fv(p.uniform("uRight"), 1, glm::value_ptr(camera.right()));
-    glUniform3fv(p.uniform("uUp"), 1, glm::value_ptr(camera.up()));
-    glUniform1f(p.uniform("uFocal"), camera.focalLength());
-    glUniform1f(p.uniform("uAspect"), float(target_->width()) / float(target_->height()));
-    glUniform1f(p.uniform("uTime"), timeSeconds);
-    glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
-    glUniform1i(p.uniform("uMaxDepth"), settings.maxDepth);
     glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
 
-    // Spheres: position (moving ones at this time), flat colour, material index.
-    std::vector<glm::vec4> spheres;
+    // Spheres: flat colour and material index (positions are set per frame).
     std::vector<glm::vec3> colors;
     std::vector<GLint> materialOf;
     for (const Sphere& s : scene_.spheres) {
-        spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
         colors.push_back(scene_.materials[std::size_t(s.material)].diffuse);
         materialOf.push_back(s.material);
     }
-    glUniform1i(p.uniform("uSphereCount"), GLint(spheres.size()));
-    if (!spheres.empty()) {
-        glUniform4fv(p.uniform("uSpheres[0]"), GLsizei(spheres.size()), glm::value_ptr(spheres[0]));
-        glUniform1iv(p.uniform("uSphereMaterial[0]"), GLsizei(materialOf.size()), materialOf.data());
-    }
+    glUniform1i(p.uniform("uSphereCount"), GLint(scene_.spheres.size()));
+    if (!materialOf.empty()) glUniform1iv(p.uniform("uSphereMaterial[0]"), GLsizei(materialOf.size()), materialOf.data());
     setVec3Array(p, "uSphereColors", colors);
 
     // The material table.
@@ -111,6 +94,29 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     glUniform1i(p.uniform("uLightCount"), GLint(lightPositions.size()));
     setVec3Array(p, "uLightPositions", lightPositions);
     setVec3Array(p, "uLightColors", lightColors);
+}
+
+void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
+    target_->bind();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const ShaderProgram& p = *program_;
+    p.use();
+    const CameraPose& pose = camera.pose();
+    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(pose.position));
+    glUniform3fv(p.uniform("uForward"), 1, glm::value_ptr(camera.forward()));
+    glUniform3fv(p.uniform("uRight"), 1, glm::value_ptr(camera.right()));
+    glUniform3fv(p.uniform("uUp"), 1, glm::value_ptr(camera.up()));
+    glUniform1f(p.uniform("uFocal"), camera.focalLength());
+    glUniform1f(p.uniform("uAspect"), float(target_->width()) / float(target_->height()));
+    glUniform1f(p.uniform("uTime"), timeSeconds);
+    glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
+    glUniform1i(p.uniform("uMaxDepth"), settings.maxDepth);
+    // Only sphere positions change from frame to frame (moving spheres);
+    // the rest of the scene is uploaded once per program, in uploadSceneConstants().
+    std::vector<glm::vec4> spheres;
+    for (const Sphere& s : scene_.spheres) spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
+    if (!spheres.empty()) glUniform4fv(p.uniform("uSpheres[0]"), GLsizei(spheres.size()), glm::value_ptr(spheres[0]));
     canvas_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

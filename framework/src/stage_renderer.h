@@ -45,6 +45,10 @@ public:
     const std::vector<OpenTodo>& openTodos() const { return todos_; }
 
 private:
+    // The static part of the scene (background, materials, lights): uniforms
+    // belong to a program, so this runs after every (re)build, not every frame.
+    void uploadSceneConstants();
+
     const StageInfo& stage_;
     StageSources sources_;
     Scene scene_;

@@ -34,6 +34,12 @@ TEST(HotReload, BrokenEditKeepsTheLastGoodProgramAndFixedEditTakesEffect) {
     renderer.render(camera, 0.0f);
     const Image good = renderer.read();
 
+    // A rebuild from unchanged files must give the same frame: the scene's
+    // constants (materials, lights, colours) belong to the new program too.
+    renderer.rebuild();
+    renderer.render(camera, 0.0f);
+    EXPECT_EQ(renderer.read().rgba, good.rgba) << "a rebuilt program must get the scene's constants";
+
     FileWatcher watcher;
     watcher.watch(renderer.sourceFiles());
     EXPECT_FALSE(watcher.changed());

@@ -7,8 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 
 using namespace raylab::test;
 
@@ -46,7 +44,7 @@ TEST(Stage01, GpuPrimaryRaysMatchTheCameraMaths) {
         for (int x = 0; x < w; ++x)
             if (img.pixel(x, y)[0] > 128) {
                 ++lit;
-                EXPECT_TRUE(std::abs(x - px) <= 0 && std::abs(y - py) <= 0) << "white pixel at (" << x << ", " << y << "), expected only (" << px << ", " << py << ")";
+                EXPECT_TRUE(x == px && y == py) << "white pixel at (" << x << ", " << y << "), expected only (" << px << ", " << py << ")";
             }
     EXPECT_EQ(lit, 1);
 }

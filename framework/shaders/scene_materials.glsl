@@ -1,5 +1,5 @@
 // The scene's material table, uploaded by the framework from the scene file:
-// one entry per material, each sphere names its entry. (Students need not
+// one entry per material, each object names its entry. (Students need not
 // change this file.)
 const int MAT_PLASTIC = 0;  // Blinn-Phong only
 const int MAT_MIRROR = 1;   // also reflects, with the specular colour as reflectance
@@ -15,6 +15,8 @@ struct Material {
     float ior;        // glass: index of refraction
     vec3 n;           // metal: real part of the index of refraction, per channel
     vec3 k;           // metal: extinction coefficient, per channel
+    int texture;      // layer of uTextures multiplying ambient and diffuse, -1: none (stage 06)
+    int normalMap;    // layer of uTextures, -1: none (stage 07)
 };
 
 uniform vec3 uMatAmbient[MAX_MATERIALS];
@@ -25,10 +27,17 @@ uniform int uMatType[MAX_MATERIALS];
 uniform float uMatIor[MAX_MATERIALS];
 uniform vec3 uMatN[MAX_MATERIALS];
 uniform vec3 uMatK[MAX_MATERIALS];
+uniform int uMatTexture[MAX_MATERIALS];
+uniform int uMatNormalMap[MAX_MATERIALS];
 uniform int uSphereMaterial[MAX_SPHERES];   // material index of each sphere
+
+Material materialAt(int m)
+{
+    return Material(uMatAmbient[m], uMatDiffuse[m], uMatSpecular[m], uMatShininess[m], uMatType[m], uMatIor[m], uMatN[m],
+                    uMatK[m], uMatTexture[m], uMatNormalMap[m]);
+}
 
 Material materialOfSphere(int sphere)
 {
-    int m = uSphereMaterial[sphere];
-    return Material(uMatAmbient[m], uMatDiffuse[m], uMatSpecular[m], uMatShininess[m], uMatType[m], uMatIor[m], uMatN[m], uMatK[m]);
+    return materialAt(uSphereMaterial[sphere]);
 }

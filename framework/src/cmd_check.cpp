@@ -36,7 +36,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
         Camera camera = cameraFor(view.pose, setup.scene);
-        const RenderSettings settings{view.shadows, view.maxDepth};
+        const RenderSettings settings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
         student.render(camera, view.time, settings);
         Image mine = student.read();
         Image expected;

@@ -2,15 +2,12 @@
 
 #include "error.h"
 #include "paths.h"
-
-#include <nlohmann/json.hpp>
+#include "scene_reader.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace raylab {
-
-using nlohmann::json;
 
 glm::vec3 Motion::offsetAt(float t) const {
     if (amplitude == 0.0f) return glm::vec3(0.0f);
@@ -19,48 +16,90 @@ glm::vec3 Motion::offsetAt(float t) const {
 
 namespace {
 
-// Reads values with messages that name the file and the JSON path.
-struct Reader {
-    const std::string& file;
-
-    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw Error(file + ": " + where + ": " + what);
-    }
-    const json& member(const json& obj, const std::string& where, const char* key) const {
-        if (!obj.is_object()) fail(where, "expected an object");
-        auto it = obj.find(key);
-        if (it == obj.end()) fail(where, std::string("missing \"") + key + "\"");
-        return *it;
-    }
-    float number(const json& v, const std::string& where) const {
-        if (!v.is_number()) fail(where, "expected a number");
-        double d = v.get<double>();
-        if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(where, "number out of range");
-        return float(d);
-    }
-    float positive(const json& v, const std::string& where) const {
-        float f = number(v, where);
-        if (!(f > 0.0f)) fail(where, "expected a positive number");
-        return f;
-    }
-    glm::vec3 vec3(const json& v, const std::string& where) const {
-        if (!v.is_array() || v.size() != 3) fail(where, "expected [x, y, z]");
-        return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
-    }
-    glm::vec3 color(const json& v, const std::string& where) const {
-        glm::vec3 c = vec3(v, where);
-        for (int i = 0; i < 3; ++i)
-            if (c[i] < 0.0f || c[i] > 1.0f) fail(where, "colour components must lie in [0, 1]");
-        return c;
-    }
-};
-
 std::string lineColumn(const std::string& text, std::size_t byte) {
     int line = 1, column = 1;
     for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
         if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
     }
     return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// The texture layer of an image file; files used twice share a layer.
+int textureLayer(Scene& scene, const std::filesystem::path& file) {
+    auto it = std::find(scene.textures.begin(), scene.textures.end(), file);
+    if (it != scene.textures.end()) return int(it - scene.textures.begin());
+    scene.textures.push_back(file);
+    return int(scene.textures.size()) - 1;
+}
+
+Material::Type materialType(const SceneReader& r, const json& m, const std::string& where) {
+    std::string type = m.contains("type") ? r.string(m["type"], where + ".type") : "plastic";
+    if (type == "plastic") return Material::Type::Plastic;
+    if (type == "mirror") return Material::Type::Mirror;
+    if (type == "glass") return Material::Type::Glass;
+    if (type == "metal") return Material::Type::Metal;
+    r.fail(where + ".type", "unknown type \"" + type + "\" (plastic, mirror, glass or metal)");
+}
+
+void readMaterials(const SceneReader& r, const json& doc, Scene& scene) {
+    if (!doc.contains("materials")) return;
+    const json& materials = doc["materials"];
+    if (!materials.is_object()) r.fail("materials", "expected an object of named materials");
+    for (const auto& [name, m] : materials.items()) {
+        std::string where = "materials." + name;
+        Material mat;
+        mat.name = name;
+        mat.ambient = r.color(r.member(m, where, "ambient"), where + ".ambient");
+        mat.diffuse = r.color(r.member(m, where, "diffuse"), where + ".diffuse");
+        mat.specular = r.color(r.member(m, where, "specular"), where + ".specular");
+        mat.shininess = r.positive(r.member(m, where, "shininess"), where + ".shininess");
+        mat.type = materialType(r, m, where);
+        if (mat.type == Material::Type::Glass) {
+            mat.ior = r.positive(r.member(m, where, "ior"), where + ".ior");
+            if (mat.ior < 1.0f || mat.ior > 4.0f) r.fail(where + ".ior", "index of refraction must lie in [1, 4]");
+        } else if (mat.type == Material::Type::Metal) {
+            mat.n = r.vec3(r.member(m, where, "n"), where + ".n");
+            mat.k = r.vec3(r.member(m, where, "k"), where + ".k");
+            for (int c = 0; c < 3; ++c)
+                if (mat.n[c] <= 0.0f || mat.k[c] < 0.0f) r.fail(where, "n must be positive and k not negative");
+        }
+        if (m.contains("texture")) mat.texture = textureLayer(scene, r.existingFile(m["texture"], where + ".texture"));
+        if (m.contains("normal_map"))
+            mat.normalMap = textureLayer(scene, r.existingFile(m["normal_map"], where + ".normal_map"));
+        scene.materials.push_back(mat);
+    }
+}
+
+void readLights(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& lights = r.optionalList(doc, "lights");
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        std::string where = "lights[" + std::to_string(i) + "]";
+        PointLight light;
+        light.position = r.vec3(r.member(lights[i], where, "position"), where + ".position");
+        light.color = r.color(r.member(lights[i], where, "color"), where + ".color");
+        scene.lights.push_back(light);
+    }
+}
+
+// "sky_box": six image files, in the order +x, -x, +y, -y, +z, -z.
+void readSkyBox(const SceneReader& r, const json& doc, Scene& scene) {
+    if (!doc.contains("sky_box")) return;
+    const json& faces = doc["sky_box"];
+    if (!faces.is_array() || faces.size() != 6) r.fail("sky_box", "expected six image files: +x, -x, +y, -y, +z, -z");
+    std::array<std::filesystem::path, 6> files;
+    for (std::size_t i = 0; i < 6; ++i) files[i] = r.existingFile(faces[i], "sky_box[" + std::to_string(i) + "]");
+    scene.skyBox = files;
+}
+
+void readGlow(const SceneReader& r, const json& doc, Scene& scene) {
+    if (!doc.contains("glow")) return;
+    const json& g = doc["glow"];
+    const json& sphere = r.member(g, "glow", "sphere");
+    if (!sphere.is_number_integer() || sphere.get<long long>() < 0 || sphere.get<long long>() >= (long long)scene.spheres.size())
+        r.fail("glow.sphere", "expected the index of a sphere (0.." + std::to_string(scene.spheres.size()) + ")");
+    scene.glow.sphere = sphere.get<int>();
+    if (g.contains("color")) scene.glow.color = r.color(g["color"], "glow.color");
+    if (g.contains("size")) scene.glow.size = r.positive(g["size"], "glow.size");
 }
 
 } // namespace
@@ -77,7 +116,8 @@ Scene loadScene(const std::filesystem::path& file) {
     } catch (const json::parse_error& e) {
         throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": JSON syntax error");
     }
-    Reader r{scene.file};
+    SceneReader r{scene.file, file.parent_path()};
+    if (!doc.is_object()) r.fail("scene", "expected an object");
     scene.background = r.color(r.member(doc, "scene", "background"), "background");
     const json& cam = r.member(doc, "scene", "camera");
     scene.camera.position = r.vec3(r.member(cam, "camera", "position"), "camera.position");
@@ -87,81 +127,11 @@ Scene loadScene(const std::filesystem::path& file) {
         scene.fovYDeg = r.positive(cam["fov_y"], "camera.fov_y");
         if (scene.fovYDeg >= 170.0f) r.fail("camera.fov_y", "must be below 170 degrees");
     }
-    if (doc.contains("materials")) {
-        const json& materials = doc["materials"];
-        if (!materials.is_object()) r.fail("materials", "expected an object of named materials");
-        for (const auto& [name, m] : materials.items()) {
-            std::string where = "materials." + name;
-            Material mat;
-            mat.name = name;
-            mat.ambient = r.color(r.member(m, where, "ambient"), where + ".ambient");
-            mat.diffuse = r.color(r.member(m, where, "diffuse"), where + ".diffuse");
-            mat.specular = r.color(r.member(m, where, "specular"), where + ".specular");
-            mat.shininess = r.positive(r.member(m, where, "shininess"), where + ".shininess");
-            std::string type = "plastic";
-            if (m.contains("type")) {
-                if (!m["type"].is_string()) r.fail(where + ".type", "expected plastic, mirror, glass or metal");
-                type = m["type"].get<std::string>();
-            }
-            if (type == "plastic") mat.type = Material::Type::Plastic;
-            else if (type == "mirror") mat.type = Material::Type::Mirror;
-            else if (type == "glass") {
-                mat.type = Material::Type::Glass;
-                mat.ior = r.positive(r.member(m, where, "ior"), where + ".ior");
-                if (mat.ior < 1.0f || mat.ior > 4.0f) r.fail(where + ".ior", "index of refraction must lie in [1, 4]");
-            } else if (type == "metal") {
-                mat.type = Material::Type::Metal;
-                mat.n = r.vec3(r.member(m, where, "n"), where + ".n");
-                mat.k = r.vec3(r.member(m, where, "k"), where + ".k");
-                for (int c = 0; c < 3; ++c)
-                    if (mat.n[c] <= 0.0f || mat.k[c] < 0.0f) r.fail(where, "n must be positive and k not negative");
-            } else {
-                r.fail(where + ".type", "unknown type \"" + type + "\" (plastic, mirror, glass or metal)");
-            }
-            scene.materials.push_back(mat);
-        }
-    }
-    if (doc.contains("lights")) {
-        const json& lights = doc["lights"];
-        if (!lights.is_array()) r.fail("lights", "expected a list");
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            std::string where = "lights[" + std::to_string(i) + "]";
-            PointLight light;
-            light.position = r.vec3(r.member(lights[i], where, "position"), where + ".position");
-            light.color = r.color(r.member(lights[i], where, "color"), where + ".color");
-            scene.lights.push_back(light);
-        }
-    }
-    const json& spheres = r.member(doc, "scene", "spheres");
-    if (!spheres.is_array()) r.fail("spheres", "expected a list");
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-        std::string where = "spheres[" + std::to_string(i) + "]";
-        const json& s = spheres[i];
-        Sphere sphere;
-        sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
-        sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
-        if (s.is_object() && s.contains("material")) {
-            if (!s["material"].is_string()) r.fail(where + ".material", "expected the name of a material");
-            std::string name = s["material"].get<std::string>();
-            auto it = std::find_if(scene.materials.begin(), scene.materials.end(), [&](const Material& m) { return m.name == name; });
-            if (it == scene.materials.end()) r.fail(where + ".material", "unknown material \"" + name + "\"");
-            sphere.material = int(it - scene.materials.begin());
-        } else {
-            Material flat;
-            flat.name = where;
-            flat.diffuse = r.color(r.member(s, where, "color"), where + ".color");
-            sphere.material = int(scene.materials.size());
-            scene.materials.push_back(flat);
-        }
-        if (s.contains("motion")) {
-            const json& m = s["motion"];
-            std::string mw = where + ".motion";
-            sphere.motion.axis = r.vec3(r.member(m, mw, "axis"), mw + ".axis");
-            sphere.motion.amplitude = r.number(r.member(m, mw, "amplitude"), mw + ".amplitude");
-            sphere.motion.periodSeconds = r.positive(r.member(m, mw, "period"), mw + ".period");
-        }
-        scene.spheres.push_back(sphere);
-    }
+    readMaterials(r, doc, scene);
+    readLights(r, doc, scene);
+    readShapes(r, doc, scene);
+    readSkyBox(r, doc, scene);
+    readGlow(r, doc, scene);
     return scene;
 }
 

@@ -1,9 +1,13 @@
 #pragma once
-// A scene file (JSON, under assets/scenes/): background, camera, objects.
-// Stage 01 uses spheres; later stages add more object kinds.
+// A scene file (JSON, under assets/scenes/): background, camera, materials,
+// lights and objects. Stage 01 uses spheres; stage 05 adds planes, discs,
+// triangles (also as rectangles and boxes) and tori; stage 06 textures and a
+// sky box. The format is documented in assets/scenes/README.md.
 #include "camera.h"
 
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +34,8 @@ struct Material {
     glm::vec3 diffuse{1.0f};   // also the flat colour of stage 01
     glm::vec3 specular{0.0f};
     float shininess = 30.0f;   // the seed's exponent
+    int texture = -1;          // layer in Scene::textures multiplying ambient and diffuse, -1: none
+    int normalMap = -1;        // layer in Scene::textures, -1: none (stage 07)
 };
 
 struct PointLight {
@@ -44,6 +50,49 @@ struct Sphere {
     Motion motion;
 };
 
+// An infinite plane through `point`; textures repeat every `tileSize` units.
+struct Plane {
+    glm::vec3 point{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
+    float tileSize = 1.0f;
+    int material = 0;
+};
+
+struct Disc {
+    glm::vec3 center{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
+    float radius = 1.0f;
+    int material = 0;
+};
+
+// Counter-clockwise seen from the side the normal points to. Rectangles and
+// boxes in the file become triangles.
+struct Triangle {
+    std::array<glm::vec3, 3> vertices{};
+    int material = 0;
+};
+
+// A ring around `axis` through `center`: distance `majorRadius` from the
+// centre to the middle of the tube, tube radius `minorRadius`. With a spin,
+// the torus turns about `spinAxis` once every `spinPeriod` seconds.
+struct Torus {
+    glm::vec3 center{0.0f};
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};  // unit
+    float majorRadius = 1.0f;
+    float minorRadius = 0.25f;
+    glm::vec3 spinAxis{0.0f, 1.0f, 0.0f};
+    float spinPeriod = 0.0f;  // 0: no spin
+    int material = 0;
+    glm::vec3 axisAt(float t) const;
+};
+
+// A halo drawn around a sphere (the "sun"), key G.
+struct Glow {
+    int sphere = -1;  // -1: none
+    glm::vec3 color{1.0f, 0.8f, 0.5f};
+    float size = 4.0f;  // how far the halo reaches, in sphere radii
+};
+
 struct Scene {
     std::string file;  // display path, for messages
     glm::vec3 background{0.0f};
@@ -52,10 +101,19 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<PointLight> lights;
     std::vector<Sphere> spheres;
+    std::vector<Plane> planes;
+    std::vector<Disc> discs;
+    std::vector<Triangle> triangles;
+    std::vector<Torus> tori;
+    std::vector<std::filesystem::path> textures;  // image files, one texture layer each
+    std::optional<std::array<std::filesystem::path, 6>> skyBox;  // faces +x, -x, +y, -y, +z, -z
+    Glow glow;
 };
 
 // Throws Error "FILE: where: what" for a missing file, a JSON syntax error
-// (with line and column), a wrong or missing value, or an unknown material.
+// (with line and column), a wrong or missing value, an unknown material or a
+// texture file that does not exist. Texture paths are relative to the scene
+// file's folder.
 // A sphere gives either "material" (a name from "materials") or "color" (a
 // flat colour: a material of its own with that diffuse colour).
 Scene loadScene(const std::filesystem::path& file);

@@ -3,6 +3,8 @@
 #include "error.h"
 #include "paths.h"
 
+#include <algorithm>
+
 namespace raylab {
 
 namespace {
@@ -76,9 +78,32 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(recursion);
 
+    StageInfo primitives;
+    primitives.id = "05-primitives";
+    primitives.title = "more kinds of object: planes, discs, triangles (Moller-Trumbore), a glass cube and a torus (quartic)";
+    primitives.scene = "stage05.json";
+    primitives.maxPlanes = 4;
+    primitives.maxDiscs = 4;
+    primitives.maxTriangles = 32;
+    primitives.maxTori = 2;
+    primitives.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: floor, disc, mirror rectangle, glass cube with the torus"},
+        {"floor-level", CameraPose{{-3.0f, 0.25f, 6.0f}, 20.0f, 1.0f}, 0.0f,
+         "eye just above the floor: the plane toward the horizon, rays almost parallel to it"},
+        {"from-below", CameraPose{{1.0f, -1.5f, 6.0f}, 0.0f, 12.0f}, 0.0f,
+         "eye under the floor: the plane from behind, objects hidden above it"},
+        {"disc-closeup", CameraPose{{2.2f, 1.6f, 2.6f}, -20.0f, -5.0f}, 0.0f, "the disc's round edge, against the floor"},
+        {"mirror-back", CameraPose{{-5.0f, 1.8f, -7.0f}, 200.0f, -5.0f}, 0.0f,
+         "the mirror rectangle from behind: both sides of a triangle count"},
+        {"cube-closeup", CameraPose{{1.6f, 1.9f, 3.2f}, -25.0f, -14.0f}, 0.0f,
+         "the glass cube: its triangles' edges and inside faces, refraction through it"},
+        {"torus-closeup", CameraPose{{0.6f, 1.5f, 2.4f}, -10.0f, -10.0f}, 2.0f,
+         "the torus through the glass, turned: the quartic's roots and the torus normal"},
+    };
+    stages.push_back(primitives);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"05-primitives", "planes, discs, triangles, a glass cube and a torus"},
         {"06-textures", "textured spheres and planes, sky box, sun glow"},
         {"07-normalmaps", "normal mapping on the textured spheres"},
         {"08-full", "the full demo: lite and pro scenes"},
@@ -101,8 +126,10 @@ std::string stageList() {
 } // namespace
 
 std::vector<std::string> StageInfo::defines() const {
-    std::vector<std::string> all = {"MAX_SPHERES " + std::to_string(maxSpheres), "MAX_MATERIALS " + std::to_string(maxMaterials),
-                                    "MAX_LIGHTS " + std::to_string(maxLights)};
+    auto size = [](const char* name, int limit) { return std::string(name) + " " + std::to_string(std::max(1, limit)); };
+    std::vector<std::string> all = {size("MAX_SPHERES", maxSpheres), size("MAX_MATERIALS", maxMaterials), size("MAX_LIGHTS", maxLights),
+                                    size("MAX_PLANES", maxPlanes),   size("MAX_DISCS", maxDiscs),         size("MAX_TRIANGLES", maxTriangles),
+                                    size("MAX_TORI", maxTori)};
     all.insert(all.end(), extraDefines.begin(), extraDefines.end());
     return all;
 }

@@ -17,6 +17,9 @@ struct CheckView {
     std::string why;  // what this view exercises
     bool shadows = true;
     int maxDepth = 8;
+    bool glow = true;
+    bool normalMaps = true;
+    int colorMode = 0;
 };
 
 struct StageInfo {
@@ -27,10 +30,17 @@ struct StageInfo {
     int maxSpheres = 16;            // scene limits the shader is compiled for
     int maxMaterials = 16;
     int maxLights = 4;
+    int maxPlanes = 0;              // 0: this stage has no such objects
+    int maxDiscs = 0;
+    int maxTriangles = 0;
+    int maxTori = 0;
+    int maxTextures = 0;            // texture layers (pictures and normal maps)
+    bool skyBox = false;            // draws a sky box
     std::vector<CheckView> checkViews;
 
     std::string number() const { return id.substr(0, 2); }
-    // MAX_SPHERES, MAX_MATERIALS, MAX_LIGHTS and the extra defines.
+    // MAX_SPHERES, MAX_MATERIALS, MAX_LIGHTS, MAX_PLANES, ... (at least 1:
+    // GLSL has no empty arrays) and the extra defines.
     std::vector<std::string> defines() const;
     bool available() const;         // solution/<id>/ exists
 };

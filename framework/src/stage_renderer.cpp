@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
+
 namespace raylab {
 
 namespace {
@@ -18,6 +20,37 @@ void checkSceneFits(const StageInfo& stage, const Scene& scene) {
     checkFits(scene, stage, "spheres", scene.spheres.size(), stage.maxSpheres);
     checkFits(scene, stage, "materials", scene.materials.size(), stage.maxMaterials);
     checkFits(scene, stage, "lights", scene.lights.size(), stage.maxLights);
+    checkFits(scene, stage, "planes", scene.planes.size(), stage.maxPlanes);
+    checkFits(scene, stage, "discs", scene.discs.size(), stage.maxDiscs);
+    checkFits(scene, stage, "triangles", scene.triangles.size(), stage.maxTriangles);
+    checkFits(scene, stage, "tori", scene.tori.size(), stage.maxTori);
+    checkFits(scene, stage, "textures", scene.textures.size(), stage.maxTextures);
+    if (scene.skyBox && !stage.skyBox)
+        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box (stage 06 adds it)");
+}
+
+// Texture units: the scene's pictures, then the sky box.
+constexpr int kTextureUnit = 0;
+constexpr int kSkyUnit = 1;
+
+void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
+    if (!values.empty()) glUniform1iv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+}
+
+void setFloatArray(const ShaderProgram& p, const char* name, const std::vector<GLfloat>& values) {
+    if (!values.empty()) glUniform1fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+}
+
+void setVec4Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec4>& values) {
+    if (!values.empty()) glUniform4fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
+}
+
+// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z.
+glm::mat3 torusToLocal(glm::vec3 axis) {
+    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
+    glm::vec3 y = glm::cross(axis, x);
+    return glm::transpose(glm::mat3(x, y, axis));  // rows x, y, axis
 }
 
 // Uploads an array uniform NAME[0..] of vec3s when the program has it.
@@ -30,6 +63,8 @@ void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<gl
 StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height)
     : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height)) {
     checkSceneFits(stage_, scene_);
+    if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
+    if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
     rebuild();
 }
 
@@ -57,8 +92,9 @@ void StageRenderer::uploadSceneConstants() {
         materialOf.push_back(s.material);
     }
     glUniform1i(p.uniform("uSphereCount"), GLint(scene_.spheres.size()));
-    if (!materialOf.empty()) glUniform1iv(p.uniform("uSphereMaterial[0]"), GLsizei(materialOf.size()), materialOf.data());
+    setIntArray(p, "uSphereMaterial", materialOf);
     setVec3Array(p, "uSphereColors", colors);
+    uploadStaticShapes();
 
     // The material table.
     std::vector<glm::vec3> ambient, diffuse, specular, metalN, metalK;
@@ -79,11 +115,24 @@ void StageRenderer::uploadSceneConstants() {
     setVec3Array(p, "uMatSpecular", specular);
     setVec3Array(p, "uMatN", metalN);
     setVec3Array(p, "uMatK", metalK);
-    if (!type.empty()) {
-        glUniform1fv(p.uniform("uMatShininess[0]"), GLsizei(shininess.size()), shininess.data());
-        glUniform1fv(p.uniform("uMatIor[0]"), GLsizei(ior.size()), ior.data());
-        glUniform1iv(p.uniform("uMatType[0]"), GLsizei(type.size()), type.data());
+    std::vector<GLint> texture, normalMap;
+    for (const Material& m : scene_.materials) {
+        texture.push_back(m.texture);
+        normalMap.push_back(m.normalMap);
     }
+    setFloatArray(p, "uMatShininess", shininess);
+    setFloatArray(p, "uMatIor", ior);
+    setIntArray(p, "uMatType", type);
+    setIntArray(p, "uMatTexture", texture);
+    setIntArray(p, "uMatNormalMap", normalMap);
+
+    // Pictures, sky box and the glowing sphere.
+    glUniform1i(p.uniform("uTextures"), kTextureUnit);
+    glUniform1i(p.uniform("uSky"), kSkyUnit);
+    glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);
+    glUniform1i(p.uniform("uGlowSphere"), scene_.glow.sphere);
+    glUniform3fv(p.uniform("uGlowColor"), 1, glm::value_ptr(scene_.glow.color));
+    glUniform1f(p.uniform("uGlowSize"), scene_.glow.size);
 
     // Point lights.
     std::vector<glm::vec3> lightPositions, lightColors;
@@ -94,6 +143,59 @@ void StageRenderer::uploadSceneConstants() {
     glUniform1i(p.uniform("uLightCount"), GLint(lightPositions.size()));
     setVec3Array(p, "uLightPositions", lightPositions);
     setVec3Array(p, "uLightColors", lightColors);
+}
+
+// Planes, discs and triangles never move: uploaded with the constants.
+void StageRenderer::uploadStaticShapes() {
+    const ShaderProgram& p = *program_;
+    std::vector<glm::vec4> planes;
+    std::vector<GLfloat> tiles;
+    std::vector<GLint> planeMaterial;
+    for (const Plane& pl : scene_.planes) {
+        planes.emplace_back(pl.normal, glm::dot(pl.normal, pl.point));
+        tiles.push_back(pl.tileSize);
+        planeMaterial.push_back(pl.material);
+    }
+    glUniform1i(p.uniform("uPlaneCount"), GLint(planes.size()));
+    setVec4Array(p, "uPlanes", planes);
+    setFloatArray(p, "uPlaneTileSize", tiles);
+    setIntArray(p, "uPlaneMaterial", planeMaterial);
+
+    std::vector<glm::vec4> discs;
+    std::vector<glm::vec3> discNormals;
+    std::vector<GLint> discMaterial;
+    for (const Disc& d : scene_.discs) {
+        discs.emplace_back(d.center, d.radius);
+        discNormals.push_back(d.normal);
+        discMaterial.push_back(d.material);
+    }
+    glUniform1i(p.uniform("uDiscCount"), GLint(discs.size()));
+    setVec4Array(p, "uDiscs", discs);
+    setVec3Array(p, "uDiscNormals", discNormals);
+    setIntArray(p, "uDiscMaterial", discMaterial);
+
+    std::vector<glm::vec3> vertices;
+    std::vector<GLint> triangleMaterial;
+    for (const Triangle& t : scene_.triangles) {
+        vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
+        triangleMaterial.push_back(t.material);
+    }
+    glUniform1i(p.uniform("uTriangleCount"), GLint(triangleMaterial.size()));
+    setVec3Array(p, "uTriangleVertices", vertices);
+    setIntArray(p, "uTriangleMaterial", triangleMaterial);
+
+    std::vector<glm::vec4> tori;
+    std::vector<GLfloat> minor;
+    std::vector<GLint> torusMaterial;
+    for (const Torus& t : scene_.tori) {
+        tori.emplace_back(t.center, t.majorRadius);
+        minor.push_back(t.minorRadius);
+        torusMaterial.push_back(t.material);
+    }
+    glUniform1i(p.uniform("uTorusCount"), GLint(tori.size()));
+    setVec4Array(p, "uTori", tori);
+    setFloatArray(p, "uTorusMinor", minor);
+    setIntArray(p, "uTorusMaterial", torusMaterial);
 }
 
 void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
@@ -112,11 +214,21 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     glUniform1f(p.uniform("uTime"), timeSeconds);
     glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
     glUniform1i(p.uniform("uMaxDepth"), settings.maxDepth);
-    // Only sphere positions change from frame to frame (moving spheres);
+    glUniform1i(p.uniform("uGlow"), settings.glow ? 1 : 0);
+    glUniform1i(p.uniform("uNormalMaps"), settings.normalMaps ? 1 : 0);
+    glUniform1i(p.uniform("uColorMode"), settings.colorMode);
+    if (textures_) textures_->bind(kTextureUnit);
+    if (sky_) sky_->bind(kSkyUnit);
+    // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
     std::vector<glm::vec4> spheres;
     for (const Sphere& s : scene_.spheres) spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
-    if (!spheres.empty()) glUniform4fv(p.uniform("uSpheres[0]"), GLsizei(spheres.size()), glm::value_ptr(spheres[0]));
+    setVec4Array(p, "uSpheres", spheres);
+    // Spinning tori turn their axis.
+    std::vector<glm::mat3> toLocal;
+    for (const Torus& t : scene_.tori) toLocal.push_back(torusToLocal(t.axisAt(timeSeconds)));
+    if (!toLocal.empty())
+        glUniformMatrix3fv(p.uniform("uTorusToLocal[0]"), GLsizei(toLocal.size()), GL_FALSE, glm::value_ptr(toLocal[0]));
     canvas_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

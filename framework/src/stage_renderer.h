@@ -9,6 +9,7 @@
 #include "shader_program.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
+#include "texture.h"
 
 #include <filesystem>
 #include <memory>
@@ -21,7 +22,14 @@ struct RenderSettings {
     static constexpr int kMaxDepth = 8;
     bool shadows = true;       // key 1, --no-shadows
     int maxDepth = kMaxDepth;  // rays per path, 1..8: arrow keys, --depth (from stage 04 on)
+    bool glow = true;          // key G, --no-glow (from stage 06 on)
+    bool normalMaps = true;    // key N, --no-normal-maps (from stage 07 on)
+    int colorMode = 0;         // Up/Down, --color-mode (stage 08): index into kColorModes
 };
+
+// The seed's colour modes: which input channel feeds red, green and blue.
+inline constexpr const char* kColorModes[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
+inline constexpr int kColorModeCount = 5;
 
 class StageRenderer {
 public:
@@ -48,6 +56,7 @@ private:
     // The static part of the scene (background, materials, lights): uniforms
     // belong to a program, so this runs after every (re)build, not every frame.
     void uploadSceneConstants();
+    void uploadStaticShapes();
 
     const StageInfo& stage_;
     StageSources sources_;
@@ -55,6 +64,8 @@ private:
     std::unique_ptr<Framebuffer> target_;
     Canvas canvas_;
     std::unique_ptr<ShaderProgram> program_;
+    std::unique_ptr<TextureArray> textures_;
+    std::unique_ptr<CubeMap> sky_;
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
 };

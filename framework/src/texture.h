@@ -5,6 +5,7 @@
 
 #include <array>
 #include <filesystem>
+#include <vector>
 
 namespace raylab {
 
@@ -19,6 +20,28 @@ public:
     Texture2D& operator=(const Texture2D&) = delete;
 
     GLuint id() const { return id_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    void bind(int unit) const;
+
+private:
+    GLuint id_ = 0;
+    int width_ = 0, height_ = 0;
+};
+
+// Several pictures as the layers of one GL_TEXTURE_2D_ARRAY, so that a
+// shader can pick a material's texture by number (an array of sampler2D
+// could only be indexed by constants in GLSL 3.30). Every picture is
+// resampled to the size of the largest; texture coordinates are 0..1 across
+// a picture whatever its size, so this changes sharpness, not placement.
+// Rows are stored bottom first, as in Texture2D. Throws Error naming the file.
+class TextureArray {
+public:
+    explicit TextureArray(const std::vector<std::filesystem::path>& files);
+    ~TextureArray();
+    TextureArray(const TextureArray&) = delete;
+    TextureArray& operator=(const TextureArray&) = delete;
+
     int width() const { return width_; }
     int height() const { return height_; }
     void bind(int unit) const;

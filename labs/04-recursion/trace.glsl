@@ -37,13 +37,13 @@ vec3 trace(Ray primary)
         bool pathGoesOn = false;
         Hit hit;
         if (!findClosest(current.ray, hit)) {
-            color += current.weight * uBackground;  // escaped to the sky
+            color += current.weight * skyColor(current.ray.dir);  // escaped to the sky
         } else {
-            vec3 point = current.ray.origin + hit.t * current.ray.dir;
-            vec3 outward = normalize(point - uSpheres[hit.id].xyz);
-            bool entering = dot(current.ray.dir, outward) < 0.0;
-            vec3 normal = entering ? outward : -outward;  // faces the incoming ray
-            Material m = materialOfSphere(hit.id);
+            Surface s = surfaceAt(current.ray, hit);
+            vec3 point = s.point;
+            bool entering = dot(current.ray.dir, s.normal) < 0.0;
+            vec3 normal = entering ? s.normal : -s.normal;  // faces the incoming ray
+            Material m = s.material;
             color += current.weight * blinnPhong(point, normal, -current.ray.dir, m);
 
             if (m.type != MAT_PLASTIC && current.depth < uMaxDepth) {

@@ -1,0 +1,43 @@
+// The scene's objects besides spheres (stage 05 on), uploaded by the
+// framework from the scene file. (Students need not change this file.)
+//
+// A Hit's id names the object: its kind times OBJECT_KIND_STRIDE plus its
+// index in that kind's list. Spheres are kind 0, so a sphere's id is simply
+// its index, as in labs 01-04.
+const int KIND_SPHERE = 0;
+const int KIND_PLANE = 1;
+const int KIND_DISC = 2;
+const int KIND_TRIANGLE = 3;
+const int KIND_TORUS = 4;
+const int OBJECT_KIND_STRIDE = 1024;
+
+int objectId(int kind, int index) { return kind * OBJECT_KIND_STRIDE + index; }
+int objectKind(int id) { return id / OBJECT_KIND_STRIDE; }
+int objectIndex(int id) { return id - objectKind(id) * OBJECT_KIND_STRIDE; }
+
+
+// Planes: all points p with dot(normal, p) = offset.
+uniform int uPlaneCount;
+uniform vec4 uPlanes[MAX_PLANES];            // xyz = unit normal, w = offset
+uniform float uPlaneTileSize[MAX_PLANES];    // a texture repeats every this many units
+uniform int uPlaneMaterial[MAX_PLANES];
+
+// Discs: the points of a plane within `radius` of the centre.
+uniform int uDiscCount;
+uniform vec4 uDiscs[MAX_DISCS];              // xyz = centre, w = radius
+uniform vec3 uDiscNormals[MAX_DISCS];        // unit
+uniform int uDiscMaterial[MAX_DISCS];
+
+// Triangles: corners 3i, 3i+1, 3i+2, counter-clockwise seen from the front.
+uniform int uTriangleCount;
+uniform vec3 uTriangleVertices[3 * MAX_TRIANGLES];
+uniform int uTriangleMaterial[MAX_TRIANGLES];
+
+// Tori: a ring of radius `major` (centre to the middle of the tube) with a
+// tube of radius `minor`. uTorusToLocal turns world directions into the
+// torus's own frame, where its axis is +z.
+uniform int uTorusCount;
+uniform vec4 uTori[MAX_TORI];                // xyz = centre, w = major radius
+uniform float uTorusMinor[MAX_TORI];
+uniform mat3 uTorusToLocal[MAX_TORI];
+uniform int uTorusMaterial[MAX_TORI];

@@ -1,0 +1,187 @@
+// The objects of a scene file. Rectangles and boxes are written as such in
+// the file (easier to get right by hand) and become triangles here.
+#include "scene_reader.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+std::string item(const char* list, std::size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; }
+
+// "material": a name from "materials", or "color": a flat colour (a material
+// of its own with that diffuse colour).
+int materialOf(const SceneReader& r, const json& obj, const std::string& where, Scene& scene) {
+    if (obj.is_object() && obj.contains("material")) {
+        if (!obj["material"].is_string()) r.fail(where + ".material", "expected the name of a material");
+        std::string name = obj["material"].get<std::string>();
+        auto it = std::find_if(scene.materials.begin(), scene.materials.end(), [&](const Material& m) { return m.name == name; });
+        if (it == scene.materials.end()) r.fail(where + ".material", "unknown material \"" + name + "\"");
+        return int(it - scene.materials.begin());
+    }
+    Material flat;
+    flat.name = where;
+    flat.diffuse = r.color(r.member(obj, where, "color"), where + ".color");
+    scene.materials.push_back(flat);
+    return int(scene.materials.size()) - 1;
+}
+
+void readSpheres(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& spheres = r.member(doc, "scene", "spheres");
+    if (!spheres.is_array()) r.fail("spheres", "expected a list");
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        std::string where = item("spheres", i);
+        const json& s = spheres[i];
+        Sphere sphere;
+        sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
+        sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
+        sphere.material = materialOf(r, s, where, scene);
+        if (s.contains("motion")) {
+            const json& m = s["motion"];
+            std::string mw = where + ".motion";
+            sphere.motion.axis = r.vec3(r.member(m, mw, "axis"), mw + ".axis");
+            sphere.motion.amplitude = r.number(r.member(m, mw, "amplitude"), mw + ".amplitude");
+            sphere.motion.periodSeconds = r.positive(r.member(m, mw, "period"), mw + ".period");
+        }
+        scene.spheres.push_back(sphere);
+    }
+}
+
+void readPlanes(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& planes = r.optionalList(doc, "planes");
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+        std::string where = item("planes", i);
+        Plane p;
+        p.point = r.vec3(r.member(planes[i], where, "point"), where + ".point");
+        p.normal = r.direction(r.member(planes[i], where, "normal"), where + ".normal");
+        if (planes[i].contains("tile_size")) p.tileSize = r.positive(planes[i]["tile_size"], where + ".tile_size");
+        p.material = materialOf(r, planes[i], where, scene);
+        scene.planes.push_back(p);
+    }
+}
+
+void readDiscs(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& discs = r.optionalList(doc, "discs");
+    for (std::size_t i = 0; i < discs.size(); ++i) {
+        std::string where = item("discs", i);
+        Disc d;
+        d.center = r.vec3(r.member(discs[i], where, "center"), where + ".center");
+        d.normal = r.direction(r.member(discs[i], where, "normal"), where + ".normal");
+        d.radius = r.positive(r.member(discs[i], where, "radius"), where + ".radius");
+        d.material = materialOf(r, discs[i], where, scene);
+        scene.discs.push_back(d);
+    }
+}
+
+void addTriangle(const SceneReader& r, const std::string& where, Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, int material) {
+    if (!(glm::length(glm::cross(b - a, c - a)) > 1e-8f)) r.fail(where, "degenerate: the corners lie on one line");
+    scene.triangles.push_back(Triangle{{a, b, c}, material});
+}
+
+void readTriangles(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& triangles = r.optionalList(doc, "triangles");
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        std::string where = item("triangles", i);
+        const json& v = r.member(triangles[i], where, "vertices");
+        if (!v.is_array() || v.size() != 3) r.fail(where + ".vertices", "expected three [x, y, z] corners");
+        int material = materialOf(r, triangles[i], where, scene);
+        addTriangle(r, where, scene, r.vec3(v[0], where + ".vertices[0]"), r.vec3(v[1], where + ".vertices[1]"),
+                    r.vec3(v[2], where + ".vertices[2]"), material);
+    }
+}
+
+// corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v: its
+// front (normal) is cross(edge_u, edge_v).
+void readRectangles(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& rects = r.optionalList(doc, "rectangles");
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        std::string where = item("rectangles", i);
+        glm::vec3 p = r.vec3(r.member(rects[i], where, "corner"), where + ".corner");
+        glm::vec3 u = r.vec3(r.member(rects[i], where, "edge_u"), where + ".edge_u");
+        glm::vec3 v = r.vec3(r.member(rects[i], where, "edge_v"), where + ".edge_v");
+        int material = materialOf(r, rects[i], where, scene);
+        addTriangle(r, where, scene, p, p + u, p + u + v, material);
+        addTriangle(r, where, scene, p, p + u + v, p + v, material);
+    }
+}
+
+// An axis-aligned box turned by rotation_y degrees about its vertical axis:
+// 12 triangles, every face counter-clockwise seen from outside.
+void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& boxes = r.optionalList(doc, "boxes");
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        std::string where = item("boxes", i);
+        glm::vec3 center = r.vec3(r.member(boxes[i], where, "center"), where + ".center");
+        glm::vec3 size = r.vec3(r.member(boxes[i], where, "size"), where + ".size");
+        for (int c = 0; c < 3; ++c)
+            if (!(size[c] > 0.0f)) r.fail(where + ".size", "every side must be positive");
+        float turn = boxes[i].contains("rotation_y") ? r.number(boxes[i]["rotation_y"], where + ".rotation_y") : 0.0f;
+        int material = materialOf(r, boxes[i], where, scene);
+        glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(turn), glm::vec3(0, 1, 0));
+        auto corner = [&](int x, int y, int z) {
+            glm::vec3 local = (glm::vec3(float(x), float(y), float(z)) - 0.5f) * size;
+            return center + glm::vec3(rotation * glm::vec4(local, 1.0f));
+        };
+        // Each face: the axis it is normal to, and which side.
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int side = 0; side < 2; ++side) {
+                int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                if (side == 0) std::swap(u, v);  // keeps the face counter-clockwise from outside
+                auto at = [&](int du, int dv) {
+                    int c[3];
+                    c[axis] = side;
+                    c[u] = du;
+                    c[v] = dv;
+                    return corner(c[0], c[1], c[2]);
+                };
+                addTriangle(r, where, scene, at(0, 0), at(1, 0), at(1, 1), material);
+                addTriangle(r, where, scene, at(0, 0), at(1, 1), at(0, 1), material);
+            }
+        }
+    }
+}
+
+void readTori(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& tori = r.optionalList(doc, "tori");
+    for (std::size_t i = 0; i < tori.size(); ++i) {
+        std::string where = item("tori", i);
+        const json& t = tori[i];
+        Torus torus;
+        torus.center = r.vec3(r.member(t, where, "center"), where + ".center");
+        torus.axis = r.direction(r.member(t, where, "axis"), where + ".axis");
+        torus.majorRadius = r.positive(r.member(t, where, "major_radius"), where + ".major_radius");
+        torus.minorRadius = r.positive(r.member(t, where, "minor_radius"), where + ".minor_radius");
+        if (torus.minorRadius >= torus.majorRadius) r.fail(where, "minor_radius must be smaller than major_radius");
+        if (t.contains("spin")) {
+            std::string sw = where + ".spin";
+            torus.spinAxis = r.direction(r.member(t["spin"], sw, "axis"), sw + ".axis");
+            torus.spinPeriod = r.positive(r.member(t["spin"], sw, "period"), sw + ".period");
+        }
+        torus.material = materialOf(r, t, where, scene);
+        scene.tori.push_back(torus);
+    }
+}
+
+} // namespace
+
+glm::vec3 Torus::axisAt(float t) const {
+    if (spinPeriod <= 0.0f) return axis;
+    float angle = 6.28318530718f * std::fmod(t / spinPeriod, 1.0f);
+    return glm::normalize(glm::vec3(glm::rotate(glm::mat4(1.0f), angle, spinAxis) * glm::vec4(axis, 0.0f)));
+}
+
+void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
+    readSpheres(r, doc, scene);
+    readPlanes(r, doc, scene);
+    readDiscs(r, doc, scene);
+    readTriangles(r, doc, scene);
+    readRectangles(r, doc, scene);
+    readBoxes(r, doc, scene);
+    readTori(r, doc, scene);
+}
+
+} // namespace raylab

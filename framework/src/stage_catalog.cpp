@@ -102,9 +102,28 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(primitives);
 
+    StageInfo textures = primitives;
+    textures.id = "06-textures";
+    textures.title = "textures: sphere and plane texture coordinates, a cube-map sky box, the glow around the sun";
+    textures.scene = "stage06.json";
+    textures.maxTextures = 8;
+    textures.skyBox = true;
+    textures.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: earth, moon, tiled floor, marble disc, sky box, sun glow"},
+        {"earth-closeup", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f,
+         "close to the earth: longitude and latitude, the picture the right way round"},
+        {"moon-closeup", CameraPose{{1.6f, 2.0f, 3.3f}, -8.0f, -10.0f}, 0.0f, "close to the moon, seen from another side"},
+        {"floor-closeup", CameraPose{{0.5f, 1.0f, 4.0f}, 30.0f, -30.0f}, 0.0f, "the tiled floor: tiles repeat, square, not mirrored"},
+        {"sky-up", CameraPose{{0.0f, 2.0f, 5.0f}, 60.0f, 50.0f}, 0.0f, "looking up: only the sky box"},
+        {"sun-glow", CameraPose{{0.0f, 2.0f, 5.0f}, 27.0f, 12.0f}, 0.0f, "looking at the sun: its texture and the glow around it"},
+        {"sun-behind-moon", CameraPose{{-0.13f, 0.92f, 4.14f}, 29.0f, 13.0f}, 0.0f,
+         "the moon in front of the sun: no glow over objects nearer than the sun"},
+        {"glow-off", CameraPose{{0.0f, 2.0f, 5.0f}, 27.0f, 12.0f}, 0.0f, "key G: the same without the glow", true, 8, false},
+    };
+    stages.push_back(textures);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"06-textures", "textured spheres and planes, sky box, sun glow"},
         {"07-normalmaps", "normal mapping on the textured spheres"},
         {"08-full", "the full demo: lite and pro scenes"},
     };

@@ -122,9 +122,22 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(textures);
 
+    StageInfo normalMaps = textures;
+    normalMaps.id = "07-normalmaps";
+    normalMaps.title = "normal mapping: mountains and craters from a picture of normals, in the sphere's tangent frame";
+    normalMaps.checkViews = {
+        {"front", std::nullopt, 0.0f, "the scene camera: bumpy earth and moon"},
+        {"earth-closeup", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f,
+         "close to the earth: mountains lit from the side, shading the right way round"},
+        {"earth-terminator", CameraPose{{-4.2f, 2.2f, 1.4f}, 65.0f, -10.0f}, 0.0f,
+         "where day turns to night on the earth: bumps are strongest in grazing light"},
+        {"moon-closeup", CameraPose{{1.6f, 2.0f, 3.3f}, -8.0f, -10.0f}, 0.0f, "close to the moon: craters"},
+        {"normal-maps-off", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f, "key N: smooth spheres again", true, 8, true, false},
+    };
+    stages.push_back(normalMaps);
+
     // The later stages of the ray tracing track (see issue "stages 02-08").
     const std::pair<const char*, const char*> later[] = {
-        {"07-normalmaps", "normal mapping on the textured spheres"},
         {"08-full", "the full demo: lite and pro scenes"},
     };
     for (const auto& [id, title] : later) {

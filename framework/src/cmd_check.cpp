@@ -5,6 +5,7 @@
 #include "stage_renderer.h"
 
 #include <cstdio>
+#include <map>
 
 namespace raylab {
 
@@ -22,10 +23,23 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
 
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
-    StageRenderer student(stage, setup.sources, setup.scene, w, h);
-    reportOpenTodos(student.openTodos());
-    std::unique_ptr<StageRenderer> reference;
-    if (against.empty()) reference = std::make_unique<StageRenderer>(stage, solutionSources(stage), setup.scene, w, h);
+    // One pair of renderers (student, reference) per scene the views use.
+    struct Renderers {
+        std::unique_ptr<StageRenderer> student, reference;
+    };
+    std::map<std::string, Renderers> byScene;
+    auto renderersFor = [&](const CheckView& view) -> Renderers& {
+        std::string key = options.scene.empty() ? view.scene : "";  // --scene: every view in that scene
+        auto it = byScene.find(key);
+        if (it != byScene.end()) return it->second;
+        Scene scene = key.empty() ? setup.scene : loadScene(projectRoot() / "assets" / "scenes" / key);
+        Renderers r;
+        r.student = std::make_unique<StageRenderer>(stage, setup.sources, scene, w, h);
+        reportOpenTodos(r.student->openTodos());
+        if (against.empty()) r.reference = std::make_unique<StageRenderer>(stage, solutionSources(stage), scene, w, h);
+        return byScene.emplace(key, std::move(r)).first->second;
+    };
+    renderersFor(stage.checkViews.front());  // a compile error stops here, before any output
 
     const CompareTolerance tolerance;
     std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(), setup.sources.label.c_str(),
@@ -35,7 +49,10 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 tolerance.maxBadShare * 100.0, tolerance.channel);
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
-        Camera camera = cameraFor(view.pose, setup.scene);
+        Renderers& renderers = renderersFor(view);
+        StageRenderer& student = *renderers.student;
+        std::unique_ptr<StageRenderer>& reference = renderers.reference;
+        Camera camera = cameraFor(view.pose, student.scene());
         const RenderSettings settings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
         student.render(camera, view.time, settings);
         Image mine = student.read();

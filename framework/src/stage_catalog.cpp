@@ -136,16 +136,26 @@ std::vector<StageInfo> makeStages() {
     };
     stages.push_back(normalMaps);
 
-    // The later stages of the ray tracing track (see issue "stages 02-08").
-    const std::pair<const char*, const char*> later[] = {
-        {"08-full", "the full demo: lite and pro scenes"},
+    StageInfo full = normalMaps;
+    full.id = "08-full";
+    full.title = "the full demo: lite and pro scenes, every feature, colour modes";
+    full.scene = "lite.json";
+    full.maxSpheres = 128;
+    full.maxMaterials = 32;
+    const CameraPose cubeCloseup{{0.2f, 3.0f, 2.6f}, 0.0f, -35.0f};
+    full.checkViews = {
+        {"lite-front", std::nullopt, 0.0f, "the lite scene: every kind of object, textures, normal maps, glow"},
+        {"lite-moving", std::nullopt, 2.5f, "time 2.5 s: the moon and the blue sphere have moved"},
+        {"lite-depth-2", std::nullopt, 0.0f, "depth 2: one bounce", true, 2},
+        {"lite-shadows-off", std::nullopt, 0.0f, "key 1: shadows off", false},
+        {"lite-brb", std::nullopt, 0.0f, "colour mode BRB (Up/Down)", true, 8, true, true, 1},
+        {"lite-brr", std::nullopt, 0.0f, "colour mode BRR", true, 8, true, true, 2},
+        {"lite-rbb", std::nullopt, 0.0f, "colour mode RBB", true, 8, true, true, 3},
+        {"lite-ggr", std::nullopt, 0.0f, "colour mode GGR", true, 8, true, true, 4},
+        {"pro-front", std::nullopt, 0.0f, "the pro scene: 110 spheres, the glass cube and the torus", true, 8, true, true, 0, "pro.json"},
+        {"pro-cube", cubeCloseup, 1.0f, "the torus inside the glass cube", true, 8, true, true, 0, "pro.json"},
     };
-    for (const auto& [id, title] : later) {
-        StageInfo s;
-        s.id = id;
-        s.title = title;
-        stages.push_back(s);
-    }
+    stages.push_back(full);
     return stages;
 }
 

@@ -20,6 +20,7 @@ struct CheckView {
     bool glow = true;
     bool normalMaps = true;
     int colorMode = 0;
+    std::string scene;  // empty: the stage's scene; else a file under assets/scenes/
 };
 
 struct StageInfo {

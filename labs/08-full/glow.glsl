@@ -1,0 +1,25 @@
+// A halo around the sun (key G): light scattered in the air - or in the eye -
+// makes a bright source look bigger than it is. Faked here for primary rays:
+// the closer a ray passes to the sun's centre, the more of the glow colour
+// it gets, unless something in front of the sun blocks the view.
+//
+//   c, r:  the sun sphere's centre and radius (uSpheres[uGlowSphere])
+//   tc = dot(c - o, d)          where along the ray it passes closest to c
+//   dist = |o + tc d - c|        how close it gets
+//   x = max(dist - r, 0) / (uGlowSize * r)     0 at the sun's rim, 1 at the halo's edge
+//   glow = uGlowColor * (1 - x)^3 for x < 1, else nothing
+vec3 sunGlow(Ray ray)
+{
+    if (uGlowSphere < 0) return vec3(0.0);
+    vec3 c = uSpheres[uGlowSphere].xyz;
+    float r = uSpheres[uGlowSphere].w;
+    float tc = dot(c - ray.origin, ray.dir);
+    if (tc < 0.0) return vec3(0.0);
+    Hit blocker;
+    if (findClosest(ray, blocker) && blocker.id != objectId(KIND_SPHERE, uGlowSphere) && blocker.t < tc) return vec3(0.0);
+    float dist = length(ray.origin + tc * ray.dir - c);
+    float x = max(dist - r, 0.0) / (uGlowSize * r);
+    if (x >= 1.0) return vec3(0.0);
+    float fade = 1.0 - x;
+    return uGlowColor * fade * fade * fade;
+}

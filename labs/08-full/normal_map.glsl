@@ -1,0 +1,33 @@
+// Normal mapping: small bumps (mountains, craters) without more geometry.
+// The sphere stays smooth; only the normal used for shading is tilted, as
+// if the surface had bumps, so light and shade fall as on a bumpy surface.
+// Key N turns it off.
+//
+// A normal map stores, per texel, a unit normal in the surface's own
+// "tangent frame": x along T (growing u, east), y along B (growing v,
+// north), z along the smooth normal N. A flat spot is (0, 0, 1). Colours
+// hold 0..1, so each component c is stored as c * 0.5 + 0.5.
+//
+//          N (z)
+//          |   tilted normal
+//          |  /
+//          | /
+//          +-------- T (x)
+//         /
+//        B (y)
+//
+// To use it: read the texel, undo the encoding (* 2 - 1), and rotate it
+// from the tangent frame into the world: n = T * x + B * y + N * z.
+uniform int uNormalMaps;
+
+void applyNormalMap(inout Surface s)
+{
+    if (uNormalMaps == 0 || s.material.normalMap < 0) return;
+    vec3 N = s.normal;
+
+    vec3 T = normalize(s.tangent - dot(s.tangent, N) * N);
+    vec3 B = cross(N, T);
+
+    vec3 m = textureLayer(s.material.normalMap, s.uv).xyz * 2.0 - 1.0;
+    s.normal = normalize(T * m.x + B * m.y + N * m.z);
+}

@@ -1,0 +1,39 @@
+// raylab-texgen: writes the procedural textures the ray tracer's later stages
+// use (planets, sky box, floor patterns). Nothing is downloaded: every pixel
+// comes from the generators in this folder, deterministically, so the
+// committed files in assets/textures/ can be checked by regenerating them.
+//
+//   raylab-texgen OUTDIR     e.g. build/raylab-texgen assets/textures
+#include "error.h"
+#include "texture_set.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <system_error>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+
+int main(int argc, char** argv) {
+    if (argc != 2 || std::string(argv[1]).empty() || argv[1][0] == '-') {
+        std::fprintf(stderr, "usage: raylab-texgen OUTDIR  (writes the textures of assets/textures/ into OUTDIR)\n");
+        return 2;
+    }
+    const fs::path outDir = argv[1];
+    try {
+        // Checked before the (slower) generation, so a bad OUTDIR fails fast.
+        std::error_code ec;
+        fs::create_directories(outDir, ec);
+        if (ec || !fs::is_directory(outDir)) throw Error("cannot write to " + outDir.string() + ": " + (ec ? ec.message() : "not a folder"));
+        for (const texgen::NamedImage& t : texgen::generateAllTextures()) {
+            const fs::path file = outDir / t.fileName;
+            writePngAtomic(t.image, file);
+            std::printf("texgen: wrote %s (%dx%d)\n", file.c_str(), t.image.width, t.image.height);
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "raylab-texgen: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

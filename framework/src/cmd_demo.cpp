@@ -1,5 +1,9 @@
+// `raylab demo`: the full solution. With a display, the interactive window;
+// without one (or with --headless), a short fly-through rendered to PNG files
+// and timed.
 #include "commands.h"
 #include "error.h"
+#include "fly_through.h"
 #include "frame_timer.h"
 #include "gl_loader.h"
 #include "paths.h"
@@ -7,8 +11,45 @@
 #include "viewer_app.h"
 
 #include <cstdio>
+#include <ctime>
 
 namespace raylab {
+
+namespace {
+
+// "lite" and "pro" name the demo scenes; anything else is a file.
+std::string sceneFile(const std::string& scene) {
+    if (scene.empty()) return "";
+    if (scene == "lite" || scene == "pro") return (projectRoot() / "assets" / "scenes" / (scene + ".json")).string();
+    return scene;
+}
+
+// A folder that did not exist: raylab-demo-SCENE-YYYYmmdd-HHMMSS[-N].
+std::filesystem::path newOutputFolder(const std::string& sceneName) {
+    char stamp[32];
+    std::time_t now = std::time(nullptr);
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+    std::string base = "raylab-demo-" + sceneName + "-" + stamp;
+    std::filesystem::path dir = base;
+    for (int n = 2; std::filesystem::exists(dir); ++n) dir = base + "-" + std::to_string(n);
+    return dir;
+}
+
+std::filesystem::path prepareOutputFolder(const DemoOptions& demo, const std::string& sceneName) {
+    std::filesystem::path dir = demo.outDir.empty() ? newOutputFolder(sceneName) : std::filesystem::path(demo.outDir);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) throw Error("--out '" + dir.string() + "': cannot create the folder");
+    return dir;
+}
+
+std::string frameName(int i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%03d.png", i);
+    return name;
+}
+
+} // namespace
 
 int cmdDemo(const DemoOptions& demo) {
     const StageInfo& stage = demo.stage.empty() ? latestAvailableStage() : findStage(demo.stage);
@@ -16,30 +57,45 @@ int cmdDemo(const DemoOptions& demo) {
     options.stage = stage.id;
     options.solution = true;
     options.size = demo.size;
+    options.scene = sceneFile(demo.scene);
+    options.noShadows = demo.noShadows;
+    options.maxDepth = demo.maxDepth;
     StageSetup setup = resolveStageOptions(options);
-    if (demo.frames < 1 || demo.frames > 10000) throw Error("--frames must be between 1 and 10000");
+    if (demo.frames < 1 || demo.frames > 1000) throw Error("--frames must be between 1 and 1000");
+    const std::string sceneName = std::filesystem::path(setup.scene.file).stem().string();
 
     if (displayAvailable() && !demo.headless) {
-        std::printf("raylab: demo of stage %s in a window (Esc quits; --headless renders to a file instead)\n", stage.id.c_str());
+        std::printf("raylab: demo of stage %s, scene %s, in a window (Esc quits; --headless renders to files instead)\n",
+                    stage.id.c_str(), setup.scene.file.c_str());
         ViewerApp app(std::move(setup), {}, true);
         return app.run();
     }
 
-    std::filesystem::path outDir = demo.outDir;
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec || !std::filesystem::is_directory(outDir)) throw Error("--out '" + demo.outDir + "': cannot create the folder");
-
+    // Everything that can fail on bad input (scene, shaders) fails before the
+    // output folder is made.
     auto context = createHeadlessContext(demo.backend);
     StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height);
-    FrameTiming timing = timeFrames([&] { renderer.render(setup.camera, setup.time, setup.settings); }, 3, demo.frames);
-    std::filesystem::path out = outDir / (stage.id + ".png");
-    writePngAtomic(renderer.read(), out);
-    std::printf("raylab demo: stage %s%s, %dx%d, %s backend, %s\n", stage.id.c_str(),
-                demo.stage.empty() ? " (the highest finished stage)" : "", setup.size.width,
-                setup.size.height, context->backendName().c_str(), glDescription().c_str());
+    const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);
+
+    const FlyThrough path;
+    const CameraPose start = setup.camera.pose();
+    auto drawFrame = [&](int i) {
+        Camera camera(path.poseAt(start, i), setup.scene.fovYDeg);
+        renderer.render(camera, path.timeAt(setup.time, i), setup.settings);
+    };
+    drawFrame(0);  // warm-up: the driver finishes compiling on first use
+    std::vector<double> ms;
+    for (int i = 0; i < demo.frames; ++i) {
+        ms.push_back(timeOneFrame([&] { drawFrame(i); }));
+        writePngAtomic(renderer.read(), outDir / frameName(i));  // read back outside the timed part
+    }
+    FrameTiming timing = summarizeFrameTimes(ms);
+    std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s backend, %s\n", stage.id.c_str(),
+                setup.scene.file.c_str(), setup.size.width, setup.size.height, setup.settings.maxDepth,
+                setup.settings.shadows ? "on" : "off", context->backendName().c_str(), glDescription().c_str());
     std::printf("  frame time: %s\n", timing.summary().c_str());
-    std::printf("  image written to %s\n", std::filesystem::absolute(out).lexically_normal().c_str());
+    std::printf("  %d frame%s written to %s\n", demo.frames, demo.frames == 1 ? "" : "s",
+                std::filesystem::absolute(outDir).lexically_normal().c_str());
     return 0;
 }
 

@@ -20,11 +20,14 @@ int cmdRun(const StageOptions& stage, const RunOptions& run);
 int cmdRender(const StageOptions& stage, const std::string& outFile, Backend backend);
 
 struct DemoOptions {
-    std::string stage;  // empty: the highest finished stage
+    std::string stage;   // empty: the highest finished stage
+    std::string scene;   // "lite", "pro" or a file; empty: the stage's scene
     std::string size = "800x600";
-    std::string outDir = "raylab-demo";
-    int frames = 15;
+    std::string outDir;  // empty: a new folder under the current directory
+    int frames = 6;
     bool headless = false;
+    bool noShadows = false;
+    int maxDepth = RenderSettings::kMaxDepth;
     Backend backend = Backend::Auto;
 };
 int cmdDemo(const DemoOptions& demo);

@@ -15,25 +15,31 @@ std::string FrameTiming::summary() const {
     return buf;
 }
 
-FrameTiming timeFrames(const std::function<void()>& drawFrame, int warmup, int frames) {
+double timeOneFrame(const std::function<void()>& drawFrame) {
     using Clock = std::chrono::steady_clock;
-    for (int i = 0; i < warmup; ++i) drawFrame();
     glFinish();
-    std::vector<double> ms;
-    for (int i = 0; i < frames; ++i) {
-        auto start = Clock::now();
-        drawFrame();
-        glFinish();
-        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    }
+    auto start = Clock::now();
+    drawFrame();
+    glFinish();
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+FrameTiming summarizeFrameTimes(std::vector<double> ms) {
     FrameTiming t;
-    t.frames = frames;
+    t.frames = int(ms.size());
     if (ms.empty()) return t;
     std::sort(ms.begin(), ms.end());
     t.minMs = ms.front();
     t.maxMs = ms.back();
     t.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
     return t;
+}
+
+FrameTiming timeFrames(const std::function<void()>& drawFrame, int warmup, int frames) {
+    for (int i = 0; i < warmup; ++i) drawFrame();
+    std::vector<double> ms;
+    for (int i = 0; i < frames; ++i) ms.push_back(timeOneFrame(drawFrame));
+    return summarizeFrameTimes(std::move(ms));
 }
 
 } // namespace raylab

@@ -6,6 +6,7 @@
 // 0.6 ms for a frame that took 1.5 s).
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -15,6 +16,13 @@ struct FrameTiming {
     const char* method = "glFinish-fenced, steady clock";
     std::string summary() const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish-fenced, steady clock)"
 };
+
+// Median, min and max of frame times measured one by one (timeOneFrame).
+FrameTiming summarizeFrameTimes(std::vector<double> ms);
+
+// Milliseconds from issuing drawFrame() until glFinish returns, after a
+// glFinish that drains earlier work.
+double timeOneFrame(const std::function<void()>& drawFrame);
 
 // Calls drawFrame() warmup times unmeasured, then frames times measured; each
 // frame is fenced with glFinish before and after.

@@ -24,6 +24,9 @@ CLI::Option* addStageOptions(CLI::App* cmd, StageOptions& o, bool withCamera) {
         cmd->add_option("--time", o.time, "animation time in seconds")->capture_default_str();
         cmd->add_flag("--no-shadows", o.noShadows, "start with shadows off (stage 03 on; key 1 in the window)");
         cmd->add_option("--depth", o.maxDepth, "rays per path, 1..8 (stage 04 on; arrow keys in the window)")->capture_default_str();
+        cmd->add_flag("--no-glow", o.noGlow, "start without the sun's glow (stage 06 on; key G)");
+        cmd->add_flag("--no-normal-maps", o.noNormalMaps, "start without normal maps (stage 07 on; key N)");
+        cmd->add_option("--color-mode", o.colorMode, "colour mode RGB, BRB, BRR, RBB or GGR (stage 08; Up/Down)")->capture_default_str();
     }
     return lab;
 }
@@ -59,8 +62,12 @@ int main(int argc, char** argv) {
     CLI::App* demoCmd = app.add_subcommand("demo", "run the full solution; without a display render it to an image and time it");
     demoCmd->add_option("--stage", demo.stage, "show this stage's solution (default: the highest finished stage)");
     demoCmd->add_option("--size", demo.size, "image size WIDTHxHEIGHT")->capture_default_str();
-    demoCmd->add_option("--out", demo.outDir, "output folder for the headless images")->capture_default_str();
-    demoCmd->add_option("--frames", demo.frames, "frames to time (after 3 warm-up frames)")->capture_default_str();
+    demoCmd->add_option("--scene", demo.scene, "lite, pro or a scene file (default: the stage's scene)");
+    demoCmd->add_option("--out", demo.outDir, "folder for the headless frames (default: a new raylab-demo-SCENE-TIME folder here)");
+    demoCmd->add_option("--frames", demo.frames, "headless: frames of the fly-through to render and time (after one warm-up frame)")
+        ->capture_default_str();
+    demoCmd->add_flag("--no-shadows", demo.noShadows, "shadows off (key 1 in the window)");
+    demoCmd->add_option("--depth", demo.maxDepth, "rays per path, 1..8 (arrow keys in the window)")->capture_default_str();
     demoCmd->add_flag("--headless", demo.headless, "render to a file even when a display is available");
     demoCmd->add_option("--backend", demoBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
 

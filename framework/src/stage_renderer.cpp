@@ -11,6 +11,7 @@ namespace raylab {
 namespace {
 
 void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count, int limit) {
+    if (count > 0 && limit == 0) throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
     if (int(count) > limit)
         throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what + ", but stage " + stage.id +
                     " supports at most " + std::to_string(limit));

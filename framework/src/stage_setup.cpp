@@ -23,6 +23,12 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     s.settings.shadows = !o.noShadows;
     if (o.maxDepth < 1 || o.maxDepth > RenderSettings::kMaxDepth) throw Error("--depth must be between 1 and 8");
     s.settings.maxDepth = o.maxDepth;
+    s.settings.glow = !o.noGlow;
+    s.settings.normalMaps = !o.noNormalMaps;
+    s.settings.colorMode = -1;
+    for (int i = 0; i < kColorModeCount; ++i)
+        if (o.colorMode == kColorModes[i]) s.settings.colorMode = i;
+    if (s.settings.colorMode < 0) throw Error("--color-mode must be one of RGB, BRB, BRR, RBB, GGR (not '" + o.colorMode + "')");
     return s;
 }
 

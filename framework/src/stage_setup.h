@@ -26,6 +26,9 @@ struct StageOptions {
     float time = 0.0f;
     bool noShadows = false;
     int maxDepth = RenderSettings::kMaxDepth;
+    bool noGlow = false;
+    bool noNormalMaps = false;
+    std::string colorMode = "RGB";
 };
 
 struct StageSetup {

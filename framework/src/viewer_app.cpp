@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "paths.h"
+#include "settings_keys.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -27,6 +28,11 @@ void ViewerApp::init() {
     reportOpenTodos(renderer_->openTodos());
     watcher_.watch(renderer_->sourceFiles());
     time_ = setup_.time;
+    try {
+        overlay_ = std::make_unique<Overlay>(SDL_GL_GetCurrentWindow(), SDL_GL_GetCurrentContext());
+    } catch (const Error& e) {
+        std::fprintf(stderr, "raylab: no overlay (%s)\n", e.what());  // the window works without it
+    }
 }
 
 void ViewerApp::reloadShaders() {
@@ -47,6 +53,7 @@ void ViewerApp::reloadShaders() {
 }
 
 void ViewerApp::update(float dt) {
+    frameMs_ = frameMs_ == 0.0f ? dt * 1000.0f : 0.9f * frameMs_ + 0.1f * dt * 1000.0f;
     // Scripted runs (--frames) keep the time fixed so their frames are reproducible.
     if (!paused_ && automation_.exitAfterFrames == 0) time_ += dt;
     const Uint8* keys = SDL_GetKeyboardState(nullptr);
@@ -68,6 +75,7 @@ void ViewerApp::render() {
     if (w != renderer_->target().width() || h != renderer_->target().height()) renderer_->resize(w, h);
     renderer_->render(setup_.camera, time_, setup_.settings);
     renderer_->target().blitToScreen(w, h);
+    if (overlay_ && showOverlay_) drawOverlay();
     ++frames_;
     if (automation_.exitAfterFrames > 0 && frames_ >= automation_.exitAfterFrames) {
         if (!automation_.screenshotFile.empty()) screenshot(automation_.screenshotFile);
@@ -82,6 +90,7 @@ void ViewerApp::screenshot(const std::string& file) {
 }
 
 void ViewerApp::onEvent(const SDL_Event& event) {
+    if (overlay_) overlay_->processEvent(event);
     switch (event.type) {
     case SDL_MOUSEBUTTONDOWN:
         if (event.button.button == SDL_BUTTON_LEFT) looking_ = true;
@@ -93,45 +102,67 @@ void ViewerApp::onEvent(const SDL_Event& event) {
         if (looking_) setup_.camera.turn(float(event.motion.xrel) * kMouseDegPerPixel, -float(event.motion.yrel) * kMouseDegPerPixel);
         break;
     case SDL_KEYDOWN:
-        if (event.key.repeat) break;
-        switch (event.key.keysym.sym) {
-        case SDLK_ESCAPE: quit(); break;
-        case SDLK_1:
-            setup_.settings.shadows = !setup_.settings.shadows;
-            std::printf("shadows %s\n", setup_.settings.shadows ? "on" : "off");
-            break;
-        case SDLK_RIGHT:
-        case SDLK_LEFT: {
-            int& depth = setup_.settings.maxDepth;
-            depth = std::clamp(depth + (event.key.keysym.sym == SDLK_RIGHT ? 1 : -1), 1, RenderSettings::kMaxDepth);
-            std::printf("max depth %d\n", depth);
-            break;
-        }
-        case SDLK_v:
-            setVsync(!vsync());
-            std::printf("vsync %s\n", vsync() ? "on" : "off");
-            break;
-        case SDLK_p:
-            paused_ = !paused_;
-            std::printf("animation %s\n", paused_ ? "paused" : "running");
-            break;
-        case SDLK_F12: {
-            char name[64];
-            std::time_t now = std::time(nullptr);
-            std::strftime(name, sizeof name, "raylab-%Y%m%d-%H%M%S.png", std::localtime(&now));
-            try {
-                screenshot(name);
-            } catch (const Error& e) {
-                std::fprintf(stderr, "raylab: error: %s\n", e.what());
-            }
-            break;
-        }
-        default: break;
-        }
-        std::fflush(stdout);
+        if (!event.key.repeat) onKey(event.key.keysym.sym);
         break;
     default: break;
     }
+}
+
+namespace {
+const char* onOff(bool on) { return on ? "on" : "off"; }
+} // namespace
+
+void ViewerApp::onKey(SDL_Keycode key) {
+    if (auto echo = applySettingsKey(setup_.settings, key)) {
+        std::printf("%s\n", echo->c_str());
+        std::fflush(stdout);
+        return;
+    }
+    switch (key) {
+    case SDLK_ESCAPE: quit(); break;
+    case SDLK_v:
+        setVsync(!vsync());
+        std::printf("vsync %s\n", onOff(vsync()));
+        break;
+    case SDLK_p:
+        paused_ = !paused_;
+        std::printf("animation %s\n", paused_ ? "paused" : "running");
+        break;
+    case SDLK_h:
+        showOverlay_ = !showOverlay_;
+        std::printf("overlay %s\n", showOverlay_ ? "shown" : "hidden");
+        break;
+    case SDLK_F12: {
+        char name[64];
+        std::time_t now = std::time(nullptr);
+        std::strftime(name, sizeof name, "raylab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+        try {
+            screenshot(name);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "raylab: error: %s\n", e.what());
+        }
+        break;
+    }
+    default: break;
+    }
+    std::fflush(stdout);
+}
+
+// The state of every switch, and the key that changes it.
+void ViewerApp::drawOverlay() {
+    const RenderSettings& s = setup_.settings;
+    char frame[64];
+    std::snprintf(frame, sizeof frame, "%.1f ms (%.0f FPS)", frameMs_, frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
+    overlay_->draw("RayLab " + setup_.stage->id + " - " + setup_.scene.file,
+                   {{"frame", frame},
+                    {"[1] shadows", onOff(s.shadows)},
+                    {"[G] glow", onOff(s.glow)},
+                    {"[N] normal maps", onOff(s.normalMaps)},
+                    {"[Left/Right] max depth", std::to_string(s.maxDepth)},
+                    {"[Up/Down] colour mode", kColorModes[s.colorMode]},
+                    {"[V] vsync", onOff(vsync())},
+                    {"[P] animation", paused_ ? "paused" : "running"},
+                    {"[H] hide this panel", ""}});
 }
 
 } // namespace raylab

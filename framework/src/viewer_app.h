@@ -1,10 +1,13 @@
 #pragma once
 // The interactive window for one stage: FPS-style camera, shader hot reload,
 // screenshots. Keys: W/A/S/D move, Left Shift slows down, mouse look while the
-// left button is held, 1 shadows, Right/Left max depth, V vsync, P pause time,
-// F12 screenshot, Esc quit.
+// left button is held, 1 shadows, G glow, N normal maps, Right/Left max
+// depth, Up/Down colour mode, V vsync, P pause time, H hide the overlay, F12
+// screenshot, Esc quit. Every toggle is echoed on the terminal and the
+// current state is shown in an overlay.
 #include "application.h"
 #include "file_watcher.h"
+#include "overlay.h"
 #include "stage_renderer.h"
 #include "stage_setup.h"
 
@@ -31,10 +34,15 @@ protected:
 private:
     void reloadShaders();
     void screenshot(const std::string& file);
+    void onKey(SDL_Keycode key);
+    void drawOverlay();
 
     StageSetup setup_;
     Automation automation_;
     std::unique_ptr<StageRenderer> renderer_;
+    std::unique_ptr<Overlay> overlay_;
+    bool showOverlay_ = true;
+    float frameMs_ = 0.0f;  // smoothed frame time for the overlay
     FileWatcher watcher_;
     float time_ = 0.0f;
     float sinceReloadCheck_ = 0.0f;

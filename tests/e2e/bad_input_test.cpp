@@ -35,14 +35,21 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
     std::string manyLights = "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 5], \"yaw\": 0, \"pitch\": 0}, \"lights\": [";
     for (int i = 0; i < 9; ++i) manyLights += std::string(i ? "," : "") + "{\"position\": [0, 0, 0], \"color\": [1, 1, 1]}";
     writeFile(dir / "many-lights.json", manyLights + "], \"spheres\": []}");
+    std::string boxes = "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 5], \"yaw\": 0, \"pitch\": 0}, \"boxes\": [";
+    for (int i = 0; i < 3; ++i) boxes += std::string(i ? "," : "") + "{\"center\": [0, 0, 0], \"size\": [1, 1, 1], \"color\": [1, 1, 1]}";
+    writeFile(dir / "many-triangles.json", boxes + "], \"spheres\": []}");
     const BadCase cases[] = {
         {"unknown-stage", "--stage 42", "unknown stage '42'"},
         {"unknown-stage-name", "--stage 01-raytrace", "unknown stage '01-raytrace'"},
-        {"stage-not-yet", "--stage 08", "stage 08-full is not available yet"},
         {"missing-lab", "--stage 01 --lab /nonexistent/lab", "lab folder /nonexistent/lab does not exist"},
         {"lab-without-stage", "--stage 01 --lab " + quote(dir.path()), "has no 01-raycast/"},
         {"missing-scene", "--stage 01 --solution --scene /nonexistent/s.json", "scene file /nonexistent/s.json does not exist"},
         {"malformed-scene", "--stage 01 --solution --scene " + quote(dir / "broken.json"), "JSON syntax error"},
+        {"kind-not-yet", "--stage 04 --solution --scene " + quote(sourceDir() / "assets/scenes/stage05.json"),
+         "stage05.json: planes: stage 04-recursion has no planes"},
+        {"too-many-triangles", "--stage 05 --solution --scene " + quote(dir / "many-triangles.json"),
+         "triangles: 36 triangles, but stage 05-primitives supports at most 32"},
+        {"color-mode", "--stage 08 --solution --color-mode XYZ", "--color-mode must be one of RGB, BRB, BRR, RBB, GGR"},
         {"too-many-lights", "--stage 02 --solution --scene " + quote(dir / "many-lights.json"), "lights: 9 lights, but stage 02-shading supports at most 4"},
         {"size-format", "--stage 01 --solution --size 800by600", "--size '800by600': expected WIDTHxHEIGHT"},
         {"size-absurd", "--stage 01 --solution --size 100000x100000", "--size"},

@@ -11,8 +11,11 @@ using namespace raylab::test;
 namespace {
 const std::string kView = "--stage 01 --solution --size 96x72 --camera 1.2,1.5,6,-10,-6 --time 0.7";
 
-// The heaviest available stage: reflection, refraction and Fresnel exercise far more maths.
+// Reflection, refraction and Fresnel exercise far more maths.
 const std::string kHeavyView = "--stage 04 --solution --size 96x72 --camera 0.4,1.3,4,0,-6";
+// The full tracer: texture array (glTexImage3D, a GLEW pointer), cube map, torus, glow.
+const std::string kFullView = "--stage 08 --solution --scene " + quote((sourceDir() / "assets/scenes/pro.json").string()) +
+                              " --size 96x72 --time 1.5";
 
 raylab::Image render(const ScratchDir& dir, const std::string& backend, const std::string& view = kView) {
     fs::path out = dir / (backend + ".png");
@@ -35,6 +38,12 @@ TEST(Backends, EglAndOsMesaGiveTheSameImage) {
 TEST(Backends, EglAndOsMesaAgreeOnTheRecursiveTracerToo) {
     ScratchDir dir;
     raylab::Image egl = render(dir, "egl", kHeavyView), osmesa = render(dir, "osmesa", kHeavyView);
+    EXPECT_EQ(egl.rgba, osmesa.rgba) << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
+}
+
+TEST(Backends, EglAndOsMesaAgreeOnTheFullTracerWithTextures) {
+    ScratchDir dir;
+    raylab::Image egl = render(dir, "egl", kFullView), osmesa = render(dir, "osmesa", kFullView);
     EXPECT_EQ(egl.rgba, osmesa.rgba) << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
 }
 

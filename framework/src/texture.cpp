@@ -127,6 +127,9 @@ CubeMap::CubeMap(const CubeFaces& faces) {
 CubeMap::~CubeMap() { glDeleteTextures(1, &id_); }
 
 void CubeMap::bind(int unit) const {
+    // Filter across face edges (core since GL 3.2; without it some GPUs show
+    // the cube's edges in the sky).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
 }

@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "error.h"
+#include "function_checks.h"
 #include "image_compare.h"
 #include "paths.h"
 #include "stage_renderer.h"
@@ -68,9 +69,24 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         bool ok = imagesAgree(diff, tolerance);
         passed += ok;
         std::printf("  %s %-14s %s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str());
-        if (!ok) std::printf("       this view checks: %s\n", view.why.c_str());
+        if (!ok) {
+            std::printf("       this view checks: %s\n", view.why.c_str());
+            std::string hint = diagnose(mine, expected, tolerance.channel);
+            if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
+        }
     }
     int failed = int(stage.checkViews.size()) - passed;
+
+    const auto functions = functionSpecsFor(stage);
+    if (!functions.empty())
+        std::printf("  function checks: each function on a table of inputs (hard cases included) against double precision\n");
+    for (const FunctionSpec* spec : functions) {
+        FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
+        bool ok = f.passed == f.total;
+        (ok ? passed : failed) += 1;
+        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed, f.total, ok ? "" : "; first failure: ",
+                    f.firstFailure.c_str());
+    }
     std::printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;
 }

@@ -7,7 +7,7 @@
 
 namespace raylab {
 
-Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+Framebuffer::Framebuffer(int width, int height, PixelFormat format) : width_(width), height_(height), format_(format) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
@@ -15,7 +15,10 @@ Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height)
                     std::to_string(maxSize) + " per side)");
     glGenTextures(1, &color_);
     glBindTexture(GL_TEXTURE_2D, color_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    if (format == PixelFormat::Rgba32F)
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    else
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -53,6 +56,18 @@ Image Framebuffer::read() const {
     for (int y = 0; y < height_; ++y)
         std::memcpy(image.pixel(0, y), bottomUp.data() + std::size_t(height_ - 1 - y) * row, row);
     return image;
+}
+
+std::vector<float> Framebuffer::readFloats() const {
+    std::vector<float> bottomUp(std::size_t(width_) * std::size_t(height_) * 4), rows(bottomUp.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, bottomUp.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    const std::size_t row = std::size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::memcpy(&rows[std::size_t(y) * row], &bottomUp[std::size_t(height_ - 1 - y) * row], row * sizeof(float));
+    return rows;
 }
 
 void Framebuffer::blitToScreen(int screenWidth, int screenHeight) const {

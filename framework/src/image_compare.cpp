@@ -70,4 +70,29 @@ Image diffHeatMap(const Image& a, const Image& b) {
     return heat;
 }
 
+std::string diagnose(const Image& mine, const Image& expected, int channelTolerance) {
+    if (mine.width != expected.width || mine.height != expected.height) return "";
+    long differing = 0, darker = 0, brighter = 0, magenta = 0, expectedMagenta = 0;
+    auto isMagenta = [](const std::uint8_t* p) { return p[0] > 150 && p[2] > 150 && p[1] < 110; };
+    for (int y = 0; y < mine.height; ++y)
+        for (int x = 0; x < mine.width; ++x) {
+            const std::uint8_t *m = mine.pixel(x, y), *e = expected.pixel(x, y);
+            magenta += isMagenta(m);
+            expectedMagenta += isMagenta(e);
+            int sumM = m[0] + m[1] + m[2], sumE = e[0] + e[1] + e[2];
+            int diff = std::max({std::abs(m[0] - e[0]), std::abs(m[1] - e[1]), std::abs(m[2] - e[2])});
+            if (diff <= channelTolerance) continue;
+            ++differing;
+            darker += sumM < sumE;
+            brighter += sumM > sumE;
+        }
+    const long all = long(mine.width) * long(mine.height);
+    auto percent = [&](long n, long of) { return std::to_string(int(100.0 * double(n) / double(std::max(1L, of)) + 0.5)) + "%"; };
+    if (magenta > expectedMagenta + all / 100) return "magenta stripes on " + percent(magenta, all) + " of the image: an unfinished TODO is reached";
+    if (differing == 0) return "";
+    if (darker >= differing * 8 / 10) return percent(darker, differing) + " of the differing pixels are too dark (light missing, or shadow acne?)";
+    if (brighter >= differing * 8 / 10) return percent(brighter, differing) + " of the differing pixels are too bright (light that should be blocked or weighted?)";
+    return "";
+}
+
 } // namespace raylab

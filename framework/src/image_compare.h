@@ -30,6 +30,11 @@ bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol);
 // "0.12% of pixels differ (max 37/255)"
 std::string describe(const ImageDiff& diff);
 
+// A hint at what is wrong, for students ("" when nothing stands out):
+// magenta TODO stripes, mostly too dark (missing light, acne), mostly too
+// bright, or a whole region of another colour.
+std::string diagnose(const Image& mine, const Image& expected, int channelTolerance);
+
 // A heat map of the per-pixel difference (black = equal, red = max), for reports.
 Image diffHeatMap(const Image& a, const Image& b);
 

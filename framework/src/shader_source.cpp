@@ -34,7 +34,16 @@ struct Assembler {
         for (const fs::path& dir : search) {
             fs::path candidate = dir / rel;
             std::error_code ec;
-            if (fs::is_regular_file(candidate, ec)) return candidate;
+            if (!fs::is_regular_file(candidate, ec)) continue;
+            // A symbolic link must not lead out of the folder either (graded
+            // submissions are untrusted).
+            fs::path real = fs::canonical(candidate, ec);
+            fs::path base = fs::canonical(dir, ec);
+            auto inside = std::mismatch(base.begin(), base.end(), real.begin(), real.end()).first == base.end();
+            if (ec || !inside)
+                throw Error(fromFile + ":" + std::to_string(fromLine) + ": #include \"" + name + "\" leads outside " + displayPath(dir) +
+                            " (a symbolic link?)");
+            return candidate;
         }
         std::string where = fromFile.empty() ? std::string() : fromFile + ":" + std::to_string(fromLine) + ": ";
         std::string dirs;

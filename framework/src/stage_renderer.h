@@ -41,7 +41,9 @@ public:
     Image read() const { return target_->read(); }
     const Framebuffer& target() const { return *target_; }
     // A new render target of another size (the window was resized).
-    void resize(int width, int height) { target_ = std::make_unique<Framebuffer>(width, height); }
+    void resize(int width, int height, PixelFormat format = PixelFormat::Rgba8) {
+        target_ = std::make_unique<Framebuffer>(width, height, format);
+    }
     const Scene& scene() const { return scene_; }
 
     // Rebuilds the program from the files on disk. On failure the previous

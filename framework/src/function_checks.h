@@ -1,0 +1,52 @@
+#pragma once
+// Function checks: a stage's GLSL functions run on a table of inputs in a
+// small harness shader, compared with a double-precision C++ version of the
+// same function. The tables include the hard cases (tangent rays, rays that
+// start on the surface, parallel rays, hits from inside) and invariants (unit
+// normals, Fresnel weights within [0, 1], no NaN). Used by `raylab check` and
+// `raylab grade`.
+#include "stage_catalog.h"
+#include "stage_sources.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// One row of inputs: up to four vec4s, a0..a3 in the harness.
+struct FunctionCase {
+    std::string label;            // "tangent ray", "from inside"
+    std::array<glm::dvec4, 4> in{};
+    bool hitOrMiss = false;       // on the boundary: either answer is right (if a hit, its t must be right)
+};
+
+struct FunctionSpec {
+    std::string name;                   // the GLSL function, e.g. "intersectSphere"
+    std::string stage;                  // the stage whose TODO writes it
+    std::vector<std::string> includes;  // harness includes after ray.glsl and lab_todo.glsl
+    std::string call;                   // GLSL expression: a vec4 from a0..a3
+    std::vector<FunctionCase> cases;
+    std::function<glm::dvec4(const FunctionCase&)> reference;
+    // Empty when GOT agrees with WANT, else one line saying how it does not.
+    std::function<std::string(const FunctionCase&, const glm::dvec4& got, const glm::dvec4& want)> compare;
+};
+
+// Every checked function, in stage order.
+const std::vector<FunctionSpec>& functionSpecs();
+std::vector<const FunctionSpec*> functionSpecsFor(const StageInfo& stage);
+
+struct FunctionOutcome {
+    std::string name;
+    int passed = 0, total = 0;
+    std::string firstFailure;  // "tangent ray: expected t = 5, got no hit"
+    bool compiled = true;      // false: the harness did not compile (message in firstFailure)
+};
+
+// Runs SPEC's table through the stage's shader files in SOURCES. Needs a
+// current GL context.
+FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources);
+
+} // namespace raylab

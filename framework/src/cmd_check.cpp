@@ -4,9 +4,9 @@
 #include "image_compare.h"
 #include "paths.h"
 #include "stage_renderer.h"
+#include "view_renderers.h"
 
 #include <cstdio>
-#include <map>
 
 namespace raylab {
 
@@ -24,23 +24,10 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
 
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
-    // One pair of renderers (student, reference) per scene the views use.
-    struct Renderers {
-        std::unique_ptr<StageRenderer> student, reference;
-    };
-    std::map<std::string, Renderers> byScene;
-    auto renderersFor = [&](const CheckView& view) -> Renderers& {
-        std::string key = options.scene.empty() ? view.scene : "";  // --scene: every view in that scene
-        auto it = byScene.find(key);
-        if (it != byScene.end()) return it->second;
-        Scene scene = key.empty() ? setup.scene : loadScene(projectRoot() / "assets" / "scenes" / key);
-        Renderers r;
-        r.student = std::make_unique<StageRenderer>(stage, setup.sources, scene, w, h);
-        reportOpenTodos(r.student->openTodos());
-        if (against.empty()) r.reference = std::make_unique<StageRenderer>(stage, solutionSources(stage), scene, w, h);
-        return byScene.emplace(key, std::move(r)).first->second;
-    };
-    renderersFor(stage.checkViews.front());  // a compile error stops here, before any output
+    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h);
+    std::unique_ptr<ViewRenderers> references;
+    if (against.empty()) references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h);
+    reportOpenTodos(students.forView(stage.checkViews.front()).openTodos());  // a compile error stops here, before any output
 
     const CompareTolerance tolerance;
     std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(), setup.sources.label.c_str(),
@@ -50,17 +37,17 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 tolerance.maxBadShare * 100.0, tolerance.channel);
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
-        Renderers& renderers = renderersFor(view);
-        StageRenderer& student = *renderers.student;
-        std::unique_ptr<StageRenderer>& reference = renderers.reference;
+        StageRenderer& student = students.forView(view);
+        reportOpenTodos(student.openTodos());
         Camera camera = cameraFor(view.pose, student.scene());
         const RenderSettings settings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
         student.render(camera, view.time, settings);
         Image mine = student.read();
         Image expected;
-        if (reference) {
-            reference->render(camera, view.time, settings);
-            expected = reference->read();
+        if (references) {
+            StageRenderer& reference = references->forView(view);
+            reference.render(camera, view.time, settings);
+            expected = reference.read();
         } else {
             expected = loadPng(against / (view.name + ".png"));
         }

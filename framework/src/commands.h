@@ -39,6 +39,22 @@ struct CheckOptions {
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 
+struct GradeOptions {
+    std::string submissions;  // one folder per student, each laid out like labs/
+    std::string outDir;
+    std::string stages;       // "01,02,04"; empty: every available stage
+    int jobs = 2;
+    double timeoutSeconds = 60.0;  // per stage of a submission
+    long memoryMb = 2048;          // per stage of a submission (address space); the pro scene needs well under 1 GB
+    unsigned seed = 0;             // of the seeded views; keep it secret to prevent tuning
+};
+int cmdGrade(const GradeOptions& grade);
+
+// The child-process halves of `raylab grade` (not for direct use).
+int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);
+int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student, const std::string& outDir,
+                 unsigned seed);
+
 // True when a window can be opened (X11 or Wayland display set).
 bool displayAvailable();
 

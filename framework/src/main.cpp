@@ -57,6 +57,30 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", renderOut, "output PNG file")->required();
     renderCmd->add_option("--backend", renderBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
 
+    GradeOptions grade;
+    CLI::App* gradeCmd = app.add_subcommand("grade", "grade a whole class headlessly: one folder per student, each laid out like labs/");
+    gradeCmd->add_option("--submissions", grade.submissions, "folder with one subfolder per student")->required();
+    gradeCmd->add_option("--out", grade.outDir, "folder for report.html, summary.csv, junit.xml, <student>/results.json")->required();
+    gradeCmd->add_option("--stages", grade.stages, "comma-separated stages to grade (default: all)");
+    gradeCmd->add_option("--jobs", grade.jobs, "submissions graded at once")->capture_default_str();
+    gradeCmd->add_option("--timeout", grade.timeoutSeconds, "seconds per stage of a submission")->capture_default_str();
+    gradeCmd->add_option("--memory-mb", grade.memoryMb, "address-space limit per stage of a submission, MB (0: none)")->capture_default_str();
+    gradeCmd->add_option("--seed", grade.seed, "seed of the extra camera views (keep it secret)")->capture_default_str();
+
+    // The child-process halves of `grade` (hidden: an empty group).
+    std::string itemStage, itemLab, itemStudent, itemOut;
+    unsigned itemSeed = 0;
+    CLI::App* gradeItemCmd = app.add_subcommand("grade-item", "")->group("");
+    gradeItemCmd->add_option("--stage", itemStage)->required();
+    gradeItemCmd->add_option("--lab", itemLab)->required();
+    gradeItemCmd->add_option("--student", itemStudent)->required();
+    gradeItemCmd->add_option("--out", itemOut)->required();
+    gradeItemCmd->add_option("--seed", itemSeed);
+    CLI::App* gradeRefCmd = app.add_subcommand("grade-reference", "")->group("");
+    gradeRefCmd->add_option("--stage", itemStage)->required();
+    gradeRefCmd->add_option("--out", itemOut)->required();
+    gradeRefCmd->add_option("--seed", itemSeed);
+
     DemoOptions demo;
     std::string demoBackend = "auto";
     CLI::App* demoCmd = app.add_subcommand("demo", "run the full solution; without a display render it to an image and time it");
@@ -102,6 +126,9 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("stages")) return cmdStages();
         if (runCmd->parsed()) return cmdRun(runStage, run);
         if (renderCmd->parsed()) return cmdRender(renderStage, renderOut, parseBackend(renderBackend));
+        if (gradeCmd->parsed()) return cmdGrade(grade);
+        if (gradeItemCmd->parsed()) return cmdGradeItem(itemStage, itemLab, itemStudent, itemOut, itemSeed);
+        if (gradeRefCmd->parsed()) return cmdGradeReference(itemStage, itemOut, itemSeed);
         if (demoCmd->parsed()) {
             demo.backend = parseBackend(demoBackend);
             return cmdDemo(demo);

@@ -1,0 +1,271 @@
+// `raylab grade`: a whole class, headless. Every stage of every submission
+// is graded in a child process of its own (cmd_grade_item.cpp) with a
+// timeout and a memory limit, --jobs at a time; the results go to
+// report.html, <student>/results.json (Gradescope), summary.csv and
+// junit.xml. One bad submission never stops the run or touches another's
+// score.
+#include "child_process.h"
+#include "commands.h"
+#include "error.h"
+#include "grade_report.h"
+#include "grade_stage.h"
+#include "paths.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Item {
+    std::size_t student;
+    const StageInfo* stage;
+};
+
+std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
+    std::vector<const StageInfo*> stages;
+    if (list.empty()) {
+        for (const StageInfo& s : allStages())
+            if (s.available()) stages.push_back(&s);
+        return stages;
+    }
+    std::stringstream in(list);
+    for (std::string id; std::getline(in, id, ',');) {
+        const StageInfo* s = &findStage(id);
+        if (std::find(stages.begin(), stages.end(), s) == stages.end()) stages.push_back(s);
+    }
+    return stages;
+}
+
+std::vector<std::string> studentFolders(const fs::path& submissions) {
+    std::error_code ec;
+    if (!fs::is_directory(submissions, ec)) throw Error("--submissions '" + submissions.string() + "': no such folder");
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(submissions, ec))
+        if (e.is_directory() && e.path().filename().string()[0] != '.') names.push_back(e.path().filename().string());
+    if (names.empty()) throw Error("--submissions '" + submissions.string() + "': no student folders in it");
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string lastLines(const fs::path& log, int count) {
+    std::ifstream in(log);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    std::string out;
+    for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - std::size_t(count) : 0; i < lines.size(); ++i)
+        out += lines[i] + "\n";
+    return out;
+}
+
+// What a child that left no result means.
+StageResult failedItem(const StageInfo& stage, const ChildOutcome& o, const fs::path& log, const GradeOptions& g) {
+    StageResult r;
+    r.stage = stage.id;
+    r.seconds = o.seconds;
+    char limit[160];
+    if (o.timedOut) {
+        r.status = "timed out";
+        std::snprintf(limit, sizeof limit, "stopped after %.0f s (--timeout): an endless loop, or a shader that takes minutes to compile?",
+                      g.timeoutSeconds);
+        r.message = limit;
+    } else if (o.exitCode == 3) {
+        r.status = "out of memory";
+        r.message = "ran out of memory (--memory-mb " + std::to_string(g.memoryMb) + "): a huge array?";
+    } else if (o.signal) {
+        r.status = "crashed";
+        r.message = o.describe() + " (a crash in the shader compiler or driver, or memory beyond --memory-mb " +
+                    std::to_string(g.memoryMb) + ")";
+    } else {
+        r.status = "error";
+        r.message = o.describe();
+    }
+    std::string tail = lastLines(log, 5);
+    if (!tail.empty()) r.message += "\nlast lines of its log:\n" + tail;
+    return r;
+}
+
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), tty_(isatty(2)) {}
+    void done(const std::string& student, const StageResult& r) {
+        ++finished_;
+        if (tty_) {
+            const int width = 30;
+            int filled = int(double(width) * double(finished_) / double(std::max<std::size_t>(total_, 1)));
+            std::fprintf(stderr, "\r[%s%s] %zu/%zu  %-20.20s %-14s %s", std::string(std::size_t(filled), '#').c_str(),
+                         std::string(std::size_t(width - filled), '.').c_str(), finished_, total_, student.c_str(), r.stage.c_str(),
+                         finished_ == total_ ? "\n" : "");
+        } else {
+            std::fprintf(stderr, "  [%zu/%zu] %s %s: %s\n", finished_, total_, student.c_str(), r.stage.c_str(),
+                         r.status == "graded" ? (std::to_string(int(std::lround(r.score))) + "/100").c_str() : r.status.c_str());
+        }
+        std::fflush(stderr);
+    }
+
+private:
+    std::size_t total_, finished_ = 0;
+    bool tty_;
+};
+
+void printSummary(const ClassResult& result) {
+    std::printf("\n%-24s", "student");
+    for (const std::string& s : result.stages) std::printf(" %6.2s", s.c_str());
+    std::printf(" %8s\n", "total");
+    for (const StudentResult& st : result.students) {
+        std::printf("%-24.24s", st.name.c_str());
+        for (const StageResult& r : st.stages) {
+            if (r.status == "graded") std::printf(" %6.1f", r.score);
+            else if (r.status == "not submitted") std::printf(" %6s", "-");
+            else std::printf(" %6s", r.status == "compile error" ? "CE" : r.status == "timed out" ? "TIME" : "ERR");
+        }
+        std::printf(" %8.1f\n", st.score());
+    }
+    std::printf("(scores out of 100 per stage; - not submitted, CE compile error, TIME timed out, ERR crashed or other error)\n");
+}
+
+fs::path selfExecutable() {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) throw Error("cannot find the raylab executable (/proc/self/exe)");
+    return exe;
+}
+
+} // namespace
+
+int cmdGrade(const GradeOptions& g) {
+    if (g.jobs < 1 || g.jobs > 64) throw Error("--jobs must be between 1 and 64");
+    if (!(g.timeoutSeconds > 0.0) || g.timeoutSeconds > 3600.0) throw Error("--timeout must be between 0 and 3600 seconds");
+    if (g.memoryMb != 0 && (g.memoryMb < 256 || g.memoryMb > 1 << 20)) throw Error("--memory-mb must be 0 (no limit) or 256..1048576");
+    if (g.outDir.empty()) throw Error("--out is required");
+    const std::vector<const StageInfo*> stages = stagesToGrade(g.stages);
+    const fs::path submissions = g.submissions;
+    const std::vector<std::string> students = studentFolders(submissions);
+    const fs::path out = g.outDir;
+    std::error_code ec;
+    fs::create_directories(out / "reference", ec);
+    if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
+    const std::string exe = selfExecutable().string();
+    const std::string seed = std::to_string(g.seed);
+    const auto start = std::chrono::steady_clock::now();
+
+    std::printf("raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB, seed %u\n", students.size(), stages.size(),
+                g.jobs, g.timeoutSeconds, g.memoryMb, g.seed);
+    std::fflush(stdout);
+
+    // 1. The solution's images for every stage (trusted code, but in children
+    //    too: they run in parallel and share nothing).
+    {
+        ChildLimits limits{g.timeoutSeconds * 10.0, 0};
+        std::vector<std::pair<const StageInfo*, std::unique_ptr<Child>>> running;
+        std::deque<const StageInfo*> queue(stages.begin(), stages.end());
+        while (!queue.empty() || !running.empty()) {
+            while (!queue.empty() && int(running.size()) < g.jobs) {
+                const StageInfo* s = queue.front();
+                queue.pop_front();
+                running.emplace_back(s, std::make_unique<Child>(std::vector<std::string>{exe, "grade-reference", "--stage", s->id, "--out",
+                                                                                          out.string(), "--seed", seed},
+                                                                out / "reference" / (s->id + ".log"), limits));
+            }
+            for (auto it = running.begin(); it != running.end();) {
+                if (!it->second->poll()) { ++it; continue; }
+                if (it->second->outcome().exitCode != 0)
+                    throw Error("rendering the reference images of stage " + it->first->id + " failed (" + it->second->outcome().describe() +
+                                "); see " + (out / "reference" / (it->first->id + ".log")).string());
+                it = running.erase(it);
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
+
+    // 2. Every stage of every submission.
+    ClassResult result;
+    result.seed = g.seed;
+    for (const StageInfo* s : stages) result.stages.push_back(s->id);
+    result.machine = lastLines(out / "reference" / "machine.txt", 1);
+    if (!result.machine.empty()) result.machine.pop_back();
+    result.students.resize(students.size());
+    std::map<std::pair<std::size_t, std::string>, StageResult> graded;
+    std::deque<Item> queue;
+    for (std::size_t i = 0; i < students.size(); ++i) {
+        result.students[i].name = students[i];
+        for (const StageInfo* s : stages) queue.push_back({i, s});
+    }
+    Progress progress(queue.size());
+    const ChildLimits limits{g.timeoutSeconds, g.memoryMb};
+    std::vector<std::pair<Item, std::unique_ptr<Child>>> running;
+    while (!queue.empty() || !running.empty()) {
+        while (!queue.empty() && int(running.size()) < g.jobs) {
+            Item item = queue.front();
+            queue.pop_front();
+            const std::string& name = students[item.student];
+            if (!fs::is_directory(submissions / name / item.stage->id, ec)) {
+                StageResult r;
+                r.stage = item.stage->id;
+                r.status = "not submitted";
+                r.message = "no " + item.stage->id + "/ folder in the submission";
+                graded[{item.student, item.stage->id}] = r;
+                progress.done(name, r);
+                continue;
+            }
+            const fs::path itemDir = out / name / item.stage->id;
+            fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
+            fs::create_directories(itemDir, ec);
+            running.emplace_back(item, std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
+                                                                                        (submissions / name).string(), "--student", name,
+                                                                                        "--out", out.string(), "--seed", seed},
+                                                               itemDir / "log.txt", limits));
+        }
+        bool any = false;
+        for (auto it = running.begin(); it != running.end();) {
+            if (!it->second->poll()) { ++it; continue; }
+            any = true;
+            const Item& item = it->first;
+            const ChildOutcome& o = it->second->outcome();
+            const fs::path itemDir = out / students[item.student] / item.stage->id;
+            StageResult r;
+            bool haveResult = false;
+            if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
+                try {
+                    r = stageResultFromJson(readTextFile(itemDir / "result.json"));
+                    haveResult = true;
+                } catch (const Error&) {
+                }
+            }
+            if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
+            r.seconds = o.seconds;
+            graded[{item.student, item.stage->id}] = r;
+            progress.done(students[item.student], r);
+            it = running.erase(it);
+        }
+        if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    for (std::size_t i = 0; i < students.size(); ++i)
+        for (const StageInfo* s : stages) result.students[i].stages.push_back(graded[{i, s->id}]);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // 3. The reports.
+    for (const StudentResult& st : result.students) writeGradescopeResults(st, out / st.name / "results.json");
+    writeSummaryCsv(result, out / "summary.csv");
+    writeJunitXml(result, out / "junit.xml");
+    writeHtmlReport(result, out);
+    printSummary(result);
+    std::printf("graded in %.1f s; report: %s\n", result.seconds, fs::absolute(out / "report.html").lexically_normal().c_str());
+    return 0;
+}
+
+} // namespace raylab

@@ -1,0 +1,170 @@
+#include "grade_stage.h"
+
+#include "error.h"
+#include "function_checks.h"
+#include "grade_views.h"
+#include "image_compare.h"
+#include "paths.h"
+#include "shader_program.h"
+#include "stage_setup.h"
+#include "view_renderers.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
+constexpr double kZeroCreditShare = 0.10;
+
+struct Frame {
+    Image image;
+    long nonFinite = 0;  // NaN or Inf pixels (shown magenta in the image)
+};
+
+// Float pixels to 8 bits: clamp, scale, round - the same for reference and submission.
+Frame toFrame(const std::vector<float>& rgba, int width, int height) {
+    Frame f{Image(width, height)};
+    for (std::size_t p = 0; p < std::size_t(width) * std::size_t(height); ++p) {
+        const float* in = &rgba[p * 4];
+        std::uint8_t* out = &f.image.rgba[p * 4];
+        bool finite = std::isfinite(in[0]) && std::isfinite(in[1]) && std::isfinite(in[2]);
+        if (!finite) ++f.nonFinite;
+        for (int c = 0; c < 3; ++c)
+            out[c] = finite ? std::uint8_t(std::lround(std::clamp(in[c], 0.0f, 1.0f) * 255.0f)) : std::uint8_t(c == 1 ? 0 : 255);
+        out[3] = 255;
+    }
+    return f;
+}
+
+Frame renderView(ViewRenderers& renderers, const CheckView& view) {
+    StageRenderer& r = renderers.forView(view);
+    r.render(cameraFor(view.pose, r.scene()), view.time, RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode});
+    return toFrame(r.target().readFloats(), r.target().width(), r.target().height());
+}
+
+Scene stageScene(const StageInfo& stage) { return loadScene(projectRoot() / "assets" / "scenes" / stage.scene); }
+
+std::string relativeTo(const fs::path& p, const fs::path& base) { return p.lexically_relative(base).generic_string(); }
+
+} // namespace
+
+double imageCredit(double badShare, bool passed) {
+    if (passed) return 1.0;
+    return 0.5 * std::clamp(1.0 - badShare / kZeroCreditShare, 0.0, 1.0);
+}
+
+void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::path& outDir) {
+    const fs::path dir = outDir / "reference" / stage.id;
+    fs::create_directories(dir);
+    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth, kGradeHeight, PixelFormat::Rgba32F);
+    for (const CheckView& view : gradingViews(stage, seed)) writePngAtomic(renderView(renderers, view).image, dir / (view.name + ".png"));
+}
+
+StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student, const fs::path& outDir, unsigned seed) {
+    StageResult result;
+    result.stage = stage.id;
+    result.status = "graded";
+    const fs::path refDir = outDir / "reference" / stage.id;
+    const fs::path imageDir = outDir / student / stage.id;
+    fs::create_directories(imageDir);
+    StageSources sources = labSources(stage, labRoot);
+    const std::vector<CheckView> views = gradingViews(stage, seed);
+    const auto functions = functionSpecsFor(stage);
+    const double imagePoints = functions.empty() ? 100.0 : kImagePoints;
+
+    try {
+        ViewRenderers renderers(stage, sources, stageScene(stage), "", kGradeWidth, kGradeHeight, PixelFormat::Rgba32F);
+        const CompareTolerance tolerance;
+        for (const CheckView& view : views) {
+            CheckResult check;
+            check.name = view.name;
+            check.kind = "image";
+            check.maxScore = imagePoints / double(views.size());
+            Frame mine = renderView(renderers, view);
+            Image expected = loadPng(refDir / (view.name + ".png"));
+            ImageDiff diff = compareImages(mine.image, expected, tolerance.channel);
+            check.passed = imagesAgree(diff, tolerance) && mine.nonFinite == 0;
+            check.score = mine.nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
+            check.output = describe(diff);
+            if (mine.nonFinite) check.output = std::to_string(mine.nonFinite) + " pixels are NaN or Inf (shown magenta); " + check.output;
+            std::string hint = check.passed ? "" : diagnose(mine.image, expected, tolerance.channel);
+            if (!hint.empty()) check.output += "; " + hint;
+            writePngAtomic(mine.image, imageDir / (view.name + ".png"));
+            writePngAtomic(diffHeatMap(mine.image, expected), imageDir / (view.name + "-diff.png"));
+            check.studentImage = relativeTo(imageDir / (view.name + ".png"), outDir);
+            check.referenceImage = relativeTo(refDir / (view.name + ".png"), outDir);
+            check.diffImage = relativeTo(imageDir / (view.name + "-diff.png"), outDir);
+            result.checks.push_back(check);
+        }
+    } catch (const ShaderError& e) {
+        result.status = "compile error";
+        result.message = e.log().empty() ? e.what() : e.log();
+        result.checks.clear();
+        result.score = 0;
+        return result;
+    }
+
+    for (const FunctionSpec* spec : functions) {
+        FunctionOutcome f = runFunctionCheck(*spec, stage, sources);
+        CheckResult check;
+        check.name = f.name;
+        check.kind = "function";
+        check.maxScore = kFunctionPoints / double(functions.size());
+        check.passed = f.passed == f.total;
+        check.score = f.total ? check.maxScore * double(f.passed) / double(f.total) : 0.0;
+        check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
+                       (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure);
+        result.checks.push_back(check);
+    }
+    for (const CheckResult& c : result.checks) result.score += c.score;
+    result.score = std::round(result.score * 100.0) / 100.0;
+    return result;
+}
+
+std::string stageResultToJson(const StageResult& r) {
+    nlohmann::json j = {{"stage", r.stage}, {"status", r.status}, {"message", r.message}, {"score", r.score},
+                        {"max_score", r.maxScore}, {"seconds", r.seconds}, {"checks", nlohmann::json::array()}};
+    for (const CheckResult& c : r.checks)
+        j["checks"].push_back({{"name", c.name}, {"kind", c.kind}, {"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
+                               {"output", c.output}, {"student_image", c.studentImage}, {"reference_image", c.referenceImage},
+                               {"diff_image", c.diffImage}});
+    return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+StageResult stageResultFromJson(const std::string& text) {
+    try {
+        nlohmann::json j = nlohmann::json::parse(text);
+        StageResult r;
+        r.stage = j.at("stage").get<std::string>();
+        r.status = j.at("status").get<std::string>();
+        r.message = j.at("message").get<std::string>();
+        r.score = j.at("score").get<double>();
+        r.maxScore = j.at("max_score").get<double>();
+        r.seconds = j.at("seconds").get<double>();
+        for (const auto& c : j.at("checks")) {
+            CheckResult k;
+            k.name = c.at("name").get<std::string>();
+            k.kind = c.at("kind").get<std::string>();
+            k.score = c.at("score").get<double>();
+            k.maxScore = c.at("max_score").get<double>();
+            k.passed = c.at("passed").get<bool>();
+            k.output = c.at("output").get<std::string>();
+            k.studentImage = c.at("student_image").get<std::string>();
+            k.referenceImage = c.at("reference_image").get<std::string>();
+            k.diffImage = c.at("diff_image").get<std::string>();
+            r.checks.push_back(k);
+        }
+        return r;
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(std::string("malformed grading result: ") + e.what());
+    }
+}
+
+} // namespace raylab

@@ -1,0 +1,42 @@
+#pragma once
+// Grading one stage of one submission, inside the child process that
+// `raylab grade` starts for it (cmd_grade_item.cpp). Also renders the
+// solution's images that every submission is compared with.
+//
+// Points (documented for students in labs/README.md, "How you are graded"):
+//   - a stage is worth 100 points: 70 for the image checks and 30 for the
+//     function checks, shared equally (100 for images where a stage has no
+//     function checks);
+//   - an image check that passes (at most 0.5% of pixels differ, the metric
+//     of `raylab check`) earns its points; one that fails earns half of them
+//     scaled down linearly to nothing at 10% of pixels differing; a view with
+//     NaN or Inf pixels earns nothing;
+//   - a function check earns the share of its cases that agree.
+#include "grade_result.h"
+#include "stage_catalog.h"
+
+#include <filesystem>
+
+namespace raylab {
+
+inline constexpr int kGradeWidth = 160;
+inline constexpr int kGradeHeight = 120;
+
+// OUT/reference/<stage>/<view>.png for every grading view (solution, float
+// target converted to 8 bits exactly as for submissions).
+void renderGradingReferences(const StageInfo& stage, unsigned seed, const std::filesystem::path& outDir);
+
+// Grades LABROOT/<stage>/ against OUT/reference/<stage>/; writes the
+// student's images and diff heat maps to OUT/<student>/<stage>/. A compile
+// error gives status "compile error" with the log mapped to file:line.
+StageResult gradeStage(const StageInfo& stage, const std::filesystem::path& labRoot, const std::string& student,
+                       const std::filesystem::path& outDir, unsigned seed);
+
+// The credit (0..1) of an image check with this share of differing pixels.
+double imageCredit(double badShare, bool passed);
+
+// StageResult <-> JSON, for the child to hand its result to the parent.
+std::string stageResultToJson(const StageResult& result);
+StageResult stageResultFromJson(const std::string& text);  // throws Error on malformed input
+
+} // namespace raylab

@@ -1,0 +1,17 @@
+#pragma once
+// The views a stage is graded from: its check views (the ones students run
+// with `raylab check`) plus a few drawn from a seed the instructor can keep
+// secret, so that a submission cannot be tuned to a fixed set of images.
+#include "stage_catalog.h"
+
+#include <vector>
+
+namespace raylab {
+
+inline constexpr int kSeededViewsPerStage = 3;
+
+// Same seed, same views, on every machine (no std:: distributions, whose
+// results differ between standard libraries).
+std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed);
+
+} // namespace raylab

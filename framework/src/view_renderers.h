@@ -1,0 +1,31 @@
+#pragma once
+// One StageRenderer per scene the views of a stage use (most views use the
+// stage's scene; stage 08's also use pro.json), built when first needed.
+#include "stage_renderer.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace raylab {
+
+class ViewRenderers {
+public:
+    // sceneOverride: a scene file for every view (--scene), or empty.
+    ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene, std::string sceneOverride, int width, int height,
+                  PixelFormat format = PixelFormat::Rgba8);
+
+    // Throws what StageRenderer throws (a bad scene, a shader error).
+    StageRenderer& forView(const CheckView& view);
+
+private:
+    const StageInfo& stage_;
+    StageSources sources_;
+    Scene defaultScene_;
+    std::string sceneOverride_;
+    int width_, height_;
+    PixelFormat format_;
+    std::map<std::string, std::unique_ptr<StageRenderer>> byScene_;
+};
+
+} // namespace raylab

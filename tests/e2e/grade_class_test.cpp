@@ -1,0 +1,107 @@
+// `raylab grade` on a class of 30 generated submissions (raylab-classgen):
+// pristine solutions, untouched labs, partial submissions, every known
+// mistake and every broken submission of tests/grading/broken/. The scores
+// must match what classgen expects: pristine 100% everywhere, every mistake
+// loses points on its own stage and nowhere else, each broken submission is
+// reported with its status while grading goes on, and nobody's score depends
+// on anybody else's. The wall time is printed (a benchmark figure, not
+// asserted: see the README's grading section).
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <regex>
+
+using namespace raylab::test;
+using nlohmann::json;
+
+namespace {
+
+#ifndef RAYLAB_CLASSGEN_EXE
+#error RAYLAB_CLASSGEN_EXE must be defined by CMake
+#endif
+
+bool statusMatches(const std::string& status, const std::string& alternatives) {
+    std::size_t start = 0;
+    while (true) {
+        std::size_t bar = alternatives.find('|', start);
+        if (alternatives.substr(start, bar - start) == status) return true;
+        if (bar == std::string::npos) return false;
+        start = bar + 1;
+    }
+}
+
+} // namespace
+
+TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
+    ScratchDir dir;
+    CommandResult gen = runCommand(quote(RAYLAB_CLASSGEN_EXE) + " " + quote(dir.path().string()));
+    ASSERT_EQ(gen.exitCode, 0) << gen.all();
+    const json expected = json::parse(readFile(dir / "expected.json"));
+    ASSERT_EQ(expected.size(), 30u);
+
+    auto start = std::chrono::steady_clock::now();
+    CommandResult r = runRaylab("grade --submissions " + quote((dir / "submissions").string()) + " --out " + quote((dir / "out").string()) +
+                                " --jobs 2 --timeout 20 --seed 7");
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("[ figure   ] 30 students x 8 stages graded in %.1f s with --jobs 2\n", seconds);
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+
+    int checked = 0;
+    for (const auto& [student, stages] : expected.items()) {
+        SCOPED_TRACE(student);
+        const fs::path resultsFile = dir / "out" / student / "results.json";
+        ASSERT_TRUE(fs::exists(resultsFile));
+        for (const auto& [stage, want] : stages.items()) {
+            if (stage == "_mistakes") continue;
+            SCOPED_TRACE(stage);
+            const fs::path stageResult = dir / "out" / student / stage / "result.json";
+            const std::string w = want;
+            if (w == "not submitted") {
+                EXPECT_FALSE(fs::exists(stageResult));
+                EXPECT_NE(readFile(dir / "out" / "summary.csv").find(stage + ": not submitted"), std::string::npos);
+                ++checked;
+                continue;
+            }
+            // A child that died leaves no result.json: its status is in the Gradescope file.
+            json gs = json::parse(readFile(resultsFile));
+            double stageScore = 0, stageMax = 0;
+            std::string notGraded;
+            for (const auto& t : gs["tests"]) {
+                std::string name = t["name"];
+                if (name.rfind(stage + " / ", 0) == 0) {
+                    stageScore += t["score"].get<double>();
+                    stageMax += t["max_score"].get<double>();
+                } else if (name.rfind(stage + ": ", 0) == 0) {
+                    notGraded = name.substr(stage.size() + 2);
+                    stageMax += t["max_score"].get<double>();
+                }
+            }
+            EXPECT_NEAR(stageMax, 100.0, 0.05);
+            if (w == "100") {
+                EXPECT_TRUE(notGraded.empty()) << notGraded;
+                EXPECT_NEAR(stageScore, 100.0, 0.05);
+            } else if (w == "<100") {
+                EXPECT_TRUE(notGraded.empty()) << notGraded;
+                EXPECT_LT(stageScore, 99.5) << "a mistake or an unfinished lab must lose points";
+            } else {
+                ASSERT_EQ(w.rfind("status:", 0), 0u) << w;
+                EXPECT_TRUE(statusMatches(notGraded, w.substr(7))) << "status '" << notGraded << "', expected " << w;
+                EXPECT_EQ(stageScore, 0.0);
+            }
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 30 * 8);
+
+    // The broken submissions are explained in the report.
+    const std::string html = readFile(dir / "out" / "report.html");
+    EXPECT_NE(html.find("intersect_sphere.glsl:"), std::string::npos) << "the compile error names the student's file";
+    EXPECT_NE(html.find("timed out"), std::string::npos);
+    EXPECT_NE(html.find("NaN or Inf"), std::string::npos);
+    EXPECT_NE(html.find("is not allowed"), std::string::npos);
+    for (const char* file : {"summary.csv", "junit.xml", "report.html"}) EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
+}

@@ -1,0 +1,144 @@
+// raylab-classgen: writes a class of 30 submissions, each a copy of labs/,
+// and what grading them must give. For instructors trying `raylab grade`
+// and for its test (tests/e2e/grade_class_test.cpp).
+//
+//   raylab-classgen OUTDIR    -> OUTDIR/submissions/<student>/, OUTDIR/expected.json
+//
+// The class: 4 pristine solutions, 3 untouched labs, one that submitted
+// stages 01-03 only, one that did 01-04, the broken submissions of
+// tests/grading/broken/ (each on top of a solution), and 16 students
+// sharing every mistake of tests/mistakes/ (at most one per stage each).
+// expected.json: {student: {stage: "100" | "<100" | "not submitted" | "status:A|B"}}.
+#include "error.h"
+#include "paths.h"
+#include "stage_catalog.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+using namespace raylab;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Change {
+    std::string stage, file;
+    json replace;
+    std::string source;  // the JSON file it came from
+};
+
+void apply(const fs::path& labRoot, const Change& c) {
+    const fs::path file = labRoot / c.stage / c.file;
+    std::string text = readTextFile(file);
+    for (const auto& pair : c.replace) {
+        const std::string from = pair[0], to = pair[1];
+        auto at = text.find(from);
+        if (at == std::string::npos) throw Error(c.source + ": text not found in " + displayPath(file) + ": " + from);
+        text.replace(at, from.size(), to);
+    }
+    std::ofstream(file) << text;
+}
+
+std::vector<std::pair<fs::path, json>> specs(const fs::path& dir) {
+    std::vector<std::pair<fs::path, json>> out;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.path().extension() == ".json") out.emplace_back(e.path(), json::parse(readTextFile(e.path())));
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    return out;
+}
+
+void copyTree(const fs::path& from, const fs::path& to) { fs::copy(from, to, fs::copy_options::recursive); }
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        if (argc != 2) throw Error("usage: raylab-classgen OUTDIR");
+        const fs::path out = argv[1];
+        const fs::path subs = out / "submissions";
+        if (fs::exists(subs)) throw Error(subs.string() + " exists already");
+        fs::create_directories(subs);
+        const fs::path exeDir = fs::read_symlink("/proc/self/exe").parent_path();
+        const fs::path solved = out / "solved";
+        fs::remove_all(solved);
+        std::string cmd = "'" + (exeDir / "raylab-labgen").string() + "' --solved '" + solved.string() + "' > /dev/null";
+        if (std::system(cmd.c_str()) != 0) throw Error("raylab-labgen --solved failed");
+
+        std::vector<std::string> stages;
+        for (const StageInfo& s : allStages())
+            if (s.available()) stages.push_back(s.id);
+        json expected;
+        auto expectAll = [&](const std::string& student, const std::string& value) {
+            for (const std::string& s : stages) expected[student][s] = value;
+        };
+        auto solvedStudent = [&](const std::string& name) {
+            copyTree(solved, subs / name);
+            expectAll(name, "100");
+        };
+
+        for (int i = 1; i <= 4; ++i) solvedStudent("pristine-" + std::to_string(i));
+        for (int i = 1; i <= 3; ++i) {
+            std::string name = "untouched-" + std::to_string(i);
+            copyTree(projectRoot() / "labs", subs / name);
+            expectAll(name, "<100");
+        }
+        solvedStudent("submitted-01-03-only");
+        for (const std::string& s : stages)
+            if (s.substr(0, 2) > "03") {
+                fs::remove_all(subs / "submitted-01-03-only" / s);
+                expected["submitted-01-03-only"][s] = "not submitted";
+            }
+        solvedStudent("finished-01-04");
+        for (const std::string& s : stages)
+            if (s.substr(0, 2) > "04") {
+                fs::remove_all(subs / "finished-01-04" / s);
+                copyTree(projectRoot() / "labs" / s, subs / "finished-01-04" / s);
+                expected["finished-01-04"][s] = "<100";
+            }
+
+        for (const auto& [file, spec] : specs(projectRoot() / "tests" / "grading" / "broken")) {
+            std::string name = "broken-" + file.stem().string();
+            solvedStudent(name);
+            apply(subs / name, {spec["stage"], spec["file"], spec["replace"], displayPath(file)});
+            std::string status = spec["expect_status"];
+            expected[name][spec["stage"].get<std::string>()] = status == "graded" ? "<100" : "status:" + status;
+        }
+
+        // Mistakes: 16 students, each mistake once, never two in one stage of a student.
+        const int mistakeStudents = 30 - int(expected.size());
+        std::vector<std::vector<Change>> assigned(std::size_t(std::max(mistakeStudents, 1)));
+        for (const auto& [file, spec] : specs(projectRoot() / "tests" / "mistakes")) {
+            Change c{spec["stage"], spec["file"], spec["replace"], displayPath(file)};
+            std::size_t best = assigned.size();
+            for (std::size_t k = 0; k < assigned.size(); ++k) {
+                bool stageFree = std::none_of(assigned[k].begin(), assigned[k].end(), [&](const Change& x) { return x.stage == c.stage; });
+                if (stageFree && (best == assigned.size() || assigned[k].size() < assigned[best].size())) best = k;
+            }
+            if (best == assigned.size()) throw Error("too many mistakes in stage " + c.stage + " for " + std::to_string(assigned.size()) + " students");
+            assigned[best].push_back(c);
+        }
+        for (std::size_t k = 0; k < assigned.size(); ++k) {
+            char name[32];
+            std::snprintf(name, sizeof name, "mistakes-%02zu", k + 1);
+            solvedStudent(name);
+            for (const Change& c : assigned[k]) {
+                apply(subs / name, c);
+                expected[name][c.stage] = "<100";
+                expected[name]["_mistakes"].push_back(c.source);
+            }
+        }
+        fs::remove_all(solved);
+        std::ofstream(out / "expected.json") << expected.dump(1) << "\n";
+        std::printf("raylab-classgen: %zu submissions in %s, expectations in %s\n", expected.size(), subs.c_str(),
+                    (out / "expected.json").c_str());
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "raylab-classgen: error: %s\n", e.what());
+        return 2;
+    }
+}

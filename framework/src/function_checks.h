@@ -49,4 +49,12 @@ struct FunctionOutcome {
 // current GL context.
 FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources);
 
+// The raw harness output: one vec4 per case (w = kHarnessTodoMarker when the
+// call reached a labTodo() stub). EXTRADEFINES are added to the stage's
+// (e.g. "TORUS_SOLVER_CLOSED_FORM" for the numerics tests). Throws Error or
+// ShaderError when the harness does not compile.
+inline constexpr float kHarnessTodoMarker = -12345.0f;
+std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources,
+                                  const std::vector<std::string>& extraDefines = {});
+
 } // namespace raylab

@@ -5,6 +5,32 @@
 // Along a ray o + t d (|d| = 1) that is a quartic in t: up to four hits.
 #include "solve_quartic.glsl"
 
+// Distance from p to the torus surface (negative inside the tube).
+float torusDistance(vec3 p, float R, float r)
+{
+    return length(vec2(length(p.xy) - R, p.z)) - r;
+}
+
+// Two Newton steps on the torus's distance function along the ray: unlike
+// the quartic, the distance is computed without cancellation, so the root
+// lands within a few float steps of the true hit. Skipped where the ray
+// grazes the surface (the step would overshoot).
+float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
+{
+    for (int step = 0; step < 2; ++step) {
+        vec3 p = o + t * d;
+        float ring = length(p.xy);
+        vec2 q = vec2(ring - R, p.z);
+        float len = length(q);
+        if (ring < 1e-12 || len < 1e-12) break;
+        vec3 gradient = vec3(p.xy * (q.x / (ring * len)), q.y / len);  // unit normal
+        float slope = dot(gradient, d);
+        if (abs(slope) < 0.05) break;
+        t -= (len - r) / slope;
+    }
+    return t;
+}
+
 // The nearest t > T_MIN where the ray (in the torus frame) meets the torus,
 // or NO_HIT. (Provided.)
 float intersectTorusLocal(Ray ray, float R, float r)
@@ -12,14 +38,25 @@ float intersectTorusLocal(Ray ray, float R, float r)
     // Float precision: the quartic's coefficients grow with the fourth power
     // of the distance to the torus, and the roots drown in rounding error a
     // few radii away (the seed thesis saw exactly this). So first jump to
-    // where the ray enters the torus's bounding sphere and solve from there.
-    float bound = R + r;
+    // where the ray enters the torus's bounding sphere and solve from there
+    // (compiling with TORUS_SOLVER_CLOSED_FORM defined skips this and the
+    // Newton steps, for the numerics tests' comparison).
+    // A little larger than the torus: on its outer equator the torus touches
+    // the sphere R + r, and an entry point rounded inward would start inside.
+    float bound = 1.01 * (R + r);
     float b = dot(ray.origin, ray.dir);
-    float c = dot(ray.origin, ray.origin) - bound * bound;
-    float h = b * b - c;
+    // h = bound^2 - (distance from the centre to the ray's line)^2. Not as
+    // b*b - (|o|^2 - bound^2): far away both terms are about |o|^2 and
+    // their difference drowns in rounding.
+    vec3 closest = ray.origin - b * ray.dir;
+    float h = bound * bound - dot(closest, closest);
     if (h < 0.0) return NO_HIT;          // misses the bounding sphere
-    float tEnter = max(-b - sqrt(h), 0.0);
     if (-b + sqrt(h) <= T_MIN) return NO_HIT;  // the sphere is behind the ray
+#ifdef TORUS_SOLVER_CLOSED_FORM
+    float tEnter = 0.0;  // the seed's way, kept for comparison: solved from the ray origin itself
+#else
+    float tEnter = max(-b - sqrt(h), 0.0);
+#endif
     vec3 o = ray.origin + tEnter * ray.dir;
     vec3 d = ray.dir;
 
@@ -33,12 +70,35 @@ float intersectTorusLocal(Ray ray, float R, float r)
                              k * k - R4 * (o.x * o.x + o.y * o.y));
     vec4 roots;
     int count = solveQuartic(coefficients, roots);
+#ifdef TORUS_SOLVER_CLOSED_FORM
     float best = T_FAR;
+    for (int i = 0; i < count; ++i)
+        if (tEnter + roots[i] > T_MIN && roots[i] < best) best = roots[i];
+    return best < T_FAR ? tEnter + best : NO_HIT;
+#else
+    // Nearest first; each root polished and kept only if the point really
+    // lies on the surface (near a double root, rounding can invent a root
+    // or lose one).
+    for (int i = 0; i < count; ++i)
+        for (int j = i + 1; j < count; ++j)
+            if (roots[j] < roots[i]) { float x = roots[i]; roots[i] = roots[j]; roots[j] = x; }
     for (int i = 0; i < count; ++i) {
-        float t = tEnter + roots[i];
-        if (t > T_MIN && t < best) best = t;
+        if (tEnter + roots[i] <= T_MIN) continue;
+        float t = polishTorusHit(o, d, roots[i], R, r);
+        if (abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
     }
-    return best < T_FAR ? best : NO_HIT;
+    // No root survived: march the distance function through the bounding
+    // sphere (rays close to tangent, where a lost root hides).
+    float t = max(T_MIN - tEnter, 0.0);
+    float tExit = -b + sqrt(h) - tEnter;
+    if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: leave it to the solver
+    for (int step = 0; step < 96 && t < tExit; ++step) {
+        float dist = torusDistance(o + t * d, R, r);
+        if (dist < 1e-4 * r) return tEnter + polishTorusHit(o, d, t, R, r);
+        t += dist;
+    }
+    return NO_HIT;
+#endif
 }
 
 // The unit outward normal of the torus at a surface point p (torus frame).

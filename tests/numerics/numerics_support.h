@@ -1,0 +1,27 @@
+#pragma once
+// Shared by the numerics tests: a headless GL context for the whole test
+// program, and error statistics in float ulps.
+#include "function_checks.h"
+#include "gl_context.h"
+#include "stage_sources.h"
+
+#include <memory>
+#include <vector>
+
+namespace raylab::numerics {
+
+// Created on first use, kept for the whole run.
+void ensureGlContext();
+
+// Spacing of float32 numbers at |x|: the smallest error float can show there.
+double floatUlp(double x);
+
+// The p-th percentile (0..100) of VALUES (sorted copy); 0 for none.
+double percentile(std::vector<double> values, double p);
+
+// Runs SPEC's cases through stage ID's solution with EXTRADEFINES.
+std::vector<glm::vec4> runSolution(const FunctionSpec& spec, const std::string& stageId, const std::vector<std::string>& extraDefines = {});
+
+inline float f32(double x) { return float(x); }
+
+} // namespace raylab::numerics

@@ -3,6 +3,7 @@
 #include "error.h"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -38,6 +39,8 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
         // started), its output to the log, its memory capped. Only
         // async-signal-safe calls until exec.
         setpgid(0, 0);
+        prctl(PR_SET_PDEATHSIG, SIGKILL);  // the grader died: so does the job
+        if (getppid() == 1) _exit(126);     // it died before the line above
         int fd = open(logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
         if (fd >= 0) {
             dup2(fd, 1);
@@ -45,7 +48,10 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
             close(fd);
         }
         int devNull = open("/dev/null", O_RDONLY);
-        if (devNull >= 0) dup2(devNull, 0);
+        if (devNull >= 0) {
+            dup2(devNull, 0);
+            close(devNull);
+        }
         if (limits.memoryMb > 0) {
             rlimit lim{rlim_t(limits.memoryMb) * 1024 * 1024, rlim_t(limits.memoryMb) * 1024 * 1024};
             setrlimit(RLIMIT_AS, &lim);
@@ -60,19 +66,24 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
 
 bool Child::poll() {
     if (done_) return true;
-    int status = 0;
-    pid_t r = waitpid(pid_, &status, WNOHANG);
-    if (r == pid_) {
+    // See whether it ended without reaping it yet: while the leader is not
+    // reaped, its process-group id cannot be reused, so killing the group
+    // (whatever it left behind) cannot hit a stranger.
+    siginfo_t info{};
+    if (waitid(P_PID, id_t(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_) {
+        kill(-pid_, SIGKILL);
+        int status = 0;
+        waitpid(pid_, &status, 0);
         done_ = true;
         outcome_.seconds = now() - startSeconds_;
         if (WIFEXITED(status)) outcome_.exitCode = WEXITSTATUS(status);
         if (WIFSIGNALED(status)) outcome_.signal = WTERMSIG(status);
-        kill(-pid_, SIGKILL);  // anything it left behind in its group
         return true;
     }
     if (now() - startSeconds_ > limits_.timeoutSeconds) {
         outcome_.timedOut = true;
         kill(-pid_, SIGKILL);
+        int status = 0;
         waitpid(pid_, &status, 0);
         outcome_.signal = SIGKILL;
         outcome_.seconds = now() - startSeconds_;

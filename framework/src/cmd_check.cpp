@@ -24,9 +24,14 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
 
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
-    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h);
+    // Float targets, read as grading reads them: a NaN is seen, not turned black.
+    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h, PixelFormat::Rgba32F);
     std::unique_ptr<ViewRenderers> references;
-    if (against.empty()) references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h);
+    if (against.empty())
+        references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h, PixelFormat::Rgba32F);
+    auto readFrame = [](const StageRenderer& r, long* nonFinite) {
+        return imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), nonFinite);
+    };
     reportOpenTodos(students.forView(stage.checkViews.front()).openTodos());  // a compile error stops here, before any output
 
     const CompareTolerance tolerance;
@@ -42,20 +47,22 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         Camera camera = cameraFor(view.pose, student.scene());
         const RenderSettings settings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
         student.render(camera, view.time, settings);
-        Image mine = student.read();
+        long nonFinite = 0;
+        Image mine = readFrame(student, &nonFinite);
         Image expected;
         if (references) {
             StageRenderer& reference = references->forView(view);
             reference.render(camera, view.time, settings);
-            expected = reference.read();
+            expected = readFrame(reference, nullptr);
         } else {
             expected = loadPng(against / (view.name + ".png"));
         }
         if (!check.saveDir.empty()) writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
         ImageDiff diff = compareImages(mine, expected, tolerance.channel);
-        bool ok = imagesAgree(diff, tolerance);
+        bool ok = imagesAgree(diff, tolerance) && nonFinite == 0;
         passed += ok;
-        std::printf("  %s %-14s %s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str());
+        std::printf("  %s %-14s %s%s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str(),
+                    nonFinite ? ("; " + std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta)").c_str() : "");
         if (!ok) {
             std::printf("       this view checks: %s\n", view.why.c_str());
             std::string hint = diagnose(mine, expected, tolerance.channel);

@@ -13,6 +13,9 @@
 
 #include <unistd.h>
 
+#include <csignal>
+#include <functional>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,16 +53,47 @@ std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
     return stages;
 }
 
+// The student folders, sorted. Symbolic links are skipped (a link could lead
+// anywhere, also to the solution) and said so.
 std::vector<std::string> studentFolders(const fs::path& submissions) {
     std::error_code ec;
     if (!fs::is_directory(submissions, ec)) throw Error("--submissions '" + submissions.string() + "': no such folder");
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(submissions, ec))
-        if (e.is_directory() && e.path().filename().string()[0] != '.') names.push_back(e.path().filename().string());
+    for (fs::directory_iterator it(submissions, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        fs::file_type type = it->symlink_status(ec).type();
+        if (name.empty() || name[0] == '.') continue;
+        if (type == fs::file_type::symlink) {
+            std::fprintf(stderr, "raylab grade: skipping %s: a symbolic link, not a folder\n", name.c_str());
+            continue;
+        }
+        if (type == fs::file_type::directory) names.push_back(name);
+    }
+    if (ec) throw Error("--submissions '" + submissions.string() + "': " + ec.message());
     if (names.empty()) throw Error("--submissions '" + submissions.string() + "': no student folders in it");
     std::sort(names.begin(), names.end());
     return names;
 }
+
+// --out must not be --submissions or lie inside it (grading deletes and
+// rewrites its own folders in --out), nor the other way round.
+void checkFoldersApart(const fs::path& submissions, const fs::path& out) {
+    std::error_code ec;
+    fs::path a = fs::weakly_canonical(submissions, ec), b = fs::weakly_canonical(out, ec);
+    auto within = [](const fs::path& inner, const fs::path& outer) {
+        return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
+    };
+    if (within(b, a) || within(a, b)) throw Error("--out '" + out.string() + "' and --submissions must be separate folders");
+}
+
+// A stage folder that is a real folder (not a link).
+bool stageFolderExists(const fs::path& dir) {
+    std::error_code ec;
+    return fs::symlink_status(dir, ec).type() == fs::file_type::directory;
+}
+
+volatile std::sig_atomic_t gInterrupted = 0;
+extern "C" void onInterrupt(int) { gInterrupted = 1; }
 
 std::string lastLines(const fs::path& log, int count) {
     std::ifstream in(log);
@@ -99,17 +133,23 @@ StageResult failedItem(const StageInfo& stage, const ChildOutcome& o, const fs::
     return r;
 }
 
+// On a terminal: a bar and the item now under work; in a log: a line per
+// finished item.
 class Progress {
 public:
     explicit Progress(std::size_t total) : total_(total), tty_(isatty(2)) {}
+    void working(const std::string& student, const std::string& stage) {
+        if (!tty_) return;
+        const int width = 30;
+        int filled = int(double(width) * double(finished_) / double(std::max<std::size_t>(total_, 1)));
+        std::fprintf(stderr, "\r[%s%s] %zu/%zu  grading %-20.20s %-14s", std::string(std::size_t(filled), '#').c_str(),
+                     std::string(std::size_t(width - filled), '.').c_str(), finished_, total_, student.c_str(), stage.c_str());
+        std::fflush(stderr);
+    }
     void done(const std::string& student, const StageResult& r) {
         ++finished_;
         if (tty_) {
-            const int width = 30;
-            int filled = int(double(width) * double(finished_) / double(std::max<std::size_t>(total_, 1)));
-            std::fprintf(stderr, "\r[%s%s] %zu/%zu  %-20.20s %-14s %s", std::string(std::size_t(filled), '#').c_str(),
-                         std::string(std::size_t(width - filled), '.').c_str(), finished_, total_, student.c_str(), r.stage.c_str(),
-                         finished_ == total_ ? "\n" : "");
+            if (finished_ == total_) std::fprintf(stderr, "\r%-90s\r", "");
         } else {
             std::fprintf(stderr, "  [%zu/%zu] %s %s: %s\n", finished_, total_, student.c_str(), r.stage.c_str(),
                          r.status == "graded" ? (std::to_string(int(std::lround(r.score))) + "/100").c_str() : r.status.c_str());
@@ -156,15 +196,28 @@ int cmdGrade(const GradeOptions& g) {
     const fs::path submissions = g.submissions;
     const std::vector<std::string> students = studentFolders(submissions);
     const fs::path out = g.outDir;
+    checkFoldersApart(submissions, out);
     std::error_code ec;
+    // Only what grading writes is cleared: no stale result of an earlier run
+    // may be mixed into this one.
+    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"}) fs::remove_all(out / own, ec);
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
     const std::string exe = selfExecutable().string();
     const std::string seed = std::to_string(g.seed);
     const auto start = std::chrono::steady_clock::now();
+    // Ctrl-C or a kill: stop the children (their own process groups do not
+    // get the terminal's signal) and leave no report that looks complete.
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+    auto interrupted = [&] {
+        if (!gInterrupted) return false;
+        std::fprintf(stderr, "\nraylab grade: interrupted; no report was written (the folder holds partial results only)\n");
+        return true;
+    };
 
-    std::printf("raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB, seed %u\n", students.size(), stages.size(),
-                g.jobs, g.timeoutSeconds, g.memoryMb, g.seed);
+    std::printf("raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB%s\n", students.size(), stages.size(), g.jobs,
+                g.timeoutSeconds, g.memoryMb, g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
     std::fflush(stdout);
 
     // 1. The solution's images for every stage (trusted code, but in children
@@ -174,6 +227,7 @@ int cmdGrade(const GradeOptions& g) {
         std::vector<std::pair<const StageInfo*, std::unique_ptr<Child>>> running;
         std::deque<const StageInfo*> queue(stages.begin(), stages.end());
         while (!queue.empty() || !running.empty()) {
+            if (interrupted()) return 130;
             while (!queue.empty() && int(running.size()) < g.jobs) {
                 const StageInfo* s = queue.front();
                 queue.pop_front();
@@ -203,63 +257,93 @@ int cmdGrade(const GradeOptions& g) {
     std::deque<Item> queue;
     for (std::size_t i = 0; i < students.size(); ++i) {
         result.students[i].name = students[i];
+        fs::create_directories(studentFolder(out, students[i]), ec);
         for (const StageInfo* s : stages) queue.push_back({i, s});
     }
     Progress progress(queue.size());
     const ChildLimits limits{g.timeoutSeconds, g.memoryMb};
-    std::vector<std::pair<Item, std::unique_ptr<Child>>> running;
-    while (!queue.empty() || !running.empty()) {
-        while (!queue.empty() && int(running.size()) < g.jobs) {
-            Item item = queue.front();
-            queue.pop_front();
-            const std::string& name = students[item.student];
-            if (!fs::is_directory(submissions / name / item.stage->id, ec)) {
-                StageResult r;
-                r.stage = item.stage->id;
-                r.status = "not submitted";
-                r.message = "no " + item.stage->id + "/ folder in the submission";
-                graded[{item.student, item.stage->id}] = r;
-                progress.done(name, r);
-                continue;
-            }
-            const fs::path itemDir = out / name / item.stage->id;
-            fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
-            fs::create_directories(itemDir, ec);
-            running.emplace_back(item, std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
-                                                                                        (submissions / name).string(), "--student", name,
-                                                                                        "--out", out.string(), "--seed", seed},
-                                                               itemDir / "log.txt", limits));
-        }
-        bool any = false;
-        for (auto it = running.begin(); it != running.end();) {
-            if (!it->second->poll()) { ++it; continue; }
-            any = true;
-            const Item& item = it->first;
-            const ChildOutcome& o = it->second->outcome();
-            const fs::path itemDir = out / students[item.student] / item.stage->id;
-            StageResult r;
-            bool haveResult = false;
-            if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
-                try {
-                    r = stageResultFromJson(readTextFile(itemDir / "result.json"));
-                    haveResult = true;
-                } catch (const Error&) {
+    // Runs QUEUE with up to JOBS children; FINISH gets each item's result.
+    auto runItems = [&](std::deque<Item> items, int jobs, const std::function<void(const Item&, StageResult)>& finish) {
+        std::vector<std::pair<Item, std::unique_ptr<Child>>> running;
+        while (!items.empty() || !running.empty()) {
+            if (interrupted()) return false;
+            while (!items.empty() && int(running.size()) < jobs) {
+                Item item = items.front();
+                items.pop_front();
+                const std::string& name = students[item.student];
+                const fs::path stageDir = submissions / name / item.stage->id;
+                if (!stageFolderExists(stageDir)) {
+                    StageResult r;
+                    r.stage = item.stage->id;
+                    r.status = fs::exists(stageDir, ec) ? "error" : "not submitted";
+                    r.message = r.status == "error" ? item.stage->id + "/ is not a folder (a symbolic link?)"
+                                                    : "no " + item.stage->id + "/ folder in the submission";
+                    finish(item, r);
+                    continue;
                 }
+                const fs::path itemDir = studentFolder(out, name) / item.stage->id;
+                fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
+                fs::create_directories(itemDir, ec);
+                progress.working(name, item.stage->id);
+                running.emplace_back(item, std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id,
+                                                                                            "--lab", (submissions / name).string(), "--student",
+                                                                                            name, "--out", out.string(), "--seed", seed},
+                                                                   itemDir / "log.txt", limits));
             }
-            if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
-            r.seconds = o.seconds;
-            graded[{item.student, item.stage->id}] = r;
-            progress.done(students[item.student], r);
-            it = running.erase(it);
+            bool any = false;
+            for (auto it = running.begin(); it != running.end();) {
+                if (!it->second->poll()) { ++it; continue; }
+                any = true;
+                const Item& item = it->first;
+                const ChildOutcome& o = it->second->outcome();
+                const fs::path itemDir = studentFolder(out, students[item.student]) / item.stage->id;
+                StageResult r;
+                bool haveResult = false;
+                if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
+                    try {
+                        r = stageResultFromJson(readTextFile(itemDir / "result.json"));
+                        haveResult = true;
+                    } catch (const Error&) {
+                    }
+                }
+                if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
+                r.seconds = o.seconds;
+                finish(item, r);
+                it = running.erase(it);
+            }
+            if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
-        if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        return true;
+    };
+    std::deque<Item> timedOut;
+    bool completed = runItems(queue, g.jobs, [&](const Item& item, StageResult r) {
+        if (r.status == "timed out") timedOut.push_back(item);
+        else progress.done(students[item.student], r);
+        graded[{item.student, item.stage->id}] = std::move(r);
+    });
+    // A wall-clock limit depends on the load: an item that timed out while
+    // others ran beside it gets a second run on its own before it scores 0.
+    if (completed && !timedOut.empty()) {
+        std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n", timedOut.size(),
+                     timedOut.size() == 1 ? "" : "s", timedOut.size() == 1 ? "it" : "them", timedOut.size() == 1 ? "its" : "their");
+        completed = runItems(timedOut, 1, [&](const Item& item, StageResult r) {
+            progress.done(students[item.student], r);
+            graded[{item.student, item.stage->id}] = std::move(r);
+        });
     }
+    if (!completed) return 130;
     for (std::size_t i = 0; i < students.size(); ++i)
         for (const StageInfo* s : stages) result.students[i].stages.push_back(graded[{i, s->id}]);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // 3. The reports.
-    for (const StudentResult& st : result.students) writeGradescopeResults(st, out / st.name / "results.json");
+    for (const StudentResult& st : result.students) {
+        try {
+            writeGradescopeResults(st, studentFolder(out, st.name) / "results.json");
+        } catch (const Error& e) {  // one student's file must not cost the class its report
+            std::fprintf(stderr, "raylab grade: %s\n", e.what());
+        }
+    }
     writeSummaryCsv(result, out / "summary.csv");
     writeJunitXml(result, out / "junit.xml");
     writeHtmlReport(result, out);

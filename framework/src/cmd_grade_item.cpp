@@ -24,7 +24,7 @@ int cmdGradeReference(const std::string& stageId, const std::string& outDir, uns
 int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const std::string& student, const std::string& outDir,
                  unsigned seed) {
     const StageInfo& stage = findStage(stageId);
-    const std::filesystem::path resultFile = std::filesystem::path(outDir) / student / stage.id / "result.json";
+    const std::filesystem::path resultFile = studentFolder(outDir, student) / stage.id / "result.json";
     try {
         auto context = createHeadlessContext(Backend::Auto);
         StageResult result = gradeStage(stage, labRoot, student, outDir, seed);

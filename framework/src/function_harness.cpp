@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include <atomic>
+#include <cstdlib>
 #include <fstream>
 
 namespace raylab {
@@ -42,13 +42,14 @@ std::string harnessSource(const FunctionSpec& spec) {
     return text;
 }
 
-// A folder of its own for the generated harness file, removed afterwards.
+// A fresh private folder for the generated harness file (mkdtemp: nobody
+// can plant a file or link there first), removed afterwards.
 struct HarnessDir {
     fs::path path;
     HarnessDir() {
-        static std::atomic<int> counter{0};
-        path = fs::temp_directory_path() / ("raylab-harness-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-        fs::create_directories(path);
+        std::string pattern = (fs::temp_directory_path() / "raylab-harness-XXXXXX").string();
+        if (!mkdtemp(pattern.data())) throw Error("cannot create a temporary folder for the function-check harness");
+        path = pattern;
     }
     ~HarnessDir() {
         std::error_code ec;
@@ -88,6 +89,7 @@ std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& sta
     {
         std::ofstream f(dir.path / "harness.frag");
         f << harnessSource(spec);
+        if (!f.flush()) throw Error("cannot write the function-check harness to " + dir.path.string());
     }
     std::vector<fs::path> search = {dir.path};
     search.insert(search.end(), sources.search.begin(), sources.search.end());

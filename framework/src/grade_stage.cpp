@@ -28,25 +28,12 @@ struct Frame {
     long nonFinite = 0;  // NaN or Inf pixels (shown magenta in the image)
 };
 
-// Float pixels to 8 bits: clamp, scale, round - the same for reference and submission.
-Frame toFrame(const std::vector<float>& rgba, int width, int height) {
-    Frame f{Image(width, height)};
-    for (std::size_t p = 0; p < std::size_t(width) * std::size_t(height); ++p) {
-        const float* in = &rgba[p * 4];
-        std::uint8_t* out = &f.image.rgba[p * 4];
-        bool finite = std::isfinite(in[0]) && std::isfinite(in[1]) && std::isfinite(in[2]);
-        if (!finite) ++f.nonFinite;
-        for (int c = 0; c < 3; ++c)
-            out[c] = finite ? std::uint8_t(std::lround(std::clamp(in[c], 0.0f, 1.0f) * 255.0f)) : std::uint8_t(c == 1 ? 0 : 255);
-        out[3] = 255;
-    }
-    return f;
-}
-
 Frame renderView(ViewRenderers& renderers, const CheckView& view) {
     StageRenderer& r = renderers.forView(view);
     r.render(cameraFor(view.pose, r.scene()), view.time, RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode});
-    return toFrame(r.target().readFloats(), r.target().width(), r.target().height());
+    Frame f;
+    f.image = imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), &f.nonFinite);
+    return f;
 }
 
 Scene stageScene(const StageInfo& stage) { return loadScene(projectRoot() / "assets" / "scenes" / stage.scene); }
@@ -72,7 +59,7 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
     result.stage = stage.id;
     result.status = "graded";
     const fs::path refDir = outDir / "reference" / stage.id;
-    const fs::path imageDir = outDir / student / stage.id;
+    const fs::path imageDir = studentFolder(outDir, student) / stage.id;
     fs::create_directories(imageDir);
     StageSources sources = labSources(stage, labRoot);
     const std::vector<CheckView> views = gradingViews(stage, seed);

@@ -3,7 +3,8 @@
 // `raylab grade` starts for it (cmd_grade_item.cpp). Also renders the
 // solution's images that every submission is compared with.
 //
-// Points (documented for students in labs/README.md, "How you are graded"):
+// Points (documented for students in every labs/<stage>/README.md, "How you
+// are graded"):
 //   - a stage is worth 100 points: 70 for the image checks and 30 for the
 //     function checks, shared equally (100 for images where a stage has no
 //     function checks);
@@ -19,6 +20,12 @@
 
 namespace raylab {
 
+// Where one student's results go: OUT/students/<name>/ (never next to the
+// class files, whatever the student's folder is called).
+inline std::filesystem::path studentFolder(const std::filesystem::path& outDir, const std::string& student) {
+    return outDir / "students" / student;
+}
+
 inline constexpr int kGradeWidth = 160;
 inline constexpr int kGradeHeight = 120;
 
@@ -27,7 +34,7 @@ inline constexpr int kGradeHeight = 120;
 void renderGradingReferences(const StageInfo& stage, unsigned seed, const std::filesystem::path& outDir);
 
 // Grades LABROOT/<stage>/ against OUT/reference/<stage>/; writes the
-// student's images and diff heat maps to OUT/<student>/<stage>/. A compile
+// student's images and diff heat maps to OUT/students/<student>/<stage>/. A compile
 // error gives status "compile error" with the log mapped to file:line.
 StageResult gradeStage(const StageInfo& stage, const std::filesystem::path& labRoot, const std::string& student,
                        const std::filesystem::path& outDir, unsigned seed);

@@ -1,5 +1,8 @@
 #include "grade_views.h"
 
+#include "paths.h"
+#include "scene.h"
+
 #include <cstdint>
 
 namespace raylab {
@@ -18,6 +21,11 @@ struct SeededRandom {
     float uniform(float lo, float hi) { return lo + (hi - lo) * float(double(next() >> 11) * (1.0 / 9007199254740992.0)); }
 };
 
+// The scene file's own camera (views without a pose use it).
+CameraPose sceneCamera(const std::string& sceneFile) {
+    return loadScene(projectRoot() / "assets" / "scenes" / sceneFile).camera;
+}
+
 std::uint64_t stageHash(const std::string& id) {
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a
     for (char c : id) h = (h ^ std::uint8_t(c)) * 1099511628211ull;
@@ -28,19 +36,19 @@ std::uint64_t stageHash(const std::string& id) {
 
 std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
     std::vector<CheckView> views = stage.checkViews;
-    // Seeded views are small moves away from the posed check views (a
-    // random pose anywhere would mostly look at nothing): the camera shifts
-    // by up to 0.4 units, turns by up to 10 degrees, and the clock moves.
+    // Seeded views are small moves away from the check views (a random pose
+    // anywhere would mostly look at nothing): the camera shifts by up to 0.4
+    // units, turns by up to 10 degrees, and the clock moves. Any check view
+    // can be the start, with its settings (depth, colour mode...).
+    if (stage.checkViews.empty()) return views;
     std::vector<const CheckView*> posed;
-    for (const CheckView& v : stage.checkViews)
-        if (v.pose) posed.push_back(&v);
-    if (posed.empty()) return views;
+    for (const CheckView& v : stage.checkViews) posed.push_back(&v);
     SeededRandom rng{stageHash(stage.id) ^ (std::uint64_t(seed) * 0x2545f4914f6cdd1dull)};
     for (int i = 0; i < kSeededViewsPerStage; ++i) {
         const CheckView& base = *posed[rng.next() % posed.size()];
         CheckView v = base;
         v.name = "seeded-" + std::to_string(i + 1);
-        CameraPose pose = *base.pose;
+        CameraPose pose = base.pose ? *base.pose : sceneCamera(base.scene.empty() ? stage.scene : base.scene);
         pose.position += glm::vec3(rng.uniform(-0.4f, 0.4f), rng.uniform(-0.2f, 0.2f), rng.uniform(-0.4f, 0.4f));
         pose.yawDeg += rng.uniform(-10.0f, 10.0f);
         pose.pitchDeg += rng.uniform(-6.0f, 6.0f);

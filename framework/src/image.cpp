@@ -1,5 +1,8 @@
 #include "image.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "error.h"
 #include "paths.h"
 
@@ -51,6 +54,22 @@ void writePngAtomic(const Image& image, const std::filesystem::path& file) {
         std::filesystem::remove(tmp, ec);
         throw Error("cannot write " + file.string() + ": " + ec.message());
     }
+}
+
+Image imageFromFloats(const std::vector<float>& rgba, int width, int height, long* nonFinite) {
+    Image image(width, height);
+    long bad = 0;
+    for (std::size_t p = 0; p < std::size_t(width) * std::size_t(height); ++p) {
+        const float* in = &rgba[p * 4];
+        std::uint8_t* out = &image.rgba[p * 4];
+        bool finite = std::isfinite(in[0]) && std::isfinite(in[1]) && std::isfinite(in[2]);
+        if (!finite) ++bad;
+        for (int c = 0; c < 3; ++c)
+            out[c] = finite ? std::uint8_t(std::lround(std::clamp(in[c], 0.0f, 1.0f) * 255.0f)) : std::uint8_t(c == 1 ? 0 : 255);
+        out[3] = 255;
+    }
+    if (nonFinite) *nonFinite = bad;
+    return image;
 }
 
 } // namespace raylab

@@ -21,6 +21,11 @@ struct Image {
 
 Image loadPng(const std::filesystem::path& file);
 
+// RGBA floats (top row first) to 8 bits: clamp to [0, 1], scale, round. NaN
+// or Inf pixels become magenta and are counted in *NONFINITE. Checks and
+// grading read frames this way, so that a NaN is seen, not turned black.
+Image imageFromFloats(const std::vector<float>& rgba, int width, int height, long* nonFinite);
+
 // Writes FILE.tmp-PID next to FILE, then renames it over FILE.
 void writePngAtomic(const Image& image, const std::filesystem::path& file);
 

@@ -47,6 +47,7 @@ void readMaterials(const SceneReader& r, const json& doc, Scene& scene) {
     if (!materials.is_object()) r.fail("materials", "expected an object of named materials");
     for (const auto& [name, m] : materials.items()) {
         std::string where = "materials." + name;
+        r.allowOnly(m, where, {"ambient", "diffuse", "specular", "shininess", "type", "ior", "n", "k", "texture", "normal_map"});
         Material mat;
         mat.name = name;
         mat.ambient = r.color(r.member(m, where, "ambient"), where + ".ambient");
@@ -74,6 +75,7 @@ void readLights(const SceneReader& r, const json& doc, Scene& scene) {
     const json& lights = r.optionalList(doc, "lights");
     for (std::size_t i = 0; i < lights.size(); ++i) {
         std::string where = "lights[" + std::to_string(i) + "]";
+        r.allowOnly(lights[i], where, {"position", "color"});
         PointLight light;
         light.position = r.vec3(r.member(lights[i], where, "position"), where + ".position");
         light.color = r.color(r.member(lights[i], where, "color"), where + ".color");
@@ -94,6 +96,7 @@ void readSkyBox(const SceneReader& r, const json& doc, Scene& scene) {
 void readGlow(const SceneReader& r, const json& doc, Scene& scene) {
     if (!doc.contains("glow")) return;
     const json& g = doc["glow"];
+    r.allowOnly(g, "glow", {"sphere", "color", "size"});
     const json& sphere = r.member(g, "glow", "sphere");
     if (!sphere.is_number_integer() || sphere.get<long long>() < 0 || sphere.get<long long>() >= (long long)scene.spheres.size())
         r.fail("glow.sphere", "expected the index of a sphere (0.." + std::to_string(scene.spheres.size()) + ")");
@@ -118,8 +121,11 @@ Scene loadScene(const std::filesystem::path& file) {
     }
     SceneReader r{scene.file, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
+    r.allowOnly(doc, "", {"background", "camera", "materials", "lights", "spheres", "planes", "discs", "triangles", "rectangles", "boxes",
+                          "tori", "sky_box", "glow"});
     scene.background = r.color(r.member(doc, "scene", "background"), "background");
     const json& cam = r.member(doc, "scene", "camera");
+    r.allowOnly(cam, "camera", {"position", "yaw", "pitch", "fov_y"});
     scene.camera.position = r.vec3(r.member(cam, "camera", "position"), "camera.position");
     scene.camera.yawDeg = r.number(r.member(cam, "camera", "yaw"), "camera.yaw");
     scene.camera.pitchDeg = r.number(r.member(cam, "camera", "pitch"), "camera.pitch");

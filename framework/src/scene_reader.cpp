@@ -57,6 +57,20 @@ std::filesystem::path SceneReader::existingFile(const json& v, const std::string
     return p.lexically_normal();
 }
 
+void SceneReader::allowOnly(const json& obj, const std::string& where, std::initializer_list<const char*> known) const {
+    if (!obj.is_object()) return;  // member() says "expected an object" where it matters
+    for (const auto& [key, value] : obj.items()) {
+        if (key == "comment") continue;
+        bool ok = false;
+        std::string list;
+        for (const char* k : known) {
+            ok |= key == k;
+            list += (list.empty() ? "" : ", ") + std::string(k);
+        }
+        if (!ok) fail(where.empty() ? key : where + "." + key, "unknown key (known here: " + list + ")");
+    }
+}
+
 const json& SceneReader::optionalList(const json& doc, const char* key) const {
     static const json empty = json::array();
     if (!doc.contains(key)) return empty;

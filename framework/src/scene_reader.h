@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <initializer_list>
 #include <string>
 
 namespace raylab {
@@ -29,6 +30,9 @@ struct SceneReader {
     std::string string(const json& v, const std::string& where) const;
     // A file named relative to the scene's folder, which must exist.
     std::filesystem::path existingFile(const json& v, const std::string& where) const;
+    // Fails on a key that is not in KNOWN (or "comment"): a typo such as
+    // "tile_szie" must not be dropped silently.
+    void allowOnly(const json& obj, const std::string& where, std::initializer_list<const char*> known) const;
     // The list under KEY, or an empty list when the file has none.
     const json& optionalList(const json& doc, const char* key) const;
 };

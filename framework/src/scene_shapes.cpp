@@ -36,6 +36,7 @@ void readSpheres(const SceneReader& r, const json& doc, Scene& scene) {
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         std::string where = item("spheres", i);
         const json& s = spheres[i];
+        r.allowOnly(s, where, {"center", "radius", "material", "color", "motion"});
         Sphere sphere;
         sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
         sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
@@ -43,6 +44,7 @@ void readSpheres(const SceneReader& r, const json& doc, Scene& scene) {
         if (s.contains("motion")) {
             const json& m = s["motion"];
             std::string mw = where + ".motion";
+            r.allowOnly(m, mw, {"axis", "amplitude", "period"});
             sphere.motion.axis = r.vec3(r.member(m, mw, "axis"), mw + ".axis");
             sphere.motion.amplitude = r.number(r.member(m, mw, "amplitude"), mw + ".amplitude");
             sphere.motion.periodSeconds = r.positive(r.member(m, mw, "period"), mw + ".period");
@@ -55,6 +57,7 @@ void readPlanes(const SceneReader& r, const json& doc, Scene& scene) {
     const json& planes = r.optionalList(doc, "planes");
     for (std::size_t i = 0; i < planes.size(); ++i) {
         std::string where = item("planes", i);
+        r.allowOnly(planes[i], where, {"point", "normal", "tile_size", "material", "color"});
         Plane p;
         p.point = r.vec3(r.member(planes[i], where, "point"), where + ".point");
         p.normal = r.direction(r.member(planes[i], where, "normal"), where + ".normal");
@@ -68,6 +71,7 @@ void readDiscs(const SceneReader& r, const json& doc, Scene& scene) {
     const json& discs = r.optionalList(doc, "discs");
     for (std::size_t i = 0; i < discs.size(); ++i) {
         std::string where = item("discs", i);
+        r.allowOnly(discs[i], where, {"center", "normal", "radius", "material", "color"});
         Disc d;
         d.center = r.vec3(r.member(discs[i], where, "center"), where + ".center");
         d.normal = r.direction(r.member(discs[i], where, "normal"), where + ".normal");
@@ -86,6 +90,7 @@ void readTriangles(const SceneReader& r, const json& doc, Scene& scene) {
     const json& triangles = r.optionalList(doc, "triangles");
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         std::string where = item("triangles", i);
+        r.allowOnly(triangles[i], where, {"vertices", "material", "color"});
         const json& v = r.member(triangles[i], where, "vertices");
         if (!v.is_array() || v.size() != 3) r.fail(where + ".vertices", "expected three [x, y, z] corners");
         int material = materialOf(r, triangles[i], where, scene);
@@ -100,6 +105,7 @@ void readRectangles(const SceneReader& r, const json& doc, Scene& scene) {
     const json& rects = r.optionalList(doc, "rectangles");
     for (std::size_t i = 0; i < rects.size(); ++i) {
         std::string where = item("rectangles", i);
+        r.allowOnly(rects[i], where, {"corner", "edge_u", "edge_v", "material", "color"});
         glm::vec3 p = r.vec3(r.member(rects[i], where, "corner"), where + ".corner");
         glm::vec3 u = r.vec3(r.member(rects[i], where, "edge_u"), where + ".edge_u");
         glm::vec3 v = r.vec3(r.member(rects[i], where, "edge_v"), where + ".edge_v");
@@ -115,6 +121,7 @@ void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
     const json& boxes = r.optionalList(doc, "boxes");
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         std::string where = item("boxes", i);
+        r.allowOnly(boxes[i], where, {"center", "size", "rotation_y", "material", "color"});
         glm::vec3 center = r.vec3(r.member(boxes[i], where, "center"), where + ".center");
         glm::vec3 size = r.vec3(r.member(boxes[i], where, "size"), where + ".size");
         for (int c = 0; c < 3; ++c)
@@ -150,6 +157,7 @@ void readTori(const SceneReader& r, const json& doc, Scene& scene) {
     for (std::size_t i = 0; i < tori.size(); ++i) {
         std::string where = item("tori", i);
         const json& t = tori[i];
+        r.allowOnly(t, where, {"center", "axis", "major_radius", "minor_radius", "spin", "material", "color"});
         Torus torus;
         torus.center = r.vec3(r.member(t, where, "center"), where + ".center");
         torus.axis = r.direction(r.member(t, where, "axis"), where + ".axis");
@@ -158,6 +166,7 @@ void readTori(const SceneReader& r, const json& doc, Scene& scene) {
         if (torus.minorRadius >= torus.majorRadius) r.fail(where, "minor_radius must be smaller than major_radius");
         if (t.contains("spin")) {
             std::string sw = where + ".spin";
+            r.allowOnly(t["spin"], sw, {"axis", "period"});
             torus.spinAxis = r.direction(r.member(t["spin"], sw, "axis"), sw + ".axis");
             torus.spinPeriod = r.positive(r.member(t["spin"], sw, "period"), sw + ".period");
         }
@@ -174,6 +183,21 @@ glm::vec3 Torus::axisAt(float t) const {
     return glm::normalize(glm::vec3(glm::rotate(glm::mat4(1.0f), angle, spinAxis) * glm::vec4(axis, 0.0f)));
 }
 
+// Texture coordinates exist on spheres, planes and discs; a tangent (for
+// normal maps) on spheres only. Anything else would render flat or black.
+void checkTexturesFit(const SceneReader& r, const Scene& scene) {
+    auto check = [&](const char* list, std::size_t i, int material, bool uv, bool tangent) {
+        const Material& m = scene.materials[std::size_t(material)];
+        std::string where = item(list, i) + ".material";
+        if (m.texture >= 0 && !uv) r.fail(where, "material \"" + m.name + "\" has a texture, but " + list + " have no texture coordinates (spheres, planes and discs do)");
+        if (m.normalMap >= 0 && !tangent) r.fail(where, "material \"" + m.name + "\" has a normal map, but only spheres take normal maps");
+    };
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) check("planes", i, scene.planes[i].material, true, false);
+    for (std::size_t i = 0; i < scene.discs.size(); ++i) check("discs", i, scene.discs[i].material, true, false);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) check("triangles", i, scene.triangles[i].material, false, false);
+    for (std::size_t i = 0; i < scene.tori.size(); ++i) check("tori", i, scene.tori[i].material, false, false);
+}
+
 void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
     readSpheres(r, doc, scene);
     readPlanes(r, doc, scene);
@@ -182,6 +206,7 @@ void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
     readRectangles(r, doc, scene);
     readBoxes(r, doc, scene);
     readTori(r, doc, scene);
+    checkTexturesFit(r, scene);
 }
 
 } // namespace raylab

@@ -49,6 +49,15 @@ TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
         width_ = std::max(width_, images.back().width);
         height_ = std::max(height_, images.back().height);
     }
+    GLint maxSize = 0, maxLayers = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    for (std::size_t i = 0; i < images.size(); ++i)
+        if (images[i].width > maxSize || images[i].height > maxSize)
+            throw Error("texture " + displayPath(files[i]) + " is " + std::to_string(images[i].width) + "x" + std::to_string(images[i].height) +
+                        ": this OpenGL takes at most " + std::to_string(maxSize) + " pixels per side");
+    if (int(images.size()) > maxLayers)
+        throw Error(std::to_string(images.size()) + " textures, but this OpenGL takes at most " + std::to_string(maxLayers) + " in an array");
     glGenTextures(1, &id_);
     glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -65,6 +74,10 @@ TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        glDeleteTextures(1, &id_);
+        throw Error("cannot upload the scene's textures (OpenGL error " + std::to_string(e) + ", out of memory?)");
+    }
 }
 
 TextureArray::~TextureArray() { glDeleteTextures(1, &id_); }

@@ -85,16 +85,20 @@ float intersectTorusLocal(Ray ray, float R, float r)
     for (int i = 0; i < count; ++i) {
         if (tEnter + roots[i] <= T_MIN) continue;
         float t = polishTorusHit(o, d, roots[i], R, r);
-        if (abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
+        // Polishing may move a root just in front of the origin behind it.
+        if (tEnter + t > T_MIN && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
     }
     // No root survived: march the distance function through the bounding
     // sphere (rays close to tangent, where a lost root hides).
     float t = max(T_MIN - tEnter, 0.0);
     float tExit = -b + sqrt(h) - tEnter;
-    if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: leave it to the solver
+    if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: no marching from there (rare: only a lost root gets here)
     for (int step = 0; step < 96 && t < tExit; ++step) {
         float dist = torusDistance(o + t * d, R, r);
-        if (dist < 1e-4 * r) return tEnter + polishTorusHit(o, d, t, R, r);
+        if (dist < 1e-4 * r) {
+            float polished = polishTorusHit(o, d, t, R, r);
+            return tEnter + (tEnter + polished > T_MIN ? polished : t);
+        }
         t += dist;
     }
     return NO_HIT;

@@ -53,12 +53,12 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     int checked = 0;
     for (const auto& [student, stages] : expected.items()) {
         SCOPED_TRACE(student);
-        const fs::path resultsFile = dir / "out" / student / "results.json";
+        const fs::path resultsFile = dir / "out" / "students" / student / "results.json";
         ASSERT_TRUE(fs::exists(resultsFile));
         for (const auto& [stage, want] : stages.items()) {
             if (stage == "_mistakes") continue;
             SCOPED_TRACE(stage);
-            const fs::path stageResult = dir / "out" / student / stage / "result.json";
+            const fs::path stageResult = dir / "out" / "students" / student / stage / "result.json";
             const std::string w = want;
             if (w == "not submitted") {
                 EXPECT_FALSE(fs::exists(stageResult));

@@ -28,16 +28,16 @@ TEST(Grade, WritesEveryReportAndGivesTheSameScoresTwice) {
     CommandResult second = runRaylab(args + quote((dir / "b").string()));
     ASSERT_EQ(second.exitCode, 0) << second.all();
 
-    for (const char* f : {"report.html", "summary.csv", "junit.xml", "ada/results.json", "bob/results.json"})
+    for (const char* f : {"report.html", "summary.csv", "junit.xml", "students/ada/results.json", "students/bob/results.json"})
         EXPECT_TRUE(fs::exists(dir / "a" / f)) << f;
     EXPECT_EQ(readFile(dir / "a" / "summary.csv"), readFile(dir / "b" / "summary.csv")) << "grading must be deterministic";
-    auto ada = nlohmann::json::parse(readFile(dir / "a" / "ada" / "results.json"));
+    auto ada = nlohmann::json::parse(readFile(dir / "a" / "students" / "ada" / "results.json"));
     EXPECT_DOUBLE_EQ(ada["score"].get<double>(), 200.0);
-    auto bob = nlohmann::json::parse(readFile(dir / "a" / "bob" / "results.json"));
+    auto bob = nlohmann::json::parse(readFile(dir / "a" / "students" / "bob" / "results.json"));
     EXPECT_LT(bob["score"].get<double>(), 10.0);
     EXPECT_NE(readFile(dir / "a" / "summary.csv").find("02-shading: not submitted"), std::string::npos);
     // The seeded views exist and are graded like the others.
-    EXPECT_TRUE(fs::exists(dir / "a" / "ada" / "01-raycast" / "seeded-1.png"));
+    EXPECT_TRUE(fs::exists(dir / "a" / "students" / "ada" / "01-raycast" / "seeded-1.png"));
     EXPECT_TRUE(fs::exists(dir / "a" / "reference" / "01-raycast" / "seeded-3.png"));
     // No temporary files anywhere.
     for (const auto& e : fs::recursive_directory_iterator(dir / "a"))
@@ -70,6 +70,9 @@ TEST(Grade, BadArgumentsAreOneLineErrors) {
         {"grade" + cls + " --jobs 0", "--jobs must be between 1 and 64"},
         {"grade" + cls + " --timeout -1", "--timeout must be between"},
         {"grade" + cls + " --memory-mb 5", "--memory-mb must be 0"},
+        {"grade --submissions " + quote((dir / "class").string()) + " --out " + quote((dir / "class" / "graded").string()),
+         "must be separate folders"},
+        {"grade --submissions " + quote((dir / "class").string()) + " --out " + quote((dir / "class").string()), "must be separate folders"},
     };
     for (const Case& c : cases) {
         CommandResult r = runRaylab(c.args);
@@ -77,4 +80,68 @@ TEST(Grade, BadArgumentsAreOneLineErrors) {
         EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
+}
+
+// Folder names that collide with the class files, an empty submission, a
+// stage folder that is a link to the solution, and leftovers of an earlier
+// run: none of them may touch another student's score or the report.
+TEST(Grade, AwkwardFoldersAndAnEarlierRunChangeNothingForOthers) {
+    ScratchDir dir;
+    const fs::path cls = dir / "class";
+    writeSolvedLabs(cls / "ada");
+    writeSolvedLabs(cls / "reference");
+    writeSolvedLabs(cls / "report.html");
+    fs::create_directories(cls / "empty");
+    fs::create_directories(cls / "linker");
+    fs::create_directory_symlink(sourceDir() / "solution" / "01-raycast", cls / "linker" / "01-raycast");
+    fs::create_directory_symlink(cls / "ada", cls / "alias");
+    // Leftovers of an earlier run in --out.
+    fs::create_directories(dir / "out" / "students" / "ada" / "01-raycast");
+    writeFile(dir / "out" / "students" / "ada" / "01-raycast" / "result.json", "stale");
+    writeFile(dir / "out" / "summary.csv", "stale");
+
+    CommandResult r = runRaylab("grade --submissions " + quote(cls.string()) + " --stages 01 --out " + quote((dir / "out").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.err.find("skipping alias: a symbolic link"), std::string::npos) << r.err;
+    const std::string csv = readFile(dir / "out" / "summary.csv");
+    EXPECT_NE(csv.find("ada,100,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("reference,100,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("report.html,100,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("empty,0,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("linker,0,"), std::string::npos) << "a stage folder linked to the solution earns nothing\n" << csv;
+    EXPECT_NE(csv.find("01-raycast: error"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("alias"), std::string::npos) << csv;
+    EXPECT_TRUE(fs::is_regular_file(dir / "out" / "report.html"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "students" / "empty" / "results.json"));
+}
+
+// `raylab check` reads frames as grading does: a NaN fails the view and says so.
+TEST(Grade, CheckSeesNaNLikeGrading) {
+    ScratchDir lab;
+    writeSolvedLabs(lab.path());
+    replaceInFile(lab / "02-shading" / "blinn_phong.glsl", "color += m.ambient;", "color += m.ambient * sqrt(-1.0 - m.ambient.x);");
+    CommandResult r = runRaylab("check --stage 02 --lab " + quote(lab.path().string()));
+    EXPECT_EQ(r.exitCode, 1) << r.all();
+    EXPECT_NE(r.out.find("pixels are NaN or Inf"), std::string::npos) << r.out;
+}
+
+// Ctrl-C during grading stops every child (looked for by its command line;
+// the [g] keeps pgrep from finding the shell that runs it) (they run in process groups of
+// their own, which the terminal's signal does not reach) and writes no
+// report that would look complete.
+TEST(Grade, InterruptStopsTheChildrenAndWritesNoReport) {
+    ScratchDir dir;
+    writeSolvedLabs(dir / "class" / "looper");
+    auto spec = nlohmann::json::parse(readFile(sourceDir() / "tests/grading/broken/endless-loop.json"));
+    replaceInFile(dir / "class" / "looper" / spec["stage"].get<std::string>() / spec["file"].get<std::string>(), spec["replace"][0][0],
+                  spec["replace"][0][1]);
+    const fs::path out = dir / "out-interrupted";
+    CommandResult r = runCommand(quote(RAYLAB_EXE) + " grade --submissions " + quote((dir / "class").string()) + " --stages 02 --timeout 120 --out " +
+                                 quote(out.string()) + " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo \"rc=$?\"; sleep 1; " +
+                                 "echo \"left=$(pgrep -f '[g]rade-item --stage 02-shading --lab " + (dir / "class" / "looper").string() + "' | wc -l)\"");
+    EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.all();
+    EXPECT_NE(r.out.find("left=0"), std::string::npos) << "children outlived the interrupted grader\n" << r.all();
+    EXPECT_NE(r.err.find("interrupted; no report was written"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out / "report.html"));
+    EXPECT_FALSE(fs::exists(out / "summary.csv"));
 }

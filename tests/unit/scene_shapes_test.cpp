@@ -123,3 +123,30 @@ TEST(SceneShapes, BadShapesAndMissingFilesAreOneLineErrorsThatSayWhere) {
     EXPECT_NE(missing.find("materials.earth.texture: file"), std::string::npos) << missing;
     EXPECT_NE(missing.find("nowhere.png does not exist"), std::string::npos) << missing;
 }
+
+TEST(SceneShapes, UnknownKeysAndTexturesWhereTheyCannotGoAreErrors) {
+    EXPECT_NE(errorFor(sceneWith(R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "m", "tile_szie": 2}])"))
+                  .find("planes[0].tile_szie: unknown key"), std::string::npos);
+    EXPECT_NE(errorFor(sceneWith(R"("glwo": {"sphere": 0})")).find("glwo: unknown key"), std::string::npos);
+    EXPECT_EQ(errorFor(sceneWith(R"("comment": "comments are fine anywhere")")), "(no error)");
+    ScratchDir dir;
+    writeFile(dir / "n.png", "x");
+    const std::string bumpy = R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
+        "materials": {"bumpy": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "normal_map": "n.png",
+                                "texture": "n.png"}},
+        "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "bumpy"}], )";
+    auto errorIn = [&](const std::string& text) {
+        writeFile(dir / "scene.json", text);
+        try {
+            loadScene(dir / "scene.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_NE(errorIn(bumpy + R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "bumpy"}]})")
+                  .find("planes[0].material: material \"bumpy\" has a normal map, but only spheres take normal maps"),
+              std::string::npos);
+    EXPECT_NE(errorIn(bumpy + R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 0.2, "material": "bumpy"}]})")
+                  .find("tori have no texture coordinates"), std::string::npos);
+}

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <thread>
 
 namespace raylab {
 
@@ -91,6 +92,11 @@ bool Child::poll() {
         return true;
     }
     return false;
+}
+
+const ChildOutcome& Child::wait() {
+    while (!poll()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return outcome_;
 }
 
 Child::~Child() {

@@ -28,6 +28,8 @@ public:
     // Non-blocking: true (and the outcome filled in) once the child has ended.
     // Kills the child's process group when its time is up.
     bool poll();
+    // Blocks until the child has ended (or its time is up).
+    const ChildOutcome& wait();
     const ChildOutcome& outcome() const { return outcome_; }
     ~Child();  // kills a child still running
     Child(const Child&) = delete;

@@ -24,14 +24,10 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
 
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
-    // Float targets, read as grading reads them: a NaN is seen, not turned black.
-    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h, PixelFormat::Rgba32F);
+    // Frames read as grading reads them (view_renderers.h).
+    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h);
     std::unique_ptr<ViewRenderers> references;
-    if (against.empty())
-        references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h, PixelFormat::Rgba32F);
-    auto readFrame = [](const StageRenderer& r, long* nonFinite) {
-        return imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), nonFinite);
-    };
+    if (against.empty()) references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h);
     reportOpenTodos(students.forView(stage.checkViews.front()).openTodos());  // a compile error stops here, before any output
 
     const CompareTolerance tolerance;
@@ -42,18 +38,11 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 tolerance.maxBadShare * 100.0, tolerance.channel);
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
-        StageRenderer& student = students.forView(view);
-        reportOpenTodos(student.openTodos());
-        Camera camera = cameraFor(view.pose, student.scene());
-        const RenderSettings settings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
-        student.render(camera, view.time, settings);
         long nonFinite = 0;
-        Image mine = readFrame(student, &nonFinite);
+        Image mine = students.render(view, &nonFinite);
         Image expected;
         if (references) {
-            StageRenderer& reference = references->forView(view);
-            reference.render(camera, view.time, settings);
-            expected = readFrame(reference, nullptr);
+            expected = references->render(view);
         } else {
             expected = loadPng(against / (view.name + ".png"));
         }

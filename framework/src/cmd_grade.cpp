@@ -92,6 +92,36 @@ bool stageFolderExists(const fs::path& dir) {
     return fs::symlink_status(dir, ec).type() == fs::file_type::directory;
 }
 
+// Runs COUNT jobs with at most JOBS children at once. START(i) starts job i
+// and returns its child, or nullptr when the job needed none (it is then
+// finished already). DONE(i, outcome) runs when child i has ended. Returns
+// false when INTERRUPTED() says so; the running children are then killed
+// (~Child).
+bool runPool(std::size_t count, int jobs, const std::function<std::unique_ptr<Child>(std::size_t)>& start,
+             const std::function<void(std::size_t, const ChildOutcome&)>& done, const std::function<bool()>& interrupted) {
+    std::vector<std::pair<std::size_t, std::unique_ptr<Child>>> running;
+    std::size_t next = 0;
+    while (next < count || !running.empty()) {
+        if (interrupted()) return false;
+        while (next < count && int(running.size()) < jobs) {
+            std::size_t job = next++;
+            if (auto child = start(job)) running.emplace_back(job, std::move(child));
+        }
+        bool any = false;
+        for (auto it = running.begin(); it != running.end();) {
+            if (!it->second->poll()) {
+                ++it;
+                continue;
+            }
+            any = true;
+            done(it->first, it->second->outcome());
+            it = running.erase(it);
+        }
+        if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
+}
+
 volatile std::sig_atomic_t gInterrupted = 0;
 extern "C" void onInterrupt(int) { gInterrupted = 1; }
 
@@ -178,13 +208,6 @@ void printSummary(const ClassResult& result) {
     std::printf("(scores out of 100 per stage; - not submitted, CE compile error, TIME timed out, ERR crashed or other error)\n");
 }
 
-fs::path selfExecutable() {
-    std::error_code ec;
-    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) throw Error("cannot find the raylab executable (/proc/self/exe)");
-    return exe;
-}
-
 } // namespace
 
 int cmdGrade(const GradeOptions& g) {
@@ -203,7 +226,7 @@ int cmdGrade(const GradeOptions& g) {
     for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"}) fs::remove_all(out / own, ec);
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
-    const std::string exe = selfExecutable().string();
+    const std::string exe = executablePath().string();
     const std::string seed = std::to_string(g.seed);
     const auto start = std::chrono::steady_clock::now();
     // Ctrl-C or a kill: stop the children (their own process groups do not
@@ -222,29 +245,19 @@ int cmdGrade(const GradeOptions& g) {
 
     // 1. The solution's images for every stage (trusted code, but in children
     //    too: they run in parallel and share nothing).
-    {
-        ChildLimits limits{g.timeoutSeconds * 10.0, 0};
-        std::vector<std::pair<const StageInfo*, std::unique_ptr<Child>>> running;
-        std::deque<const StageInfo*> queue(stages.begin(), stages.end());
-        while (!queue.empty() || !running.empty()) {
-            if (interrupted()) return 130;
-            while (!queue.empty() && int(running.size()) < g.jobs) {
-                const StageInfo* s = queue.front();
-                queue.pop_front();
-                running.emplace_back(s, std::make_unique<Child>(std::vector<std::string>{exe, "grade-reference", "--stage", s->id, "--out",
-                                                                                          out.string(), "--seed", seed},
-                                                                out / "reference" / (s->id + ".log"), limits));
-            }
-            for (auto it = running.begin(); it != running.end();) {
-                if (!it->second->poll()) { ++it; continue; }
-                if (it->second->outcome().exitCode != 0)
-                    throw Error("rendering the reference images of stage " + it->first->id + " failed (" + it->second->outcome().describe() +
-                                "); see " + (out / "reference" / (it->first->id + ".log")).string());
-                it = running.erase(it);
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-    }
+    const bool referencesDone = runPool(
+        stages.size(), g.jobs,
+        [&](std::size_t i) {
+            return std::make_unique<Child>(std::vector<std::string>{exe, "grade-reference", "--stage", stages[i]->id, "--out", out.string(), "--seed", seed},
+                                           out / "reference" / (stages[i]->id + ".log"), ChildLimits{g.timeoutSeconds * 10.0, 0});
+        },
+        [&](std::size_t i, const ChildOutcome& o) {
+            if (o.exitCode != 0)
+                throw Error("rendering the reference images of stage " + stages[i]->id + " failed (" + o.describe() + "); see " +
+                            (out / "reference" / (stages[i]->id + ".log")).string());
+        },
+        interrupted);
+    if (!referencesDone) return 130;
 
     // 2. Every stage of every submission.
     ClassResult result;
@@ -262,58 +275,47 @@ int cmdGrade(const GradeOptions& g) {
     }
     Progress progress(queue.size());
     const ChildLimits limits{g.timeoutSeconds, g.memoryMb};
-    // Runs QUEUE with up to JOBS children; FINISH gets each item's result.
-    auto runItems = [&](std::deque<Item> items, int jobs, const std::function<void(const Item&, StageResult)>& finish) {
-        std::vector<std::pair<Item, std::unique_ptr<Child>>> running;
-        while (!items.empty() || !running.empty()) {
-            if (interrupted()) return false;
-            while (!items.empty() && int(running.size()) < jobs) {
-                Item item = items.front();
-                items.pop_front();
-                const std::string& name = students[item.student];
-                const fs::path stageDir = submissions / name / item.stage->id;
-                if (!stageFolderExists(stageDir)) {
-                    StageResult r;
-                    r.stage = item.stage->id;
-                    r.status = fs::exists(stageDir, ec) ? "error" : "not submitted";
-                    r.message = r.status == "error" ? item.stage->id + "/ is not a folder (a symbolic link?)"
-                                                    : "no " + item.stage->id + "/ folder in the submission";
-                    finish(item, r);
-                    continue;
-                }
-                const fs::path itemDir = studentFolder(out, name) / item.stage->id;
-                fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
-                fs::create_directories(itemDir, ec);
-                progress.working(name, item.stage->id);
-                running.emplace_back(item, std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id,
-                                                                                            "--lab", (submissions / name).string(), "--student",
-                                                                                            name, "--out", out.string(), "--seed", seed},
-                                                                   itemDir / "log.txt", limits));
-            }
-            bool any = false;
-            for (auto it = running.begin(); it != running.end();) {
-                if (!it->second->poll()) { ++it; continue; }
-                any = true;
-                const Item& item = it->first;
-                const ChildOutcome& o = it->second->outcome();
-                const fs::path itemDir = studentFolder(out, students[item.student]) / item.stage->id;
+    // Runs ITEMS with up to JOBS children; FINISH gets each item's result.
+    auto runItems = [&](const std::deque<Item>& items, int jobs, const std::function<void(const Item&, StageResult)>& finish) {
+        auto startItem = [&](std::size_t i) -> std::unique_ptr<Child> {
+            const Item& item = items[i];
+            const std::string& name = students[item.student];
+            const fs::path stageDir = submissions / name / item.stage->id;
+            if (!stageFolderExists(stageDir)) {
                 StageResult r;
-                bool haveResult = false;
-                if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
-                    try {
-                        r = stageResultFromJson(readTextFile(itemDir / "result.json"));
-                        haveResult = true;
-                    } catch (const Error&) {
-                    }
-                }
-                if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
-                r.seconds = o.seconds;
+                r.stage = item.stage->id;
+                r.status = fs::exists(stageDir, ec) ? "error" : "not submitted";
+                r.message = r.status == "error" ? item.stage->id + "/ is not a folder (a symbolic link?)"
+                                                : "no " + item.stage->id + "/ folder in the submission";
                 finish(item, r);
-                it = running.erase(it);
+                return nullptr;
             }
-            if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        return true;
+            const fs::path itemDir = studentFolder(out, name) / item.stage->id;
+            fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
+            fs::create_directories(itemDir, ec);
+            progress.working(name, item.stage->id);
+            return std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
+                                                                    (submissions / name).string(), "--student", name, "--out", out.string(),
+                                                                    "--seed", seed},
+                                           itemDir / "log.txt", limits);
+        };
+        auto itemDone = [&](std::size_t i, const ChildOutcome& o) {
+            const Item& item = items[i];
+            const fs::path itemDir = studentFolder(out, students[item.student]) / item.stage->id;
+            StageResult r;
+            bool haveResult = false;
+            if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
+                try {
+                    r = stageResultFromJson(readTextFile(itemDir / "result.json"));
+                    haveResult = true;
+                } catch (const Error&) {
+                }
+            }
+            if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
+            r.seconds = o.seconds;
+            finish(item, r);
+        };
+        return runPool(items.size(), jobs, startItem, itemDone, interrupted);
     };
     std::deque<Item> timedOut;
     bool completed = runItems(queue, g.jobs, [&](const Item& item, StageResult r) {

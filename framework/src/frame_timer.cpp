@@ -35,11 +35,4 @@ FrameTiming summarizeFrameTimes(std::vector<double> ms) {
     return t;
 }
 
-FrameTiming timeFrames(const std::function<void()>& drawFrame, int warmup, int frames) {
-    for (int i = 0; i < warmup; ++i) drawFrame();
-    std::vector<double> ms;
-    for (int i = 0; i < frames; ++i) ms.push_back(timeOneFrame(drawFrame));
-    return summarizeFrameTimes(std::move(ms));
-}
-
 } // namespace raylab

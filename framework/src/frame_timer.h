@@ -24,8 +24,4 @@ FrameTiming summarizeFrameTimes(std::vector<double> ms);
 // glFinish that drains earlier work.
 double timeOneFrame(const std::function<void()>& drawFrame);
 
-// Calls drawFrame() warmup times unmeasured, then frames times measured; each
-// frame is fenced with glFinish before and after.
-FrameTiming timeFrames(const std::function<void()>& drawFrame, int warmup, int frames);
-
 } // namespace raylab

@@ -23,19 +23,6 @@ namespace {
 constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
 constexpr double kZeroCreditShare = 0.10;
 
-struct Frame {
-    Image image;
-    long nonFinite = 0;  // NaN or Inf pixels (shown magenta in the image)
-};
-
-Frame renderView(ViewRenderers& renderers, const CheckView& view) {
-    StageRenderer& r = renderers.forView(view);
-    r.render(cameraFor(view.pose, r.scene()), view.time, RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode});
-    Frame f;
-    f.image = imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), &f.nonFinite);
-    return f;
-}
-
 Scene stageScene(const StageInfo& stage) { return loadScene(projectRoot() / "assets" / "scenes" / stage.scene); }
 
 std::string relativeTo(const fs::path& p, const fs::path& base) { return p.lexically_relative(base).generic_string(); }
@@ -50,8 +37,8 @@ double imageCredit(double badShare, bool passed) {
 void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::path& outDir) {
     const fs::path dir = outDir / "reference" / stage.id;
     fs::create_directories(dir);
-    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth, kGradeHeight, PixelFormat::Rgba32F);
-    for (const CheckView& view : gradingViews(stage, seed)) writePngAtomic(renderView(renderers, view).image, dir / (view.name + ".png"));
+    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth, kGradeHeight);
+    for (const CheckView& view : gradingViews(stage, seed)) writePngAtomic(renderers.render(view), dir / (view.name + ".png"));
 }
 
 StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student, const fs::path& outDir, unsigned seed) {
@@ -67,24 +54,25 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
     const double imagePoints = functions.empty() ? 100.0 : kImagePoints;
 
     try {
-        ViewRenderers renderers(stage, sources, stageScene(stage), "", kGradeWidth, kGradeHeight, PixelFormat::Rgba32F);
+        ViewRenderers renderers(stage, sources, stageScene(stage), "", kGradeWidth, kGradeHeight);
         const CompareTolerance tolerance;
         for (const CheckView& view : views) {
             CheckResult check;
             check.name = view.name;
             check.kind = "image";
             check.maxScore = imagePoints / double(views.size());
-            Frame mine = renderView(renderers, view);
+            long nonFinite = 0;
+            Image mine = renderers.render(view, &nonFinite);
             Image expected = loadPng(refDir / (view.name + ".png"));
-            ImageDiff diff = compareImages(mine.image, expected, tolerance.channel);
-            check.passed = imagesAgree(diff, tolerance) && mine.nonFinite == 0;
-            check.score = mine.nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
+            ImageDiff diff = compareImages(mine, expected, tolerance.channel);
+            check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
+            check.score = nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
             check.output = describe(diff);
-            if (mine.nonFinite) check.output = std::to_string(mine.nonFinite) + " pixels are NaN or Inf (shown magenta); " + check.output;
-            std::string hint = check.passed ? "" : diagnose(mine.image, expected, tolerance.channel);
+            if (nonFinite) check.output = std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta); " + check.output;
+            std::string hint = check.passed ? "" : diagnose(mine, expected, tolerance.channel);
             if (!hint.empty()) check.output += "; " + hint;
-            writePngAtomic(mine.image, imageDir / (view.name + ".png"));
-            writePngAtomic(diffHeatMap(mine.image, expected), imageDir / (view.name + "-diff.png"));
+            writePngAtomic(mine, imageDir / (view.name + ".png"));
+            writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));
             check.studentImage = relativeTo(imageDir / (view.name + ".png"), outDir);
             check.referenceImage = relativeTo(refDir / (view.name + ".png"), outDir);
             check.diffImage = relativeTo(imageDir / (view.name + "-diff.png"), outDir);

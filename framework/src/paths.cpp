@@ -24,7 +24,7 @@ fs::path findRoot() {
         return fs::weakly_canonical(env);
     }
     std::error_code ec;
-    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // not executablePath(): no error here, fall through
     if (!ec) {
         for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
             if (looksLikeRoot(dir)) return dir;
@@ -38,6 +38,13 @@ fs::path findRoot() {
 }
 
 } // namespace
+
+fs::path executablePath() {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) throw Error("cannot find this program's executable (/proc/self/exe): " + ec.message());
+    return exe;
+}
 
 const fs::path& projectRoot() {
     static const fs::path root = findRoot();

@@ -17,6 +17,9 @@ const fs::path& projectRoot();
 // absolute path; otherwise unchanged.
 std::string displayPath(const fs::path& p);
 
+// This program's own executable (/proc/self/exe). Throws Error.
+fs::path executablePath();
+
 // Reads a whole text file; throws Error("cannot read FILE: reason").
 std::string readTextFile(const fs::path& p);
 

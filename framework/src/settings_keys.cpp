@@ -4,21 +4,19 @@
 
 namespace raylab {
 
-namespace {
-std::string onOff(bool on) { return on ? "on" : "off"; }
-} // namespace
+const char* onOff(bool on) { return on ? "on" : "off"; }
 
 std::optional<std::string> applySettingsKey(RenderSettings& s, SDL_Keycode key) {
     switch (key) {
     case SDLK_1:
         s.shadows = !s.shadows;
-        return "shadows " + onOff(s.shadows);
+        return std::string("shadows ") + onOff(s.shadows);
     case SDLK_g:
         s.glow = !s.glow;
-        return "glow " + onOff(s.glow);
+        return std::string("glow ") + onOff(s.glow);
     case SDLK_n:
         s.normalMaps = !s.normalMaps;
-        return "normal maps " + onOff(s.normalMaps);
+        return std::string("normal maps ") + onOff(s.normalMaps);
     case SDLK_RIGHT:
     case SDLK_LEFT:
         s.maxDepth = std::clamp(s.maxDepth + (key == SDLK_RIGHT ? 1 : -1), 1, RenderSettings::kMaxDepth);

@@ -10,6 +10,9 @@
 
 namespace raylab {
 
+// "on" or "off", for echoes and the overlay.
+const char* onOff(bool on);
+
 // Applies KEY to SETTINGS. Returns the line to echo on the terminal
 // ("glow off", "colour mode BRB"), or nothing when KEY is not a settings key.
 std::optional<std::string> applySettingsKey(RenderSettings& settings, SDL_Keycode key);

@@ -61,8 +61,8 @@ void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<gl
 
 } // namespace
 
-StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height)
-    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height)) {
+StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format)
+    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)) {
     checkSceneFits(stage_, scene_);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);

@@ -35,7 +35,8 @@ class StageRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene, missing file) or
     // ShaderError (compile/link error, mapped to file:line).
-    StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height);
+    StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
+                  PixelFormat format = PixelFormat::Rgba8);
 
     void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
     Image read() const { return target_->read(); }

@@ -134,15 +134,15 @@ CubeMap::CubeMap(const CubeFaces& faces) {
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
+    // Filter across face edges (context state, core since GL 3.2; without it
+    // some GPUs show the cube's edges in the sky).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
 }
 
 CubeMap::~CubeMap() { glDeleteTextures(1, &id_); }
 
 void CubeMap::bind(int unit) const {
-    // Filter across face edges (core since GL 3.2; without it some GPUs show
-    // the cube's edges in the sky).
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
 }

@@ -1,6 +1,8 @@
 #pragma once
-// One StageRenderer per scene the views of a stage use (most views use the
-// stage's scene; stage 08's also use pro.json), built when first needed.
+// The frames `raylab check` and grading compare: one StageRenderer per scene
+// the views of a stage use (most views use the stage's scene; stage 08's also
+// use pro.json), built when first needed, drawing into float targets so that
+// a NaN is seen rather than turned black.
 #include "stage_renderer.h"
 
 #include <map>
@@ -12,11 +14,14 @@ namespace raylab {
 class ViewRenderers {
 public:
     // sceneOverride: a scene file for every view (--scene), or empty.
-    ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene, std::string sceneOverride, int width, int height,
-                  PixelFormat format = PixelFormat::Rgba8);
+    ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene, std::string sceneOverride, int width, int height);
 
     // Throws what StageRenderer throws (a bad scene, a shader error).
     StageRenderer& forView(const CheckView& view);
+
+    // VIEW drawn with its camera, time and settings, read back to 8 bits
+    // (imageFromFloats); *NONFINITE counts NaN/Inf pixels when given.
+    Image render(const CheckView& view, long* nonFinite = nullptr);
 
 private:
     const StageInfo& stage_;
@@ -24,7 +29,6 @@ private:
     Scene defaultScene_;
     std::string sceneOverride_;
     int width_, height_;
-    PixelFormat format_;
     std::map<std::string, std::unique_ptr<StageRenderer>> byScene_;
 };
 

@@ -108,10 +108,6 @@ void ViewerApp::onEvent(const SDL_Event& event) {
     }
 }
 
-namespace {
-const char* onOff(bool on) { return on ? "on" : "off"; }
-} // namespace
-
 void ViewerApp::onKey(SDL_Keycode key) {
     if (auto echo = applySettingsKey(setup_.settings, key)) {
         std::printf("%s\n", echo->c_str());

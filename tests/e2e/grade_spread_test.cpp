@@ -8,8 +8,13 @@
 // renders submission and solution at one size on one machine: across sizes
 // the solution differs from itself by several percent of pixels (aliasing of
 // textures, stars and sharp refractions at 160x120 against 320x240 scaled
-// down), so sizes are never mixed.
+// down; the second test measures it), so sizes are never mixed.
+#include "gl_context.h"
+#include "image_compare.h"
+#include "paths.h"
+#include "stage_setup.h"
 #include "test_support.h"
+#include "view_renderers.h"
 
 #include <gtest/gtest.h>
 
@@ -34,4 +39,48 @@ TEST(GradeSpread, SolutionIsIdenticalUnderEglAndOsMesaInEveryView) {
     }
     std::printf("[ figure   ] solution EGL vs OSMesa: %d views, every pixel identical (spread 0)\n", views);
     EXPECT_GE(views, 50);
+}
+
+namespace {
+
+// 2x2 box average: a 320x240 frame brought down to 160x120.
+raylab::Image halve(const raylab::Image& big) {
+    raylab::Image small(big.width / 2, big.height / 2);
+    for (int y = 0; y < small.height; ++y)
+        for (int x = 0; x < small.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = big.pixel(2 * x, 2 * y)[c] + big.pixel(2 * x + 1, 2 * y)[c] + big.pixel(2 * x, 2 * y + 1)[c] +
+                          big.pixel(2 * x + 1, 2 * y + 1)[c];
+                small.pixel(x, y)[c] = std::uint8_t((sum + 2) / 4);
+            }
+    return small;
+}
+
+} // namespace
+
+// The figure behind "sizes are never mixed" (tests/README.md): the textured
+// and glass stages' solution at 160x120 against itself at 320x240 scaled
+// down differs by more than the allowance in some view.
+TEST(GradeSpread, SolutionAtTwoImageSizesIsNotComparablePixelByPixel) {
+    auto context = raylab::createHeadlessContext(raylab::Backend::Auto);
+    const raylab::CompareTolerance tolerance;
+    double worst = 0;
+    std::string worstView;
+    for (const char* id : {"05", "06", "07"}) {
+        const raylab::StageInfo& stage = raylab::findStage(id);
+        raylab::Scene scene = raylab::loadScene(raylab::projectRoot() / "assets" / "scenes" / stage.scene);
+        raylab::ViewRenderers small(stage, raylab::solutionSources(stage), scene, "", 160, 120);
+        raylab::ViewRenderers big(stage, raylab::solutionSources(stage), scene, "", 320, 240);
+        for (const raylab::CheckView& view : stage.checkViews) {
+            double share = raylab::compareImages(small.render(view), halve(big.render(view)), tolerance.channel).badShare;
+            std::printf("[ spread   ] %-14s %-16s %6.2f%% of pixels off across sizes\n", stage.id.c_str(), view.name.c_str(), share * 100.0);
+            if (share > worst) {
+                worst = share;
+                worstView = stage.id + " " + view.name;
+            }
+        }
+    }
+    std::printf("[ figure   ] largest solution-vs-solution spread across sizes: %.2f%% (%s); allowance %.1f%%\n", worst * 100.0,
+                worstView.c_str(), tolerance.maxBadShare * 100.0);
+    EXPECT_GT(worst, tolerance.maxBadShare);
 }

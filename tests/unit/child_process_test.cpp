@@ -17,8 +17,7 @@ namespace {
 
 ChildOutcome runToEnd(const std::string& script, const fs::path& log, double timeout = 10.0) {
     Child child({"/bin/sh", "-c", script}, log, ChildLimits{timeout, 0});
-    while (!child.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    return child.outcome();
+    return child.wait();
 }
 
 } // namespace
@@ -57,6 +56,6 @@ TEST(ChildProcess, TheMemoryLimitApplies) {
     ScratchDir dir;
     // ulimit -v reports the address-space limit in KiB.
     Child child({"/bin/sh", "-c", "ulimit -v"}, dir / "log.txt", ChildLimits{10.0, 512});
-    while (!child.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    child.wait();
     EXPECT_EQ(raylab::test::readFile(dir / "log.txt"), std::to_string(512 * 1024) + "\n");
 }

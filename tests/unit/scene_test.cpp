@@ -56,7 +56,9 @@ TEST(Scene, LoadsAGoodFile) {
 
 TEST(Scene, TheShippedScenesLoad) {
     for (const auto& entry : fs::directory_iterator(projectRoot() / "assets" / "scenes"))
-        if (entry.path().extension() == ".json") EXPECT_NO_THROW(loadScene(entry.path())) << entry.path();
+        if (entry.path().extension() == ".json") {
+            EXPECT_NO_THROW(loadScene(entry.path())) << entry.path();
+        }
 }
 
 TEST(Scene, BadFilesGiveOneLineErrorsThatSayWhere) {

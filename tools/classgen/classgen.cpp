@@ -9,6 +9,7 @@
 // tests/grading/broken/ (each on top of a solution), and 16 students
 // sharing every mistake of tests/mistakes/ (at most one per stage each).
 // expected.json: {student: {stage: "100" | "<100" | "not submitted" | "status:A|B"}}.
+#include "child_process.h"
 #include "error.h"
 #include "paths.h"
 #include "stage_catalog.h"
@@ -63,11 +64,13 @@ int main(int argc, char** argv) {
         const fs::path subs = out / "submissions";
         if (fs::exists(subs)) throw Error(subs.string() + " exists already");
         fs::create_directories(subs);
-        const fs::path exeDir = fs::read_symlink("/proc/self/exe").parent_path();
         const fs::path solved = out / "solved";
         fs::remove_all(solved);
-        std::string cmd = "'" + (exeDir / "raylab-labgen").string() + "' --solved '" + solved.string() + "' > /dev/null";
-        if (std::system(cmd.c_str()) != 0) throw Error("raylab-labgen --solved failed");
+        // execv, not a shell: any folder name works.
+        Child labgen({(executablePath().parent_path() / "raylab-labgen").string(), "--solved", solved.string()}, out / "labgen.log",
+                     ChildLimits{600.0, 0});
+        if (labgen.wait().exitCode != 0) throw Error("raylab-labgen --solved failed (" + labgen.outcome().describe() + "); see " + (out / "labgen.log").string());
+        fs::remove(out / "labgen.log");
 
         std::vector<std::string> stages;
         for (const StageInfo& s : allStages())

@@ -9,6 +9,10 @@ float intersectSphere(Ray ray, vec3 center, float radius)
     // TODO(01.a): solve the quadratic above for the nearest hit in front of
     // the ray origin. Return NO_HIT when the ray misses the sphere or the
     // sphere lies behind the origin. The camera may be inside a sphere.
+    // For a small sphere far away b*b - c cancels (guide, section 2): use
+    //     h = radius^2 - |oc - b d|^2
+    // and the roots q = -b - sign(b) (square root of h) and c / q (they
+    // multiply to c; the smaller is the near one).
     // Checked by: raylab check --stage 01 (all views).
     labTodo();
     return NO_HIT;

@@ -2,12 +2,16 @@
 //   point  - a surface point (a hit found by findClosest)
 //   normal - unit surface normal at the point (facing the eye)
 // uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
+#include "ray_offset.glsl"
+
 uniform int uShadows;
 
-// How far above the surface a shadow ray starts. A hit point computed in
-// floating point lies a tiny bit above or below the true surface; started
-// exactly there, the ray could hit its own surface ("shadow acne").
-const float SHADOW_OFFSET = 1e-3;
+// Where a shadow ray starts: offsetRayOrigin(point, side) (framework/shaders/
+// ray_offset.glsl) moves the point just off the surface, to the side `side`.
+// A hit point computed in floating point lies a tiny bit above or below the
+// true surface; started exactly there, the ray could hit its own surface
+// ("shadow acne"). How far is "just off" grows with the size of the
+// coordinates: a fixed distance fails in big scenes (guide, section 2).
 
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
@@ -17,7 +21,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     vec3 dir = toLight / distanceToLight;
 
     // TODO(03.a): start the shadow ray just off the surface, on the side it
-    // leaves from - the side the light is on: point + side * SHADOW_OFFSET,
+    // leaves from - the side the light is on: offsetRayOrigin(point, side),
     // with side = normal if the light is in front of the surface, -normal if
     // behind it.
     // Checked by: raylab check --stage 03 (views front, grazing).

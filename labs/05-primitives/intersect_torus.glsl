@@ -93,13 +93,19 @@ float intersectTorusLocal(Ray ray, float R, float r)
     float t = max(T_MIN - tEnter, 0.0);
     float tExit = -b + sqrt(h) - tEnter;
     if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: no marching from there (rare: only a lost root gets here)
+    // A secondary ray starts a hair off the surface (offsetRayOrigin): it
+    // must first get clear of it, or its own start would count as a hit.
+    float hitDistance = 1e-4 * r;
+    bool clear = false;
     for (int step = 0; step < 96 && t < tExit; ++step) {
         float dist = torusDistance(o + t * d, R, r);
-        if (dist < 1e-4 * r) {
+        if (dist >= hitDistance) {
+            clear = true;
+        } else if (clear) {
             float polished = polishTorusHit(o, d, t, R, r);
             return tEnter + (tEnter + polished > T_MIN ? polished : t);
         }
-        t += dist;
+        t += max(dist, hitDistance);
     }
     return NO_HIT;
 #endif

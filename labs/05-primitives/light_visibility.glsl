@@ -2,12 +2,16 @@
 //   point  - a surface point (a hit found by findClosest)
 //   normal - unit surface normal at the point (facing the eye)
 // uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
+#include "ray_offset.glsl"
+
 uniform int uShadows;
 
-// How far above the surface a shadow ray starts. A hit point computed in
-// floating point lies a tiny bit above or below the true surface; started
-// exactly there, the ray could hit its own surface ("shadow acne").
-const float SHADOW_OFFSET = 1e-3;
+// Where a shadow ray starts: offsetRayOrigin(point, side) (framework/shaders/
+// ray_offset.glsl) moves the point just off the surface, to the side `side`.
+// A hit point computed in floating point lies a tiny bit above or below the
+// true surface; started exactly there, the ray could hit its own surface
+// ("shadow acne"). How far is "just off" grows with the size of the
+// coordinates: a fixed distance fails in big scenes (guide, section 2).
 
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
@@ -17,7 +21,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     vec3 dir = toLight / distanceToLight;
 
     vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;
-    Ray shadowRay = Ray(point + side * SHADOW_OFFSET, dir);
+    Ray shadowRay = Ray(offsetRayOrigin(point, side), dir);
 
     Hit blocker;
     return !(findClosest(shadowRay, blocker) && blocker.t < distanceToLight);

@@ -8,7 +8,7 @@
 float intersectPlane(Ray ray, vec3 normal, float offset)
 {
     float facing = dot(normal, ray.dir);
-    if (abs(facing) < 1e-8) return NO_HIT;
+    if (abs(facing) < 1e-6) return NO_HIT;
     float t = (offset - dot(normal, ray.origin)) / facing;
     return t > T_MIN ? t : NO_HIT;
 }

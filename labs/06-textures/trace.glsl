@@ -6,6 +6,8 @@
 // the reflected ray is followed at once. When a path ends (a matte surface,
 // the sky, or the depth limit), the next waiting ray is popped. When the
 // stack is empty, the pixel is done.
+#include "ray_offset.glsl"
+
 uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys)
 
 const int MAX_DEPTH = 8;
@@ -17,8 +19,8 @@ struct PendingRay {
     int depth;    // rays on its path so far, itself included (primary ray: 1)
 };
 
-// How far off the surface secondary rays start (see lab 03).
-const float RAY_OFFSET = 1e-3;
+// Secondary rays start just off the surface, on the side they leave from:
+// offsetRayOrigin(point, side) (framework/shaders/ray_offset.glsl, see lab 03).
 
 // Every ray ends its path or splits in two, at most MAX_DEPTH - 1 times:
 // 2^MAX_DEPTH bounds the rays of one pixel, and keeps the loop finite.
@@ -59,16 +61,22 @@ vec3 trace(Ray primary)
                     float F = 1.0;  // total internal reflection
                     if (refracted != vec3(0.0)) {
                         float cosTransmitted = -dot(refracted, normal);
+#ifdef RAYLAB_NAIVE_NUMERICS
+                        // Schlick with the incident cosine also inside the glass:
+                        // badly wrong near the critical angle (tests/numerics/fresnel_test.cpp).
+                        F = fresnelDielectric(cosIncident, m.ior);
+#else
                         F = fresnelDielectric(entering ? cosIncident : cosTransmitted, m.ior);
+#endif
                         if (stackSize < MAX_DEPTH) {
-                            stack[stackSize] = PendingRay(Ray(point - normal * RAY_OFFSET, refracted),
+                            stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), refracted),
                                                           current.weight * (1.0 - F), current.depth + 1);
                             ++stackSize;
                         }
                     }
                     reflectance = vec3(F);
                 }
-                current = PendingRay(Ray(point + normal * RAY_OFFSET, reflect(current.ray.dir, normal)),
+                current = PendingRay(Ray(offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)),
                                      current.weight * reflectance, current.depth + 1);
                 pathGoesOn = true;
             }

@@ -1,6 +1,6 @@
 // Stage 08 - the full tracer of the demo: every kind of object, textures,
 // normal maps, sky box, glow, shadows, reflection and refraction to depth 8,
-// and the colour modes.
+// and the colour modes. No NaN or Inf reaches the framebuffer (see main()).
 #include "ray.glsl"
 #include "scene_spheres.glsl"
 #include "scene_materials.glsl"
@@ -27,10 +27,27 @@ in vec3 vsRay;
 uniform vec3 uEye;
 out vec4 fragColor;
 
+// What a pixel shows when its colour is NaN or infinite (a 0/0 or an
+// overflow somewhere in the tracer): magenta, the colour `raylab check`,
+// grading and `raylab render --out *.pfm` give NaN pixels when they read a
+// float frame. Visible rather than black on purpose - black would hide the
+// bug as a dark speck, and an 8-bit framebuffer would turn the NaN into an
+// undefined value. (tests/numerics/degenerate_test.cpp provokes it.)
+const vec3 NON_FINITE_COLOR = vec3(1.0, 0.0, 1.0);
+
+// True when no channel is NaN or +-Inf: their exponent bits are all ones.
+// Tested on the bits, because a compiler may assume that x != x is false.
+bool isFiniteColor(vec3 c)
+{
+    uvec3 exponent = floatBitsToUint(c) & uvec3(0x7f800000u);
+    return all(notEqual(exponent, uvec3(0x7f800000u)));
+}
+
 void main()
 {
     Ray primary = Ray(uEye, normalize(vsRay));
     vec3 color = trace(primary);
     if (uGlow != 0) color += sunGlow(primary);
-    fragColor = vec4(labOverlay(applyColorMode(color)), 1.0);
+    color = labOverlay(applyColorMode(color));
+    fragColor = vec4(isFiniteColor(color) ? color : NON_FINITE_COLOR, 1.0);
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <filesystem>
 #include <limits>
 
 namespace raylab::numerics {
@@ -25,7 +27,22 @@ double percentile(std::vector<double> values, double p) {
 std::vector<glm::vec4> runSolution(const FunctionSpec& spec, const std::string& stageId, const std::vector<std::string>& extraDefines) {
     ensureGlContext();
     const StageInfo& stage = findStage(stageId);
-    return runHarness(spec, stage, solutionSources(stage), extraDefines);
+    StageSources sources = solutionSources(stage);
+    // The tests' own GLSL helpers (glsl/), found before the solution's files.
+    sources.search.insert(sources.search.begin(), std::filesystem::path(RAYLAB_SOURCE_DIR) / "tests" / "numerics" / "glsl");
+    // The harness draws one pixel per case in a single row: long tables go
+    // in pieces that fit every driver's texture and framebuffer width.
+    constexpr std::size_t kChunk = 8192;
+    if (spec.cases.size() <= kChunk) return runHarness(spec, stage, sources, extraDefines);
+    std::vector<glm::vec4> all;
+    FunctionSpec piece = spec;
+    for (std::size_t first = 0; first < spec.cases.size(); first += kChunk) {
+        std::size_t last = std::min(spec.cases.size(), first + kChunk);
+        piece.cases.assign(spec.cases.begin() + std::ptrdiff_t(first), spec.cases.begin() + std::ptrdiff_t(last));
+        std::vector<glm::vec4> got = runHarness(piece, stage, sources, extraDefines);
+        all.insert(all.end(), got.begin(), got.end());
+    }
+    return all;
 }
 
 } // namespace raylab::numerics

@@ -19,7 +19,9 @@ double floatUlp(double x);
 // The p-th percentile (0..100) of VALUES (sorted copy); 0 for none.
 double percentile(std::vector<double> values, double p);
 
-// Runs SPEC's cases through stage ID's solution with EXTRADEFINES.
+// Runs SPEC's cases through stage ID's solution with EXTRADEFINES. The
+// harness finds tests/numerics/glsl/ (the tests' GLSL helpers) first, and
+// any number of cases is run in pieces.
 std::vector<glm::vec4> runSolution(const FunctionSpec& spec, const std::string& stageId, const std::vector<std::string>& extraDefines = {});
 
 inline float f32(double x) { return float(x); }

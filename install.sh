@@ -25,6 +25,7 @@ packages=(
   libimgui-dev                                     # on-screen overlay (Dear ImGui + its SDL2/OpenGL3 backends)
   libgtest-dev libgmock-dev                        # tests
   glslang-tools                                    # Khronos reference GLSL compiler (tests)
+  gnuplot-nox                                      # `raylab bench` speed-vs-error plot (bench.png)
   xvfb xauth                                       # windowed-mode tests without a display
 )
 

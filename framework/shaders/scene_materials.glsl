@@ -19,6 +19,7 @@ struct Material {
     int normalMap;    // layer of uTextures, -1: none (stage 07)
 };
 
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform vec3 uMatAmbient[MAX_MATERIALS];
 uniform vec3 uMatDiffuse[MAX_MATERIALS];
 uniform vec3 uMatSpecular[MAX_MATERIALS];
@@ -30,6 +31,7 @@ uniform vec3 uMatK[MAX_MATERIALS];
 uniform int uMatTexture[MAX_MATERIALS];
 uniform int uMatNormalMap[MAX_MATERIALS];
 uniform int uSphereMaterial[MAX_SPHERES];   // material index of each sphere
+#endif
 
 Material materialAt(int m)
 {

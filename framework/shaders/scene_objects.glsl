@@ -17,27 +17,37 @@ int objectIndex(int id) { return id - objectKind(id) * OBJECT_KIND_STRIDE; }
 
 
 // Planes: all points p with dot(normal, p) = offset.
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform int uPlaneCount;
 uniform vec4 uPlanes[MAX_PLANES];            // xyz = unit normal, w = offset
 uniform float uPlaneTileSize[MAX_PLANES];    // a texture repeats every this many units
 uniform int uPlaneMaterial[MAX_PLANES];
+#endif
 
 // Discs: the points of a plane within `radius` of the centre.
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform int uDiscCount;
 uniform vec4 uDiscs[MAX_DISCS];              // xyz = centre, w = radius
 uniform vec3 uDiscNormals[MAX_DISCS];        // unit
 uniform int uDiscMaterial[MAX_DISCS];
+#endif
 
 // Triangles: corners 3i, 3i+1, 3i+2, counter-clockwise seen from the front.
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform int uTriangleCount;
 uniform vec3 uTriangleVertices[3 * MAX_TRIANGLES];
 uniform int uTriangleMaterial[MAX_TRIANGLES];
+#endif
 
 // Tori: a ring of radius `major` (centre to the middle of the tube) with a
 // tube of radius `minor`. uTorusToLocal turns world directions into the
 // torus's own frame, where its axis is +z.
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform int uTorusCount;
 uniform vec4 uTori[MAX_TORI];                // xyz = centre, w = major radius
 uniform float uTorusMinor[MAX_TORI];
+#endif
 uniform mat3 uTorusToLocal[MAX_TORI];
+#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
 uniform int uTorusMaterial[MAX_TORI];
+#endif

@@ -74,7 +74,10 @@ int cmdDemo(const DemoOptions& demo) {
     // Everything that can fail on bad input (scene, shaders) fails before the
     // output folder is made.
     auto context = createHeadlessContext(demo.backend);
-    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height);
+    ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
+    if (demo.noBvh) variant.bvh = false;
+    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height, PixelFormat::Rgba8, kFragmentEntry,
+                           variant);
     const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);
 
     const FlyThrough path;
@@ -90,9 +93,9 @@ int cmdDemo(const DemoOptions& demo) {
         writePngAtomic(renderer.read(), outDir / frameName(i));  // read back outside the timed part
     }
     FrameTiming timing = summarizeFrameTimes(ms);
-    std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s backend, %s\n", stage.id.c_str(),
+    std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised shader, %s backend, %s\n", stage.id.c_str(),
                 setup.scene.file.c_str(), setup.size.width, setup.size.height, setup.settings.maxDepth,
-                setup.settings.shadows ? "on" : "off", context->backendName().c_str(), glDescription().c_str());
+                setup.settings.shadows ? "on" : "off", variant.bvh ? "BVH" : "linear search", context->backendName().c_str(), glDescription().c_str());
     std::printf("  frame time: %s\n", timing.summary().c_str());
     std::printf("  %d frame%s written to %s\n", demo.frames, demo.frames == 1 ? "" : "s",
                 std::filesystem::absolute(outDir).lexically_normal().c_str());

@@ -5,6 +5,7 @@
 #include "stage_setup.h"
 
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -17,7 +18,20 @@ struct RunOptions {
 };
 int cmdRun(const StageOptions& stage, const RunOptions& run);
 
-int cmdRender(const StageOptions& stage, const std::string& outFile, Backend backend);
+struct RenderOptions {
+    std::string outFile;        // .png (a picture) or .pfm (raw floats)
+    Backend backend = Backend::Auto;
+    std::string view = "color"; // color, depth, normal, id, bounces, stack (debug_views.h)
+    bool reference = false;     // draw with the CPU reference tracer instead of the GPU
+};
+int cmdRender(const StageOptions& stage, const RenderOptions& render);
+
+// `raylab rays`: the GPU's primary rays to a file (format: ray_dump.h).
+int cmdRays(const StageOptions& stage, const std::string& outFile, Backend backend);
+
+// `raylab trace --pixel X,Y`: one pixel's path from the CPU reference tracer
+// (no OpenGL context). PIXEL is "X,Y", 0,0 the top left.
+int cmdTrace(const StageOptions& stage, const std::string& pixel);
 
 struct DemoOptions {
     std::string stage;   // empty: the highest finished stage
@@ -28,6 +42,7 @@ struct DemoOptions {
     bool headless = false;
     bool noShadows = false;
     int maxDepth = RenderSettings::kMaxDepth;
+    bool noBvh = false;
     Backend backend = Backend::Auto;
 };
 int cmdDemo(const DemoOptions& demo);
@@ -54,6 +69,17 @@ int cmdGrade(const GradeOptions& grade);
 int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);
 int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student, const std::string& outDir,
                  unsigned seed);
+
+struct BenchOptions {
+    std::string outDir;               // bench.csv, bench.md, bench.png go here (made when missing)
+    bool quick = false;               // a small grid for CI: lite at 160x120, one frame per setting
+    std::vector<std::string> scenes;  // empty: lite and pro (quick: lite)
+    std::string size;                 // empty: 800x600 (quick: 160x120)
+    int frames = 0;                   // timed frames per setting; 0: 5 (quick: 1)
+    Backend backend = Backend::Auto;
+    std::string commandLine;          // for the report
+};
+int cmdBench(const BenchOptions& bench);
 
 // True when a window can be opened (X11 or Wayland display set).
 bool displayAvailable();

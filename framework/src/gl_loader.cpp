@@ -21,7 +21,7 @@ namespace {
     X(GenVertexArrays) X(GenerateMipmap) X(GetProgramInfoLog) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv)      \
     X(GetUniformLocation) X(LinkProgram) X(ShaderSource) X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f)          \
     X(Uniform3fv) X(Uniform4fv) X(Uniform1fv) X(Uniform1iv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)     \
-    X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D)
+    X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)
 
 bool allLoaded(std::string* missing) {
 #define RAYLAB_CHECK(name) \

@@ -1,6 +1,7 @@
 #include "grade_report.h"
 
 #include "atomic_file.h"
+#include "csv_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -170,21 +171,8 @@ const StageResult* findStage(const StudentResult& student, const std::string& id
 
 // ---------------------------------------------------------------- CSV
 
-// RFC 4180 field: quoted when it holds a comma, quote, CR or LF, quotes
-// doubled. Text that a spreadsheet would run as a formula (=, +, -, @ first)
-// gets a leading apostrophe: a folder name is not allowed to compute.
-std::string csvField(const std::string& raw, bool text = true) {
-    std::string s = text ? cleanText(raw) : raw;
-    if (text && !s.empty() && (s[0] == '=' || s[0] == '+' || s[0] == '-' || s[0] == '@' || s[0] == '\t' || s[0] == '\r'))
-        s.insert(0, 1, '\'');
-    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"') out += '"';
-        out += c;
-    }
-    return out + "\"";
-}
+// A CSV text field (csv_text.h) of cleaned text.
+std::string csvField(const std::string& raw) { return csvText(cleanText(raw)); }
 
 // ---------------------------------------------------------------- HTML
 

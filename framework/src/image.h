@@ -26,6 +26,11 @@ Image loadPng(const std::filesystem::path& file);
 // grading read frames this way, so that a NaN is seen, not turned black.
 Image imageFromFloats(const std::vector<float>& rgba, int width, int height, long* nonFinite);
 
+// SRC scaled to W x H bilinearly, pixel centres onto pixel centres, clamped
+// at the borders, rounded to 8 bits. (Texture layers of different sizes are
+// brought to one size this way; the reference tracer must get the same bytes.)
+Image resampledBilinear(const Image& src, int w, int h);
+
 // Writes FILE.tmp-PID next to FILE, then renames it over FILE.
 void writePngAtomic(const Image& image, const std::filesystem::path& file);
 

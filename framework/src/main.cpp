@@ -51,11 +51,29 @@ int main(int argc, char** argv) {
 
     StageOptions renderStage;
     renderStage.size = "800x600";
-    std::string renderOut, renderBackend = "auto";
-    CLI::App* renderCmd = app.add_subcommand("render", "render one frame headless to a PNG file");
+    RenderOptions render;
+    std::string renderBackend = "auto";
+    CLI::App* renderCmd = app.add_subcommand("render", "render one frame (or a debug view of it) headless to a PNG or PFM file");
     CLI::Option* renderLab = addStageOptions(renderCmd, renderStage, true);
-    renderCmd->add_option("--out", renderOut, "output PNG file")->required();
+    renderCmd->add_option("--out", render.outFile, "output file: .png (a picture) or .pfm (raw floats)")->required();
     renderCmd->add_option("--backend", renderBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+    renderCmd->add_option("--view", render.view, "color, depth, normal, id; with --reference also bounces, stack")->capture_default_str();
+    renderCmd->add_flag("--reference", render.reference, "draw with the CPU reference tracer instead of the GPU");
+
+    StageOptions raysStage;
+    raysStage.size = "800x600";
+    std::string raysOut, raysBackend = "auto";
+    CLI::App* raysCmd = app.add_subcommand("rays", "write the primary rays the GPU computes for every pixel to a file");
+    CLI::Option* raysLab = addStageOptions(raysCmd, raysStage, true);
+    raysCmd->add_option("--out", raysOut, "output file (RLRAYS01: header, then origin and direction per pixel)")->required();
+    raysCmd->add_option("--backend", raysBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+
+    StageOptions traceStage;
+    traceStage.size = "800x600";
+    std::string tracePixel;
+    CLI::App* traceCmd = app.add_subcommand("trace", "print one pixel's path bounce by bounce, from the CPU reference tracer (no GPU)");
+    CLI::Option* traceLab = addStageOptions(traceCmd, traceStage, true);
+    traceCmd->add_option("--pixel", tracePixel, "the pixel X,Y of the --size image (0,0 top left)")->required();
 
     GradeOptions grade;
     CLI::App* gradeCmd = app.add_subcommand("grade", "grade a whole class headlessly: one folder per student, each laid out like labs/");
@@ -93,7 +111,19 @@ int main(int argc, char** argv) {
     demoCmd->add_flag("--no-shadows", demo.noShadows, "shadows off (key 1 in the window)");
     demoCmd->add_option("--depth", demo.maxDepth, "rays per path, 1..8 (arrow keys in the window)")->capture_default_str();
     demoCmd->add_flag("--headless", demo.headless, "render to a file even when a display is available");
+    demoCmd->add_flag("--no-bvh", demo.noBvh, "stage 08: test every sphere for every ray instead of walking the BVH (used from 32 spheres on)");
     demoCmd->add_option("--backend", demoBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
+
+    BenchOptions bench;
+    std::string benchBackend = "auto";
+    CLI::App* benchCmd = app.add_subcommand("bench", "speed against error: frame and compile times and error against the reference tracer, "
+                                                     "for the lite and pro scenes and a grid of settings (bench.csv, bench.md, bench.png)");
+    benchCmd->add_option("--out", bench.outDir, "folder for bench.csv, bench.md and bench.png (made when missing)")->required();
+    benchCmd->add_flag("--quick", bench.quick, "a small grid (lite, 160x120, one frame per setting): a smoke test, under a minute");
+    benchCmd->add_option("--scenes", bench.scenes, "comma-separated: lite, pro or scene files (default: lite,pro)")->delimiter(',');
+    benchCmd->add_option("--size", bench.size, "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
+    benchCmd->add_option("--frames", bench.frames, "timed frames per setting (default 5, quick 1)");
+    benchCmd->add_option("--backend", benchBackend, "headless backend: auto, egl or osmesa")->capture_default_str();
 
     StageOptions checkStage;
     checkStage.size = "160x120";
@@ -120,12 +150,18 @@ int main(int argc, char** argv) {
 
     runStage.labGiven = runLab->count() > 0;
     renderStage.labGiven = renderLab->count() > 0;
+    raysStage.labGiven = raysLab->count() > 0;
     checkStage.labGiven = checkLab->count() > 0;
+    traceStage.labGiven = traceLab->count() > 0;
 
     try {
         if (app.got_subcommand("stages")) return cmdStages();
         if (runCmd->parsed()) return cmdRun(runStage, run);
-        if (renderCmd->parsed()) return cmdRender(renderStage, renderOut, parseBackend(renderBackend));
+        if (renderCmd->parsed()) {
+            render.backend = parseBackend(renderBackend);
+            return cmdRender(renderStage, render);
+        }
+        if (raysCmd->parsed()) return cmdRays(raysStage, raysOut, parseBackend(raysBackend));
         if (gradeCmd->parsed()) return cmdGrade(grade);
         if (gradeItemCmd->parsed()) return cmdGradeItem(itemStage, itemLab, itemStudent, itemOut, itemSeed);
         if (gradeRefCmd->parsed()) return cmdGradeReference(itemStage, itemOut, itemSeed);
@@ -133,10 +169,16 @@ int main(int argc, char** argv) {
             demo.backend = parseBackend(demoBackend);
             return cmdDemo(demo);
         }
+        if (benchCmd->parsed()) {
+            bench.backend = parseBackend(benchBackend);
+            for (int i = 0; i < argc; ++i) bench.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "raylab");
+            return cmdBench(bench);
+        }
         if (checkCmd->parsed()) {
             check.backend = parseBackend(checkBackend);
             return cmdCheck(checkStage, check);
         }
+        if (traceCmd->parsed()) return cmdTrace(traceStage, tracePixel);
     } catch (const ShaderError& e) {
         std::fputs(e.log().c_str(), stderr);
         std::fprintf(stderr, "raylab: error: shader does not compile: %s\n", e.what());

@@ -83,11 +83,13 @@ SourceLine ShaderSource::where(int assembledLine) const {
 }
 
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
-                            const std::vector<std::string>& defines) {
+                            const std::vector<std::string>& defines, const std::string& prelude) {
     Assembler a{search, {}, {}};
     a.emit(kGlslVersionLine, kGenerated, 1);
     int n = 2;
     for (const std::string& d : defines) a.emit("#define " + d, kGenerated, n++);
+    std::istringstream lines(prelude);
+    for (std::string line; std::getline(lines, line);) a.emit(line, kGenerated, n++);
     a.include(a.resolve(entry, "", 0));
     return a.out;
 }

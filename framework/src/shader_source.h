@@ -33,8 +33,9 @@ inline constexpr const char* kGlslVersionLine = "#version 330 core";
 // replace a file of an earlier one). Each file is included once. Include names
 // must be plain relative names inside the search path (no "..", no absolute
 // paths). Throws Error naming the including file and line on any problem.
+// PRELUDE (generated GLSL, e.g. a scene's constants) goes after the defines.
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
-                            const std::vector<std::string>& defines);
+                            const std::vector<std::string>& defines, const std::string& prelude = {});
 
 // Rewrites the line references of a compiler or linker log (Mesa
 // "0:12(5): ...", NVIDIA "0(12) : ...", glslang/AMD "ERROR: 0:12: ...") into

@@ -1,6 +1,7 @@
 #include "stage_renderer.h"
 
 #include "error.h"
+#include "scene_baking.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -33,6 +34,8 @@ void checkSceneFits(const StageInfo& stage, const Scene& scene) {
 // Texture units: the scene's pictures, then the sky box.
 constexpr int kTextureUnit = 0;
 constexpr int kSkyUnit = 1;
+constexpr int kBvhNodeUnit = 2;
+constexpr int kBvhItemUnit = 3;
 
 void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
     if (!values.empty()) glUniform1iv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
@@ -61,17 +64,46 @@ void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<gl
 
 } // namespace
 
-StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format)
-    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)) {
+StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format,
+                             std::string fragmentEntry, ShaderVariant variant)
+    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)),
+      variant_(std::move(variant)), fragmentEntry_(std::move(fragmentEntry)) {
     checkSceneFits(stage_, scene_);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
+    if (variant_.bvh) bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
     rebuild();
 }
 
+std::vector<std::string> ShaderVariant::defines() const {
+    std::vector<std::string> d;
+    if (bvh) d.push_back("RAYLAB_BVH");
+    if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
+    if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
+    return d;
+}
+
+ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
+    // Measured with `raylab bench` at 800x600, depth 8 (README, "Speed and
+    // accuracy"): with 10 spheres the BVH costs more than it saves, with 110
+    // it saves a fifth of the frame.
+    constexpr std::size_t kSpheresForBvh = 32;
+    ShaderVariant v;
+    v.bvh = scene.spheres.size() >= kSpheresForBvh;
+    v.specialized = true;
+    return v;
+}
+
 void StageRenderer::rebuild() {
-    ShaderSource vertex = assembleShader(kVertexEntry, sources_.search, stage_.defines());
-    ShaderSource fragment = assembleShader(kFragmentEntry, sources_.search, stage_.defines());
+    // A specialised program sizes its arrays to the scene (the stage's
+    // limits were checked above all the same).
+    std::vector<std::string> defines = variant_.specialized ? bakedSceneDefines(scene_) : stage_.defines();
+    if (variant_.specialized)
+        for (const std::string& d : stage_.extraDefines) defines.push_back(d);
+    for (const std::string& d : variant_.defines()) defines.push_back(d);
+    std::string prelude = variant_.specialized ? bakedSceneGlsl(scene_) : std::string();
+    ShaderSource vertex = assembleShader(kVertexEntry, sources_.search, defines);
+    ShaderSource fragment = assembleShader(fragmentEntry_, sources_.search, defines, prelude);
     auto program = std::make_unique<ShaderProgram>(vertex, fragment);
     program_ = std::move(program);
     files_ = fragment.files;
@@ -130,6 +162,8 @@ void StageRenderer::uploadSceneConstants() {
     // Pictures, sky box and the glowing sphere.
     glUniform1i(p.uniform("uTextures"), kTextureUnit);
     glUniform1i(p.uniform("uSky"), kSkyUnit);
+    glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
+    glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
     glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);
     glUniform1i(p.uniform("uGlowSphere"), scene_.glow.sphere);
     glUniform3fv(p.uniform("uGlowColor"), 1, glm::value_ptr(scene_.glow.color));
@@ -220,6 +254,7 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     glUniform1i(p.uniform("uColorMode"), settings.colorMode);
     if (textures_) textures_->bind(kTextureUnit);
     if (sky_) sky_->bind(kSkyUnit);
+    if (bvh_) bvh_->bind(kBvhNodeUnit, kBvhItemUnit);
     // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
     std::vector<glm::vec4> spheres;

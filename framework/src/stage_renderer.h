@@ -11,8 +11,11 @@
 #include "stage_sources.h"
 #include "texture.h"
 
+#include "bvh_buffers.h"
+
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace raylab {
@@ -27,6 +30,21 @@ struct RenderSettings {
     int colorMode = 0;         // Up/Down, --color-mode (stage 08): index into kColorModes
 };
 
+// How the stage's shader is compiled (fixed per program, unlike RenderSettings).
+// `raylab bench` compares the choices; the defaults are the fastest correct ones.
+struct ShaderVariant {
+    bool bvh = true;               // RAYLAB_BVH: stage 08 finds bounded objects through a BVH (bvh.h)
+    bool specialized = false;      // the scene's static data compiled in as constants (scene_baking.h)
+    bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
+    bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
+    std::vector<std::string> defines() const;  // the defines for the switches above
+
+    // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the
+    // scene compiled in, and the BVH only where there are enough spheres to
+    // repay walking it (lite's 10 are found faster by the plain loop).
+    static ShaderVariant fastestFor(const Scene& scene);
+};
+
 // The seed's colour modes: which input channel feeds red, green and blue.
 inline constexpr const char* kColorModes[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
 inline constexpr int kColorModeCount = 5;
@@ -35,8 +53,10 @@ class StageRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene, missing file) or
     // ShaderError (compile/link error, mapped to file:line).
+    // FRAGMENTENTRY: the entry fragment shader (another one, e.g. the debug
+    // views' view_main.frag, gets the same uniforms).
     StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
-                  PixelFormat format = PixelFormat::Rgba8);
+                  PixelFormat format = PixelFormat::Rgba8, std::string fragmentEntry = "main.frag", ShaderVariant variant = {});
 
     void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
     Image read() const { return target_->read(); }
@@ -46,6 +66,7 @@ public:
         target_ = std::make_unique<Framebuffer>(width, height, format);
     }
     const Scene& scene() const { return scene_; }
+    const ShaderVariant& variant() const { return variant_; }
 
     // Rebuilds the program from the files on disk. On failure the previous
     // program stays in use and the error is thrown.
@@ -69,8 +90,11 @@ private:
     std::unique_ptr<ShaderProgram> program_;
     std::unique_ptr<TextureArray> textures_;
     std::unique_ptr<CubeMap> sky_;
+    ShaderVariant variant_;
+    std::unique_ptr<BvhBuffers> bvh_;  // when variant_.bvh
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
+    std::string fragmentEntry_;
 };
 
 // Where the framework's vertex shader and a stage's entry fragment shader are.

@@ -19,27 +19,6 @@ std::vector<std::uint8_t> bottomRowFirst(const Image& image) {
     for (int y = 0; y < image.height; ++y) std::memcpy(&rows[std::size_t(image.height - 1 - y) * row], image.pixel(0, y), row);
     return rows;
 }
-// Bilinear resampling to W x H (pixel centres mapped onto pixel centres).
-Image resampled(const Image& src, int w, int h) {
-    if (src.width == w && src.height == h) return src;
-    Image out(w, h);
-    for (int y = 0; y < h; ++y) {
-        float sy = std::clamp((float(y) + 0.5f) * float(src.height) / float(h) - 0.5f, 0.0f, float(src.height - 1));
-        int y0 = int(sy), y1 = std::min(y0 + 1, src.height - 1);
-        float fy = sy - float(y0);
-        for (int x = 0; x < w; ++x) {
-            float sx = std::clamp((float(x) + 0.5f) * float(src.width) / float(w) - 0.5f, 0.0f, float(src.width - 1));
-            int x0 = int(sx), x1 = std::min(x0 + 1, src.width - 1);
-            float fx = sx - float(x0);
-            for (int c = 0; c < 4; ++c) {
-                float top = float(src.pixel(x0, y0)[c]) * (1 - fx) + float(src.pixel(x1, y0)[c]) * fx;
-                float bottom = float(src.pixel(x0, y1)[c]) * (1 - fx) + float(src.pixel(x1, y1)[c]) * fx;
-                out.pixel(x, y)[c] = std::uint8_t(std::lround(top * (1 - fy) + bottom * fy));
-            }
-        }
-    }
-    return out;
-}
 } // namespace
 
 TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
@@ -64,7 +43,7 @@ TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
     int layers = std::max(1, int(images.size()));
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, std::max(1, width_), std::max(1, height_), layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     for (std::size_t i = 0; i < images.size(); ++i) {
-        std::vector<std::uint8_t> rows = bottomRowFirst(resampled(images[i], width_, height_));
+        std::vector<std::uint8_t> rows = bottomRowFirst(resampledBilinear(images[i], width_, height_));
         glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(i), width_, height_, 1, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
     }
     // No mipmaps: the tracer samples at level 0 (texture derivatives are

@@ -24,7 +24,8 @@ ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync)
 void ViewerApp::init() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
-    renderer_ = std::make_unique<StageRenderer>(*setup_.stage, setup_.sources, setup_.scene, w, h);
+    renderer_ = std::make_unique<StageRenderer>(*setup_.stage, setup_.sources, setup_.scene, w, h, PixelFormat::Rgba8, kFragmentEntry,
+                                                ShaderVariant::fastestFor(setup_.scene));
     reportOpenTodos(renderer_->openTodos());
     watcher_.watch(renderer_->sourceFiles());
     time_ = setup_.time;

@@ -1,13 +1,13 @@
-// Does light `light` reach `point`, or is something in between?
+// Does light `light` reach `point`? Lab 03's answer, with one change for
+// speed: the shadow ray asks findBlocker (find_closest.glsl), which may stop
+// at the first object between the point and the light, instead of searching
+// for the nearest one. (Provided.)
 //   point  - a surface point (a hit found by findClosest)
 //   normal - unit surface normal at the point (facing the eye)
 // uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
-uniform int uShadows;
+#include "ray_offset.glsl"
 
-// How far above the surface a shadow ray starts. A hit point computed in
-// floating point lies a tiny bit above or below the true surface; started
-// exactly there, the ray could hit its own surface ("shadow acne").
-const float SHADOW_OFFSET = 1e-3;
+uniform int uShadows;
 
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
@@ -15,10 +15,6 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     vec3 toLight = uLightPositions[light] - point;
     float distanceToLight = length(toLight);
     vec3 dir = toLight / distanceToLight;
-
-    vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;
-    Ray shadowRay = Ray(point + side * SHADOW_OFFSET, dir);
-
-    Hit blocker;
-    return !(findClosest(shadowRay, blocker) && blocker.t < distanceToLight);
+    vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;  // the side the light is on
+    return !findBlocker(Ray(offsetRayOrigin(point, side), dir), distanceToLight);
 }

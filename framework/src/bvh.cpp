@@ -1,0 +1,136 @@
+#include "bvh.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace raylab {
+
+float Aabb::area() const {
+    glm::vec3 e = hi - lo;
+    if (e.x < 0.0f || e.y < 0.0f || e.z < 0.0f) return 0.0f;
+    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
+bool Aabb::contains(const Aabb& b) const {
+    return glm::all(glm::lessThanEqual(lo, b.lo)) && glm::all(glm::greaterThanEqual(hi, b.hi));
+}
+
+Aabb sphereBounds(const Scene& scene, int index) {
+    const Sphere& s = scene.spheres.at(std::size_t(index));
+    glm::vec3 sweep = glm::abs(s.motion.axis) * std::fabs(s.motion.amplitude);
+    Aabb box{s.center - glm::vec3(s.radius) - sweep, s.center + glm::vec3(s.radius) + sweep};
+    // Pad a little: float rounding in the GLSL slab test must never cut off
+    // a surface that touches the box.
+    glm::vec3 pad = 1e-4f * (glm::abs(box.lo) + glm::abs(box.hi)) + glm::vec3(1e-5f);
+    box.lo -= pad;
+    box.hi += pad;
+    return box;
+}
+
+namespace {
+
+struct Builder {
+    const int maxLeaf;
+    std::vector<Aabb> boxes;       // per item
+    std::vector<glm::vec3> centres;
+    std::vector<int> order;        // item indices, partitioned in place
+    std::vector<BvhNode> nodes;
+    int depth = 0;
+
+    Aabb boundsOf(int begin, int end) const {
+        Aabb b;
+        for (int i = begin; i < end; ++i) b.grow(boxes[std::size_t(order[std::size_t(i)])]);
+        return b;
+    }
+
+    // Binned SAH split of items [begin, end): returns the split position, or
+    // -1 when keeping them in one leaf is cheaper (and allowed).
+    int split(int begin, int end, const Aabb& box) {
+        constexpr int kBins = 12;
+        const int n = end - begin;
+        Aabb centreBox;
+        for (int i = begin; i < end; ++i) centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
+        float bestCost = std::numeric_limits<float>::max();
+        int bestAxis = -1, bestBin = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            float lo = centreBox.lo[axis], hi = centreBox.hi[axis];
+            if (hi - lo < 1e-12f) continue;
+            Aabb bins[kBins];
+            int counts[kBins] = {};
+            auto binOf = [&](int item) {
+                int b = int(float(kBins) * (centres[std::size_t(item)][axis] - lo) / (hi - lo));
+                return std::clamp(b, 0, kBins - 1);
+            };
+            for (int i = begin; i < end; ++i) {
+                int item = order[std::size_t(i)];
+                int b = binOf(item);
+                bins[b].grow(boxes[std::size_t(item)]);
+                ++counts[b];
+            }
+            for (int cut = 1; cut < kBins; ++cut) {
+                Aabb left, right;
+                int nl = 0, nr = 0;
+                for (int b = 0; b < cut; ++b) { if (counts[b]) left.grow(bins[b]); nl += counts[b]; }
+                for (int b = cut; b < kBins; ++b) { if (counts[b]) right.grow(bins[b]); nr += counts[b]; }
+                if (nl == 0 || nr == 0) continue;
+                float cost = left.area() * float(nl) + right.area() * float(nr);
+                if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestBin = cut; }
+            }
+            if (bestAxis == axis) {
+                // Remember the partition for this axis now (bins depend on it).
+                auto mid = std::partition(order.begin() + begin, order.begin() + end, [&](int item) { return binOf(item) < bestBin; });
+                splitPos_ = int(mid - order.begin());
+            }
+        }
+        // Cost of a leaf vs. of traversing two children (box test ~ 1 object test).
+        float leafCost = box.area() * float(n);
+        if (bestAxis < 0) return n <= maxLeaf ? -1 : begin + n / 2;  // all centres equal: split by count
+        if (n <= maxLeaf && leafCost <= box.area() + bestCost) return -1;
+        return splitPos_;
+    }
+    int splitPos_ = 0;
+
+    void build(int nodeIndex, int begin, int end, int level) {
+        depth = std::max(depth, level);
+        if (level > kBvhMaxDepth) throw Error("BVH deeper than " + std::to_string(kBvhMaxDepth) + " levels: degenerate scene?");
+        Aabb box = boundsOf(begin, end);
+        nodes[std::size_t(nodeIndex)].box = box;
+        int mid = end - begin <= 1 ? -1 : split(begin, end, box);
+        if (mid < 0) {
+            nodes[std::size_t(nodeIndex)].first = begin;
+            nodes[std::size_t(nodeIndex)].count = end - begin;
+            return;
+        }
+        int left = int(nodes.size());
+        nodes.emplace_back();
+        nodes.emplace_back();
+        nodes[std::size_t(nodeIndex)].first = left;
+        nodes[std::size_t(nodeIndex)].count = 0;
+        build(left, begin, mid, level + 1);
+        build(left + 1, mid, end, level + 1);
+    }
+};
+
+} // namespace
+
+Bvh buildBvh(const Scene& scene, int maxLeaf) {
+    Bvh bvh;
+    if (scene.spheres.empty()) return bvh;
+    Builder b{std::max(1, maxLeaf), {}, {}, {}, {}};
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        b.boxes.push_back(sphereBounds(scene, int(i)));
+        b.centres.push_back(b.boxes.back().centre());
+        b.order.push_back(int(i));
+    }
+    b.nodes.emplace_back();
+    b.build(0, 0, int(b.order.size()), 1);
+    bvh.nodes = std::move(b.nodes);
+    bvh.items = b.order;
+    bvh.depth = b.depth;
+    return bvh;
+}
+
+} // namespace raylab

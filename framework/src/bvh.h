@@ -1,0 +1,62 @@
+#pragma once
+// A bounding volume hierarchy over a scene's spheres, built on the CPU once
+// per scene and traversed in GLSL by solution/08-full/find_closest.glsl.
+//
+// Why: with a linear search every ray tests every object - 110 spheres, 3
+// shadow rays per hit and up to 8 bounces make the pro scene slow. A BVH lets
+// a ray skip whole groups of spheres whose box it misses.
+//
+// Why spheres only: llvmpipe runs 8 pixels in lock-step and executes both
+// sides of a divergent `if`; a tree of mixed kinds needs an `if` on the kind
+// at every object, so every sphere test would also run the torus's long code
+// (measured: about five times slower than this). The few other objects stay
+// in plain loops.
+//
+// Moving spheres: a sphere's box covers its whole bob (centre +- amplitude
+// along the motion axis), so one hierarchy is valid at every time and never
+// has to be rebuilt or refitted.
+#include "scene.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace raylab {
+
+struct Aabb {
+    glm::vec3 lo{1e30f};
+    glm::vec3 hi{-1e30f};
+    void grow(const Aabb& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void grow(glm::vec3 p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    glm::vec3 centre() const { return 0.5f * (lo + hi); }
+    float area() const;  // surface area (0 for an empty box)
+    bool contains(const Aabb& b) const;
+};
+
+// A node is a leaf when count > 0: it holds items[first .. first + count).
+// An inner node has count == 0 and its two children at nodes[first] and
+// nodes[first + 1] (siblings are stored next to each other).
+struct BvhNode {
+    Aabb box;
+    int first = 0;
+    int count = 0;
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;  // nodes[0] is the root (absent when there are no items)
+    std::vector<int> items;      // sphere indices
+    int depth = 0;               // longest root-to-leaf path, in nodes
+};
+
+// The box of sphere INDEX over all times (see above), a little padded.
+Aabb sphereBounds(const Scene& scene, int index);
+
+// Builds the hierarchy of SCENE's spheres with the surface area heuristic
+// (binned), at most MAXLEAF spheres per leaf. Deterministic for a given scene.
+Bvh buildBvh(const Scene& scene, int maxLeaf = 2);
+
+// Longest path any traversal stack has to hold: the GLSL stack size must be
+// at least this (checked when the scene is loaded).
+inline constexpr int kBvhMaxDepth = 32;
+
+} // namespace raylab

@@ -1,0 +1,84 @@
+// `raylab bench --quick`: the smoke run CI makes of the speed-vs-error
+// benchmark. No timing is asserted (machines are shared and noisy); what is
+// asserted is that every setting was measured and that the error figures
+// mean something: the variants that must not change the picture (BVH,
+// specialised shader) have the default's error, and a cheaper setting that
+// does change it (depth 2) has more.
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <sstream>
+
+using namespace raylab::test;
+
+namespace {
+
+std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file) {
+    std::istringstream in(readFile(file));
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<std::map<std::string, std::string>> rows;
+    auto split = [](std::string l) {
+        if (!l.empty() && l.back() == '\r') l.pop_back();
+        std::vector<std::string> f;
+        std::stringstream ss(l);
+        for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+        return f;
+    };
+    std::getline(in, line);
+    header = split(line);
+    while (std::getline(in, line)) {
+        std::vector<std::string> f = split(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < header.size() && i < f.size(); ++i) row[header[i]] = f[i];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+double num(const std::map<std::string, std::string>& row, const std::string& key) { return std::stod(row.at(key)); }
+
+} // namespace
+
+TEST(Bench, QuickRunWritesTableCsvAndPlotWithMeaningfulErrors) {
+    ScratchDir dir;
+    CommandResult r = runRaylab("bench --quick --out " + quote((dir / "out").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    ASSERT_TRUE(fs::exists(dir / "out/bench.md")) << r.all();
+    ASSERT_TRUE(fs::exists(dir / "out/bench.png"));
+    auto rows = readCsv(dir / "out/bench.csv");
+    ASSERT_EQ(rows.size(), 4u) << readFile(dir / "out/bench.csv");
+    const auto *base = &rows[0], *linear = &rows[0], *spec = &rows[0], *shallow = &rows[0];
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("scene"), "lite");
+        EXPECT_GT(num(row, "frame_ms"), 0.0);
+        EXPECT_GT(num(row, "compile_ms"), 0.0);
+        if (row.at("bvh") == "0") linear = &row;
+        else if (row.at("specialized") == "1") spec = &row;
+        else if (row.at("depth") == "2") shallow = &row;
+        else base = &row;
+    }
+    std::printf("[ figure ] rmse: default %s, linear %s, specialised %s, depth 2 %s\n", base->at("rmse").c_str(), linear->at("rmse").c_str(),
+                spec->at("rmse").c_str(), shallow->at("rmse").c_str());
+    // The GPU default is close to the double reference ...
+    EXPECT_LT(num(*base, "rmse"), 0.02) << "the default frame is far from the reference";
+    // ... the BVH and the specialised shader draw the same picture ...
+    EXPECT_NEAR(num(*linear, "rmse"), num(*base, "rmse"), 0.002);
+    EXPECT_NEAR(num(*spec, "rmse"), num(*base, "rmse"), 0.002);
+    // ... and depth 2 loses the reflections the reference has.
+    EXPECT_GT(num(*shallow, "rmse"), 1.5 * num(*base, "rmse"));
+    EXPECT_NE(readFile(dir / "out/bench.md").find("raylab bench --quick"), std::string::npos) << "the table names its command";
+}
+
+TEST(Bench, BadInputFailsBeforeMeasuringAndWritesNothing) {
+    ScratchDir dir;
+    CommandResult r = runRaylab("bench --quick --scenes nosuch.json --out " + quote((dir / "out").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("nosuch.json"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    r = runRaylab("bench --quick --size 0x0 --out " + quote((dir / "out").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}

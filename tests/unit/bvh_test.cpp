@@ -1,0 +1,107 @@
+// The bounding volume hierarchy of stage 08 (framework/src/bvh.h): its
+// structure, checked on the pro scene. The GPU traversal is checked by
+// tests/e2e/bvh_images_test.cpp (images equal to the linear search).
+#include "bvh.h"
+#include "paths.h"
+#include "scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+using namespace raylab;
+
+namespace {
+
+Scene proScene() { return loadScene(projectRoot() / "assets/scenes/pro.json"); }
+
+std::vector<int> sphereIndices(const Scene& s) {
+    std::vector<int> ids;
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) ids.push_back(int(i));
+    return ids;
+}
+
+// Visits every node from the root; FN(node, depth).
+void walk(const Bvh& bvh, const std::function<void(const BvhNode&, int)>& fn) {
+    std::function<void(int, int)> go = [&](int n, int depth) {
+        const BvhNode& node = bvh.nodes.at(std::size_t(n));
+        fn(node, depth);
+        if (node.count == 0) {
+            go(node.first, depth + 1);
+            go(node.first + 1, depth + 1);
+        }
+    };
+    go(0, 1);
+}
+
+} // namespace
+
+TEST(Bvh, EverySphereSitsInExactlyOneLeaf) {
+    Scene scene = proScene();
+    Bvh bvh = buildBvh(scene);
+    std::vector<int> seen;
+    walk(bvh, [&](const BvhNode& n, int) {
+        for (int k = 0; k < n.count; ++k) seen.push_back(bvh.items.at(std::size_t(n.first + k)));
+    });
+    std::vector<int> expected = sphereIndices(scene);
+    std::sort(seen.begin(), seen.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(seen, expected) << "leaves hold " << seen.size() << " items, the scene has " << expected.size() << " spheres";
+}
+
+TEST(Bvh, EveryBoxHoldsItsChildrenAndObjects) {
+    Scene scene = proScene();
+    Bvh bvh = buildBvh(scene);
+    int failures = 0;
+    walk(bvh, [&](const BvhNode& n, int) {
+        if (n.count == 0) {
+            for (int c = 0; c < 2; ++c)
+                if (!n.box.contains(bvh.nodes[std::size_t(n.first + c)].box)) ++failures;
+        } else {
+            for (int k = 0; k < n.count; ++k)
+                if (!n.box.contains(sphereBounds(scene, bvh.items[std::size_t(n.first + k)]))) ++failures;
+        }
+    });
+    EXPECT_EQ(failures, 0) << "boxes that do not hold what is under them";
+}
+
+TEST(Bvh, TreeFitsTheGlslStackAndIsBalancedEnough) {
+    Bvh bvh = buildBvh(proScene());
+    int deepest = 0, leaves = 0;
+    walk(bvh, [&](const BvhNode& n, int depth) {
+        deepest = std::max(deepest, depth);
+        if (n.count > 0) ++leaves;
+    });
+    EXPECT_EQ(deepest, bvh.depth);
+    EXPECT_LE(bvh.depth, kBvhMaxDepth) << "the GLSL traversal stack holds " << kBvhMaxDepth;
+    // 110 spheres in leaves of at most 2: a sensible tree is ~log2(55) + a few deep.
+    EXPECT_LE(bvh.depth, 16) << "expected a shallow tree, got depth " << bvh.depth;
+    EXPECT_EQ(int(bvh.nodes.size()), 2 * leaves - 1) << "every inner node has exactly two children";
+}
+
+TEST(Bvh, AMovingSphereStaysInItsBoxAtEveryTime) {
+    Scene scene = proScene();
+    int moving = 0;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        if (s.motion.amplitude == 0.0f) continue;
+        ++moving;
+        Aabb box = sphereBounds(scene, int(i));
+        for (int k = 0; k <= 64; ++k) {
+            float t = s.motion.periodSeconds * float(k) / 64.0f;
+            glm::vec3 c = s.center + s.motion.offsetAt(t);
+            Aabb at{c - glm::vec3(s.radius), c + glm::vec3(s.radius)};
+            ASSERT_TRUE(box.contains(at)) << "sphere " << i << " leaves its box at t = " << t;
+        }
+    }
+    EXPECT_GT(moving, 0) << "the pro scene should have moving spheres to check";
+}
+
+TEST(Bvh, ASceneWithoutSpheresHasNoTree) {
+    Scene scene;
+    scene.planes.push_back({});
+    Bvh bvh = buildBvh(scene);
+    EXPECT_TRUE(bvh.nodes.empty());
+    EXPECT_TRUE(bvh.items.empty());
+}

@@ -161,6 +161,11 @@ int cmdBench(const BenchOptions& options) {
     // Everything that can fail on bad input fails before any measuring.
     std::vector<Scene> loaded;
     for (const std::string& name : scenes) loaded.push_back(loadScene(sceneFileFor(name)));
+    // The output folder too: minutes of measuring must not end in "cannot write".
+    std::error_code ec;
+    std::filesystem::create_directories(options.outDir, ec);
+    if (ec || !std::filesystem::is_directory(options.outDir))
+        throw Error("--out '" + options.outDir + "': cannot make this folder" + (ec ? ": " + ec.message() : std::string(" (a file is in the way)")));
 
     // Compile times are only honest without Mesa's on-disk shader cache (a
     // second run would find every program there). Set before the driver loads.

@@ -81,4 +81,8 @@ TEST(Bench, BadInputFailsBeforeMeasuringAndWritesNothing) {
     r = runRaylab("bench --quick --size 0x0 --out " + quote((dir / "out").string()));
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_FALSE(fs::exists(dir / "out"));
+    writeFile(dir / "file", "in the way");
+    r = runRaylab("bench --quick --out " + quote((dir / "file/out").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("cannot make this folder"), std::string::npos) << r.err;
 }

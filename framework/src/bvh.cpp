@@ -46,27 +46,31 @@ struct Builder {
         return b;
     }
 
-    // Binned SAH split of items [begin, end): returns the split position, or
-    // -1 when keeping them in one leaf is cheaper (and allowed).
+    static constexpr int kBins = 12;
+
+    // The bin of ITEM's centre along AXIS within the centres' box.
+    int binOf(int item, int axis, const Aabb& centreBox) const {
+        float lo = centreBox.lo[axis], hi = centreBox.hi[axis];
+        int b = int(float(kBins) * (centres[std::size_t(item)][axis] - lo) / (hi - lo));
+        return std::clamp(b, 0, kBins - 1);
+    }
+
+    // Binned SAH split of items [begin, end): partitions them and returns the
+    // split position, or -1 when keeping them in one leaf is cheaper (and
+    // allowed).
     int split(int begin, int end, const Aabb& box) {
-        constexpr int kBins = 12;
         const int n = end - begin;
         Aabb centreBox;
         for (int i = begin; i < end; ++i) centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
         float bestCost = std::numeric_limits<float>::max();
         int bestAxis = -1, bestBin = 0;
         for (int axis = 0; axis < 3; ++axis) {
-            float lo = centreBox.lo[axis], hi = centreBox.hi[axis];
-            if (hi - lo < 1e-12f) continue;
+            if (centreBox.hi[axis] - centreBox.lo[axis] < 1e-12f) continue;
             Aabb bins[kBins];
             int counts[kBins] = {};
-            auto binOf = [&](int item) {
-                int b = int(float(kBins) * (centres[std::size_t(item)][axis] - lo) / (hi - lo));
-                return std::clamp(b, 0, kBins - 1);
-            };
             for (int i = begin; i < end; ++i) {
                 int item = order[std::size_t(i)];
-                int b = binOf(item);
+                int b = binOf(item, axis, centreBox);
                 bins[b].grow(boxes[std::size_t(item)]);
                 ++counts[b];
             }
@@ -79,19 +83,14 @@ struct Builder {
                 float cost = left.area() * float(nl) + right.area() * float(nr);
                 if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestBin = cut; }
             }
-            if (bestAxis == axis) {
-                // Remember the partition for this axis now (bins depend on it).
-                auto mid = std::partition(order.begin() + begin, order.begin() + end, [&](int item) { return binOf(item) < bestBin; });
-                splitPos_ = int(mid - order.begin());
-            }
         }
-        // Cost of a leaf vs. of traversing two children (box test ~ 1 object test).
-        float leafCost = box.area() * float(n);
         if (bestAxis < 0) return n <= maxLeaf ? -1 : begin + n / 2;  // all centres equal: split by count
-        if (n <= maxLeaf && leafCost <= box.area() + bestCost) return -1;
-        return splitPos_;
+        // Cost of a leaf vs. of traversing two children (box test ~ 1 object test).
+        if (n <= maxLeaf && box.area() * float(n) <= box.area() + bestCost) return -1;
+        auto mid = std::partition(order.begin() + begin, order.begin() + end,
+                                  [&](int item) { return binOf(item, bestAxis, centreBox) < bestBin; });
+        return int(mid - order.begin());
     }
-    int splitPos_ = 0;
 
     void build(int nodeIndex, int begin, int end, int level) {
         depth = std::max(depth, level);

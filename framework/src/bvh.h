@@ -9,8 +9,9 @@
 // Why spheres only: llvmpipe runs 8 pixels in lock-step and executes both
 // sides of a divergent `if`; a tree of mixed kinds needs an `if` on the kind
 // at every object, so every sphere test would also run the torus's long code
-// (measured: about five times slower than this). The few other objects stay
-// in plain loops.
+// (measured on a discarded first version, pro at 400x300: 2157 ms a frame
+// against 453 ms with the torus taken out of the tree). The few other
+// objects stay in plain loops.
 //
 // Moving spheres: a sphere's box covers its whole bob (centre +- amplitude
 // along the motion axis), so one hierarchy is valid at every time and never

@@ -69,11 +69,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string sceneFileFor(const std::string& name) {
-    if (name == "lite" || name == "pro") return (projectRoot() / "assets" / "scenes" / (name + ".json")).string();
-    return name;
-}
-
 // One setting being measured: its renderer stays alive for the whole run,
 // so that frames of every setting can be timed in turns.
 struct Measured {
@@ -160,7 +155,7 @@ int cmdBench(const BenchOptions& options) {
     if (frames > 1000) throw Error("--frames must be between 1 and 1000");
     // Everything that can fail on bad input fails before any measuring.
     std::vector<Scene> loaded;
-    for (const std::string& name : scenes) loaded.push_back(loadScene(sceneFileFor(name)));
+    for (const std::string& name : scenes) loaded.push_back(loadScene(demoSceneFile(name)));
     // The output folder too: minutes of measuring must not end in "cannot write".
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);

@@ -17,13 +17,6 @@ namespace raylab {
 
 namespace {
 
-// "lite" and "pro" name the demo scenes; anything else is a file.
-std::string sceneFile(const std::string& scene) {
-    if (scene.empty()) return "";
-    if (scene == "lite" || scene == "pro") return (projectRoot() / "assets" / "scenes" / (scene + ".json")).string();
-    return scene;
-}
-
 // A folder that did not exist: raylab-demo-SCENE-YYYYmmdd-HHMMSS[-N].
 std::filesystem::path newOutputFolder(const std::string& sceneName) {
     char stamp[32];
@@ -57,7 +50,7 @@ int cmdDemo(const DemoOptions& demo) {
     options.stage = stage.id;
     options.solution = true;
     options.size = demo.size;
-    options.scene = sceneFile(demo.scene);
+    options.scene = demoSceneFile(demo.scene);
     options.noShadows = demo.noShadows;
     options.maxDepth = demo.maxDepth;
     StageSetup setup = resolveStageOptions(options);

@@ -71,7 +71,6 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
     checkSceneFits(stage_, scene_);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
-    if (variant_.bvh) bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
     rebuild();
 }
 
@@ -162,6 +161,9 @@ void StageRenderer::uploadSceneConstants() {
     // Pictures, sky box and the glowing sphere.
     glUniform1i(p.uniform("uTextures"), kTextureUnit);
     glUniform1i(p.uniform("uSky"), kSkyUnit);
+    // The tree is built only for a program that walks it (stage 08 with
+    // RAYLAB_BVH), once, on the first such build.
+    if (variant_.bvh && !bvh_ && p.uniform("uBvhNodes") >= 0) bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
     glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
     glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
     glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);

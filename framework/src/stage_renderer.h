@@ -91,7 +91,7 @@ private:
     std::unique_ptr<TextureArray> textures_;
     std::unique_ptr<CubeMap> sky_;
     ShaderVariant variant_;
-    std::unique_ptr<BvhBuffers> bvh_;  // when variant_.bvh
+    std::unique_ptr<BvhBuffers> bvh_;  // made when the program walks a BVH
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
     std::string fragmentEntry_;

@@ -32,6 +32,11 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     return s;
 }
 
+std::string demoSceneFile(const std::string& name) {
+    if (name == "lite" || name == "pro") return (projectRoot() / "assets" / "scenes" / (name + ".json")).string();
+    return name;
+}
+
 Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene) {
     return Camera(pose ? *pose : scene.camera, scene.fovYDeg);
 }

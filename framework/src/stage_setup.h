@@ -44,6 +44,10 @@ struct StageSetup {
 // Validates everything before any window or context is created.
 StageSetup resolveStageOptions(const StageOptions& options);
 
+// "lite" and "pro" name the demo scenes (assets/scenes/); anything else is a
+// scene file as given. Empty stays empty (the stage's own scene).
+std::string demoSceneFile(const std::string& name);
+
 // The camera a check view uses in SCENE.
 Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene);
 

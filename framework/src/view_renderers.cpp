@@ -19,9 +19,13 @@ StageRenderer& ViewRenderers::forView(const CheckView& view) {
     return *byScene_.emplace(key, std::move(renderer)).first->second;
 }
 
+RenderSettings settingsOf(const CheckView& view) {
+    return RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
+}
+
 Image ViewRenderers::render(const CheckView& view, long* nonFinite) {
     StageRenderer& r = forView(view);
-    r.render(cameraFor(view.pose, r.scene()), view.time, RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode});
+    r.render(cameraFor(view.pose, r.scene()), view.time, settingsOf(view));
     return imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), nonFinite);
 }
 

@@ -11,6 +11,9 @@
 
 namespace raylab {
 
+// The switches a check view is drawn with.
+RenderSettings settingsOf(const CheckView& view);
+
 class ViewRenderers {
 public:
     // sceneOverride: a scene file for every view (--scene), or empty.

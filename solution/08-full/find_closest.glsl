@@ -13,7 +13,7 @@
 // lock-step and executes both sides of an `if` whenever the pixels disagree.
 // A tree holding several kinds would need an `if` on the kind at every
 // object, and every sphere test would pay for the torus's long code (tried:
-// five times slower). One kind per tree keeps every test short.
+// five times slower in an earlier version). One kind per tree keeps every test short.
 //
 // GLSL has no recursion, so the tree is walked with a small stack of boxes
 // still to visit - the same idea as trace()'s stack of rays. The nearer

@@ -10,15 +10,16 @@
 // disagree on. A first BVH tested objects of every kind through one `if` on
 // the kind, so every sphere test also ran the torus solver's loops; behind
 // the glass cube pixels ran out of iterations and silently lost objects
-// (pro-cube: 1% of pixels off the reference with the BVH, 8% with a linear
-// search written the same way). Hence these comparisons with the reference.
-#include "gl_context.h"
+// (measured on that discarded version, pro-cube: 1% of pixels off the
+// reference with the BVH, 8% with a linear search written the same way).
+// Hence these comparisons with the reference.
 #include "image_compare.h"
 #include "paths.h"
 #include "reference_tracer.h"
 #include "stage_renderer.h"
 #include "stage_setup.h"
 #include "test_support.h"
+#include "view_renderers.h"
 
 #include <gtest/gtest.h>
 
@@ -31,10 +32,6 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-void ensureContext() {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
-}
-
 const StageInfo& full() { return findStage("08"); }
 
 const CheckView& view(const std::string& name) {
@@ -45,18 +42,8 @@ const CheckView& view(const std::string& name) {
 
 Scene sceneOf(const CheckView& v) { return loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? full().scene : v.scene)); }
 
-RenderSettings settingsOf(const CheckView& v) {
-    RenderSettings settings;
-    settings.shadows = v.shadows;
-    settings.maxDepth = v.maxDepth;
-    settings.glow = v.glow;
-    settings.normalMaps = v.normalMaps;
-    settings.colorMode = v.colorMode;
-    return settings;
-}
-
 Image render(const CheckView& v, const ShaderVariant& variant, const StageSources& sources = solutionSources(full())) {
-    ensureContext();
+    raylab::test::ensureGlContext();
     Scene scene = sceneOf(v);
     StageRenderer r(full(), sources, scene, kWidth, kHeight, PixelFormat::Rgba32F, kFragmentEntry, variant);
     r.render(cameraFor(v.pose, scene), v.time, settingsOf(v));
@@ -136,7 +123,7 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
 // The window and the demo compile every stage specialised to its scene
 // (ShaderVariant::fastestFor): each stage's first check view must not change.
 TEST(VariantViews, EveryStageDrawsTheSameSpecialised) {
-    ensureContext();
+    raylab::test::ensureGlContext();
     for (const StageInfo& stage : allStages()) {
         if (!stage.available()) continue;
         const CheckView& v = stage.checkViews.front();

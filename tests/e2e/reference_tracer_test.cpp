@@ -44,7 +44,7 @@ constexpr int kWidth = 160, kHeight = 120;  // the check views' size
 // One headless context and one GPU renderer set per stage for the whole
 // program (shader compiles are the slow part on llvmpipe).
 ViewRenderers& gpuFor(const StageInfo& stage) {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
+    ensureGlContext();
     static std::map<std::string, std::unique_ptr<ViewRenderers>> renderers;
     auto it = renderers.find(stage.id);
     if (it == renderers.end()) {
@@ -56,10 +56,6 @@ ViewRenderers& gpuFor(const StageInfo& stage) {
 
 Scene sceneOf(const StageInfo& stage, const CheckView& view) {
     return loadScene(projectRoot() / "assets" / "scenes" / (view.scene.empty() ? stage.scene : view.scene));
-}
-
-RenderSettings settingsOf(const CheckView& view) {
-    return RenderSettings{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
 }
 
 Image referenceFrame(const StageInfo& stage, const CheckView& view, const RenderSettings& settings) {

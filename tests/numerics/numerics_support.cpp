@@ -8,10 +8,6 @@
 
 namespace raylab::numerics {
 
-void ensureGlContext() {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
-}
-
 double floatUlp(double x) {
     float f = std::fabs(float(x));
     return double(std::nextafter(f, std::numeric_limits<float>::infinity()) - f);

@@ -2,16 +2,16 @@
 // Shared by the numerics tests: a headless GL context for the whole test
 // program, and error statistics in float ulps.
 #include "function_checks.h"
-#include "gl_context.h"
 #include "stage_sources.h"
+#include "test_support.h"
 
 #include <memory>
 #include <vector>
 
 namespace raylab::numerics {
 
-// Created on first use, kept for the whole run.
-void ensureGlContext();
+// A headless GL context, made on first use and kept for the whole run.
+using raylab::test::ensureGlContext;
 
 // Spacing of float32 numbers at |x|: the smallest error float can show there.
 double floatUlp(double x);

@@ -1,9 +1,12 @@
 #include "test_support.h"
 
+#include "gl_context.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <sys/wait.h>
@@ -80,6 +83,10 @@ std::vector<std::string> failedViews(const std::string& checkOutput) {
         if (verdict == "FAIL") views.push_back(name);
     }
     return views;
+}
+
+void ensureGlContext() {
+    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
 }
 
 } // namespace raylab::test

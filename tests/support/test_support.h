@@ -41,6 +41,10 @@ private:
     fs::path path_;
 };
 
+// One headless GL context (EGL or OSMesa, whichever works), made on first
+// use and current for the rest of the test program.
+void ensureGlContext();
+
 // A fully solved copy of the labs (raylab-labgen --solved) in DIR.
 void writeSolvedLabs(const fs::path& dir);
 

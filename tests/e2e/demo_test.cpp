@@ -14,7 +14,7 @@ namespace {
 // Runs `raylab ARGS` with DIR as the working directory.
 CommandResult demoIn(const ScratchDir& dir, const std::string& args) {
     return runCommand("cd " + quote(dir.path().string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY " +
-                      quote((sourceDir() / "build/raylab").string()) + " demo " + args);
+                      quote(raylabExe().string()) + " demo " + args);
 }
 
 int entries(const fs::path& dir) {

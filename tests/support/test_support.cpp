@@ -47,6 +47,7 @@ CommandResult runRaylab(const std::string& args) { return runCommand(quote(RAYLA
 CommandResult runLabgen(const std::string& args) { return runCommand(quote(RAYLAB_LABGEN_EXE) + " " + args); }
 
 fs::path sourceDir() { return RAYLAB_SOURCE_DIR; }
+fs::path raylabExe() { return RAYLAB_EXE; }
 
 ScratchDir::ScratchDir() {
     std::random_device rd;

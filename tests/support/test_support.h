@@ -19,9 +19,11 @@ struct CommandResult {
 // Runs `command` through /bin/sh (no stdin), capturing both streams.
 CommandResult runCommand(const std::string& command);
 
-// `build/raylab ARGS` and `build/raylab-labgen ARGS`.
+// `raylab ARGS` and `raylab-labgen ARGS`, the binaries of this build (found
+// through CMake, so the suite runs from any build folder).
 CommandResult runRaylab(const std::string& args);
 CommandResult runLabgen(const std::string& args);
+fs::path raylabExe();
 
 // The source tree and a single-quoted shell word.
 fs::path sourceDir();

@@ -12,11 +12,9 @@ struct Hit {
     int id;   // index of the object that was hit, -1 for none
 };
 
-// Returned by intersection functions when the ray misses.
-const float NO_HIT = -1.0;
-
-// Hits closer than this are ignored: a ray never hits its own origin.
-const float T_MIN = 1e-4;
-
-// A very large distance: "nothing hit yet".
-const float T_FAR = 1e30;
+// Defined by the framework at the top of every shader, with the same values
+// as its C++ (framework/src/shader_constants.h):
+//   NO_HIT     returned by intersection functions when the ray misses (-1)
+//   T_MIN      hits closer than this are ignored: a ray never hits its own origin
+//   T_FAR      a very large distance: "nothing hit yet"
+//   MAX_DEPTH  rays per path (trace.glsl)

@@ -2,14 +2,10 @@
 // framework from the scene file. (Students need not change this file.)
 //
 // A Hit's id names the object: its kind times OBJECT_KIND_STRIDE plus its
-// index in that kind's list. Spheres are kind 0, so a sphere's id is simply
-// its index, as in labs 01-04.
-const int KIND_SPHERE = 0;
-const int KIND_PLANE = 1;
-const int KIND_DISC = 2;
-const int KIND_TRIANGLE = 3;
-const int KIND_TORUS = 4;
-const int OBJECT_KIND_STRIDE = 1024;
+// index in that kind's list. Spheres are kind 0 (KIND_SPHERE), so a sphere's
+// id is simply its index, as in labs 01-04. KIND_SPHERE, KIND_PLANE,
+// KIND_DISC, KIND_TRIANGLE, KIND_TORUS and OBJECT_KIND_STRIDE are defined by
+// the framework at the top of every shader (framework/src/shader_constants.h).
 
 int objectId(int kind, int index) { return kind * OBJECT_KIND_STRIDE + index; }
 int objectKind(int id) { return id / OBJECT_KIND_STRIDE; }

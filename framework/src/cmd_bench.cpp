@@ -131,7 +131,7 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage, con
         // Compile time: building the program plus the first frame (llvmpipe
         // compiles its code on first use), less one frame's own time.
         auto start = std::chrono::steady_clock::now();
-        m.renderer = std::make_unique<StageRenderer>(stage, sources, scene, s.width, s.height, PixelFormat::Rgba32F, kFragmentEntry, s.variant);
+        m.renderer = std::make_unique<StageRenderer>(stage, sources, scene, s.width, s.height, PixelFormat::Rgba32F, "", s.variant);
         timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); });
         m.firstMs = msSince(start);
         all.push_back(std::move(m));
@@ -146,8 +146,7 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage, con
 
 int cmdBench(const BenchOptions& options) {
     if (options.outDir.empty()) throw Error("--out DIR is required");
-    const StageInfo& stage = findStage("08");
-    if (!stage.available()) throw Error("raylab bench needs stage 08-full (solution/08-full is missing)");
+    const StageInfo& stage = demoStage();
     std::vector<std::string> scenes = options.quick ? std::vector<std::string>{"lite"} : std::vector<std::string>{"lite", "pro"};
     if (!options.scenes.empty()) scenes = options.scenes;
     Size size = parseSize(options.size.empty() ? (options.quick ? "160x120" : "800x600") : options.size);

@@ -45,7 +45,7 @@ std::string frameName(int i) {
 } // namespace
 
 int cmdDemo(const DemoOptions& demo) {
-    const StageInfo& stage = demo.stage.empty() ? latestAvailableStage() : findStage(demo.stage);
+    const StageInfo& stage = demo.stage.empty() ? demoStage() : findStage(demo.stage);
     StageOptions options;
     options.stage = stage.id;
     options.solution = true;
@@ -69,7 +69,7 @@ int cmdDemo(const DemoOptions& demo) {
     auto context = createHeadlessContext(demo.backend);
     ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
     if (demo.noBvh) variant.bvh = false;
-    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height, PixelFormat::Rgba8, kFragmentEntry,
+    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height, PixelFormat::Rgba8, "",
                            variant);
     const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);
 

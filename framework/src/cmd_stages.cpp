@@ -5,8 +5,14 @@
 namespace raylab {
 
 int cmdStages() {
-    for (const StageInfo& s : allStages())
-        std::printf("%-14s %s%s\n", s.id.c_str(), s.title.c_str(), s.available() ? "" : "  [not available yet]");
+    std::string track;
+    for (const StageInfo& s : allStages()) {
+        if (s.track != track) {
+            track = s.track;
+            std::printf("%strack %s\n", &s == &allStages().front() ? "" : "\n", track.c_str());
+        }
+        std::printf("  %-14s %s\n", s.id.c_str(), s.title.c_str());
+    }
     return 0;
 }
 

@@ -24,8 +24,9 @@ int channelsOf(DebugView view) { return view == DebugView::Color || view == Debu
 StageInfo withViewDefines(const StageInfo& stage, GpuView view) {
     StageInfo s = stage;
     s.extraDefines.push_back("RAYLAB_VIEW " + std::to_string(int(view)));
-    // surfaceAt() (the outward normal of any kind of object) exists from stage 04 on.
-    if (std::stoi(stage.number()) >= 4) s.extraDefines.push_back("RAYLAB_VIEW_SURFACE_AT");
+    // surfaceAt() (the outward normal of any kind of object) exists in the
+    // stages whose stage.json says "surface_at".
+    if (stage.has("surface_at")) s.extraDefines.push_back("RAYLAB_VIEW_SURFACE_AT");
     return s;
 }
 

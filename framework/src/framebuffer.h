@@ -5,12 +5,11 @@
 // only copies it to the screen.
 #include "gl.h"
 #include "image.h"
+#include "pixel_format.h"
 
 #include <vector>
 
 namespace raylab {
-
-enum class PixelFormat { Rgba8, Rgba32F };
 
 class Framebuffer {
 public:

@@ -3,6 +3,12 @@
 // which side counts), so any disagreement is the student's (or float's).
 #include "function_checks.h"
 
+#include "reference_intersect.h"
+#include "reference_shading.h"
+
+#include "error.h"
+#include "paths.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -13,8 +19,7 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-constexpr double kTMin = 1e-4;  // ray.glsl's T_MIN
-constexpr double kNoHit = -1.0;
+using reference::kNoHit;
 
 std::string num(double v) {
     char s[32];
@@ -57,47 +62,11 @@ std::string compareVector(const FunctionCase& c, const dvec4& got, const dvec4& 
 
 dvec3 xyz(const dvec4& v) { return dvec3(v); }
 
-// ----- references -----
+// The ray of a case whose a0.xyz is the origin and a1.xyz the direction.
+reference::DRay rayOf(const FunctionCase& c) { return {xyz(c.in[0]), xyz(c.in[1])}; }
 
-double sphereRef(dvec3 o, dvec3 d, dvec3 center, double radius) {
-    dvec3 oc = o - center;
-    double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius, h = b * b - c;
-    if (h < 0.0) return kNoHit;
-    h = std::sqrt(h);
-    double t = -b - h;
-    if (t <= kTMin) t = -b + h;
-    return t > kTMin ? t : kNoHit;
-}
-
-double planeRef(dvec3 o, dvec3 d, dvec3 n, double offset) {
-    double facing = glm::dot(n, d);
-    if (std::fabs(facing) < 1e-8) return kNoHit;
-    double t = (offset - glm::dot(n, o)) / facing;
-    return t > kTMin ? t : kNoHit;
-}
-
-double discRef(dvec3 o, dvec3 d, dvec3 center, dvec3 n, double radius) {
-    double t = planeRef(o, d, n, glm::dot(n, center));
-    if (t == kNoHit) return kNoHit;
-    dvec3 v = o + t * d - center;
-    return glm::dot(v, v) <= radius * radius ? t : kNoHit;
-}
-
-double triangleRef(dvec3 o, dvec3 d, dvec3 a, dvec3 b, dvec3 c) {
-    dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
-    double det = glm::dot(e1, p);
-    if (std::fabs(det) < 1e-10) return kNoHit;
-    dvec3 s = o - a;
-    double u = glm::dot(s, p) / det;
-    if (u < 0.0 || u > 1.0) return kNoHit;
-    dvec3 q = glm::cross(s, e1);
-    double v = glm::dot(d, q) / det;
-    if (v < 0.0 || u + v > 1.0) return kNoHit;
-    double t = glm::dot(e2, q) / det;
-    return t > kTMin ? t : kNoHit;
-}
-
-double schlick(double f0, double cosine) { return f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5.0); }
+// The references are the reference tracer's own (reference_intersect.h,
+// reference_shading.h): one double-precision version of each GLSL function.
 
 // A small deterministic generator (the tables must not change between runs).
 struct Lcg {
@@ -124,7 +93,6 @@ FunctionCase rayCase(std::string label, dvec3 o, dvec3 d, dvec4 a2, dvec4 a3 = d
 FunctionSpec sphereSpec() {
     FunctionSpec s;
     s.name = "intersectSphere";
-    s.stage = "01-raycast";
     s.includes = {"intersect_sphere.glsl"};
     s.call = "vec4(intersectSphere(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 unit(0, 0, 0, 1);
@@ -149,7 +117,7 @@ FunctionSpec sphereSpec() {
         dvec3 aim = center + rng.direction() * rng.in(0.0, 1.5) - o;  // about half of them hit
         s.cases.push_back(rayCase("random ray " + std::to_string(i + 1), o, aim, dvec4(center, rng.in(0.3, 1.2))));
     }
-    s.reference = [](const FunctionCase& c) { return dvec4(sphereRef(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
+    s.reference = [](const FunctionCase& c) { return dvec4(reference::intersectSphere(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
     s.compare = compareHit;
     return s;
 }
@@ -157,7 +125,6 @@ FunctionSpec sphereSpec() {
 FunctionSpec planeSpec() {
     FunctionSpec s;
     s.name = "intersectPlane";
-    s.stage = "05-primitives";
     s.includes = {"intersect_plane.glsl"};
     s.call = "vec4(intersectPlane(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 floor(0, 1, 0, 0);
@@ -172,7 +139,7 @@ FunctionSpec planeSpec() {
         rayCase("grazing", {0, 0.01, 0}, {1, -0.001, 0}, floor),
         rayCase("tilted plane, offset", {0, 0, 0}, {1, 1, 1}, dvec4(glm::normalize(dvec3(1, 2, 3)), 4.0)),
     };
-    s.reference = [](const FunctionCase& c) { return dvec4(planeRef(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
+    s.reference = [](const FunctionCase& c) { return dvec4(reference::intersectPlane(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
     s.compare = compareHit;
     return s;
 }
@@ -180,7 +147,6 @@ FunctionSpec planeSpec() {
 FunctionSpec discSpec() {
     FunctionSpec s;
     s.name = "intersectDisc";
-    s.stage = "05-primitives";
     s.includes = {"intersect_plane.glsl", "intersect_disc.glsl"};
     s.call = "vec4(intersectDisc(Ray(a0.xyz, a1.xyz), a2.xyz, a3.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 disc(0, 1, 0, 2.0), up(0, 1, 0, 0);
@@ -195,7 +161,7 @@ FunctionSpec discSpec() {
         rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5), dvec4(glm::normalize(dvec3(0.2, 0.1, 1)), 0)),
     };
     s.reference = [](const FunctionCase& c) {
-        return dvec4(discRef(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), xyz(c.in[3]), c.in[2].w), 0, 0, 1);
+        return dvec4(reference::intersectDisc(rayOf(c), xyz(c.in[2]), xyz(c.in[3]), c.in[2].w), 0, 0, 1);
     };
     s.compare = compareHit;
     return s;
@@ -214,7 +180,6 @@ FunctionCase triangleCase(std::string label, dvec3 o, dvec3 d, dvec3 a, dvec3 b,
 FunctionSpec triangleSpec() {
     FunctionSpec s;
     s.name = "intersectTriangle";
-    s.stage = "05-primitives";
     s.includes = {"intersect_triangle.glsl"};
     s.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, a3.xyz), 0.0, 0.0, 1.0)";
     const dvec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);  // counter-clockwise seen from +z
@@ -234,7 +199,7 @@ FunctionSpec triangleSpec() {
     };
     s.reference = [](const FunctionCase& k) {
         dvec3 first(k.in[0].w, k.in[1].w, k.in[2].w);
-        return dvec4(triangleRef(xyz(k.in[0]), xyz(k.in[1]), first, xyz(k.in[2]), xyz(k.in[3])), 0, 0, 1);
+        return dvec4(reference::intersectTriangle(rayOf(k), first, xyz(k.in[2]), xyz(k.in[3])), 0, 0, 1);
     };
     s.compare = compareHit;
     return s;
@@ -243,7 +208,6 @@ FunctionSpec triangleSpec() {
 FunctionSpec torusNormalSpec() {
     FunctionSpec s;
     s.name = "torusNormalLocal";
-    s.stage = "05-primitives";
     s.includes = {"scene_objects.glsl", "intersect_torus.glsl"};
     s.call = "vec4(torusNormalLocal(a0.xyz, a0.w, a1.x), 1.0)";
     const double R = 1.0, r = 0.25;
@@ -256,9 +220,7 @@ FunctionSpec torusNormalSpec() {
         s.cases.push_back(c);
     }
     s.reference = [](const FunctionCase& c) {
-        dvec3 p = xyz(c.in[0]);
-        double R2 = c.in[0].w * c.in[0].w, r2 = c.in[1].x * c.in[1].x;
-        return dvec4(glm::normalize((glm::dot(p, p) + R2 - r2) * p - 2.0 * R2 * dvec3(p.x, p.y, 0.0)), 1.0);
+        return dvec4(reference::torusNormalLocal(xyz(c.in[0]), c.in[0].w, c.in[1].x), 1.0);
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (!finite(got)) return c.label + ": got NaN or Inf";
@@ -271,7 +233,6 @@ FunctionSpec torusNormalSpec() {
 FunctionSpec fresnelDielectricSpec() {
     FunctionSpec s;
     s.name = "fresnelDielectric";
-    s.stage = "04-recursion";
     s.includes = {"fresnel.glsl"};
     s.call = "vec4(fresnelDielectric(a0.x, a0.y), 0.0, 0.0, 1.0)";
     for (double ior : {1.33, 1.5, 2.4})
@@ -282,8 +243,7 @@ FunctionSpec fresnelDielectricSpec() {
             s.cases.push_back(c);
         }
     s.reference = [](const FunctionCase& c) {
-        double f0 = (c.in[0].y - 1.0) / (c.in[0].y + 1.0);
-        return dvec4(schlick(f0 * f0, c.in[0].x), 0, 0, 1);
+        return dvec4(reference::fresnelDielectric(c.in[0].x, c.in[0].y), 0, 0, 1);
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (std::isfinite(got.x) && (got.x < 0.0 || got.x > 1.0))
@@ -296,7 +256,6 @@ FunctionSpec fresnelDielectricSpec() {
 FunctionSpec fresnelConductorSpec() {
     FunctionSpec s;
     s.name = "fresnelConductor";
-    s.stage = "04-recursion";
     s.includes = {"fresnel.glsl"};
     s.call = "vec4(fresnelConductor(a0.x, a1.xyz, a2.xyz), 1.0)";
     const dvec3 goldN(0.143, 0.375, 1.442), goldK(3.983, 2.386, 1.603), silverN(0.155, 0.117, 0.135), silverK(4.83, 3.12, 2.15);
@@ -310,9 +269,7 @@ FunctionSpec fresnelConductorSpec() {
         s.cases.push_back(c);
     }
     s.reference = [](const FunctionCase& c) {
-        dvec3 n = xyz(c.in[1]), k = xyz(c.in[2]), f;
-        for (int i = 0; i < 3; ++i) f[i] = schlick(((n[i] - 1) * (n[i] - 1) + k[i] * k[i]) / ((n[i] + 1) * (n[i] + 1) + k[i] * k[i]), c.in[0].x);
-        return dvec4(f, 1.0);
+        return dvec4(reference::fresnelConductor(c.in[0].x, xyz(c.in[1]), xyz(c.in[2])), 1.0);
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) { return compareVector(c, got, want, 3, 1e-4); };
     return s;
@@ -330,7 +287,6 @@ std::string compareUv(const FunctionCase& c, const dvec4& got, const dvec4& want
 FunctionSpec sphereUvSpec() {
     FunctionSpec s;
     s.name = "sphereUV";
-    s.stage = "06-textures";
     s.includes = {"sphere_uv.glsl"};
     s.call = "vec4(sphereUV(a0.xyz), 0.0, 1.0)";
     const std::pair<const char*, dvec3> dirs[] = {
@@ -344,11 +300,7 @@ FunctionSpec sphereUvSpec() {
         c.in = {dvec4(glm::normalize(d), 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) {
-        dvec3 d = xyz(c.in[0]);
-        const double pi = 3.14159265358979323846;
-        return dvec4(0.5 + std::atan2(-d.z, d.x) / (2 * pi), 0.5 + std::asin(std::clamp(d.y, -1.0, 1.0)) / pi, 0, 1);
-    };
+    s.reference = [](const FunctionCase& c) { return dvec4(reference::sphereUV(xyz(c.in[0])), 0, 1); };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         // At the poles every u is right.
         if (std::fabs(std::fabs(xyz(c.in[0]).y) - 1.0) < 1e-9) return compareVector(c, dvec4(got.y, 0, 0, 0), dvec4(want.y, 0, 0, 0), 1, 1e-4);
@@ -360,7 +312,6 @@ FunctionSpec sphereUvSpec() {
 FunctionSpec planeUvSpec() {
     FunctionSpec s;
     s.name = "planeUV";
-    s.stage = "06-textures";
     s.includes = {"plane_uv.glsl"};
     s.call = "vec4(planeUV(a0.xyz, a1.xyz, a2.xyz, a2.w), 0.0, 1.0)";
     const dvec3 up(0, 1, 0), tilted = glm::normalize(dvec3(0.3, 0.2, 1.0));
@@ -380,11 +331,7 @@ FunctionSpec planeUvSpec() {
         s.cases.push_back(c);
     }
     s.reference = [](const FunctionCase& c) {
-        dvec3 n = xyz(c.in[2]);
-        dvec3 helper = std::fabs(n.z) < 0.9 ? dvec3(0, 0, 1) : dvec3(1, 0, 0);
-        dvec3 axisU = glm::normalize(glm::cross(n, helper)), axisV = glm::cross(n, axisU);
-        dvec3 offset = xyz(c.in[0]) - xyz(c.in[1]);
-        return dvec4(glm::dot(offset, axisU) / c.in[2].w, glm::dot(offset, axisV) / c.in[2].w, 0, 1);
+        return dvec4(reference::planeUV(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), c.in[2].w), 0, 1);
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareVector(c, got, want, 2, 1e-4 * std::max(1.0, std::fabs(want.x) + std::fabs(want.y)));
@@ -401,11 +348,31 @@ const std::vector<FunctionSpec>& functionSpecs() {
     return specs;
 }
 
+const FunctionSpec& functionSpec(const std::string& name) {
+    for (const FunctionSpec& s : functionSpecs())
+        if (s.name == name) return s;
+    std::string known;
+    for (const FunctionSpec& s : functionSpecs()) known += (known.empty() ? "" : ", ") + s.name;
+    throw Error("no function check '" + name + "' (known: " + known + ")");
+}
+
 std::vector<const FunctionSpec*> functionSpecsFor(const StageInfo& stage) {
     std::vector<const FunctionSpec*> out;
-    for (const FunctionSpec& s : functionSpecs())
-        if (s.stage == stage.id) out.push_back(&s);
+    for (std::size_t i = 0; i < stage.functionChecks.size(); ++i) {
+        try {
+            out.push_back(&functionSpec(stage.functionChecks[i]));
+        } catch (const Error& e) {
+            throw Error(displayPath(stage.folder() / "stage.json") + ": function_checks[" + std::to_string(i) + "]: " + e.what());
+        }
+    }
     return out;
+}
+
+const StageInfo& stageCheckingFunction(const std::string& name) {
+    for (const StageInfo& stage : allStages())
+        for (const std::string& f : stage.functionChecks)
+            if (f == name) return stage;
+    throw Error("no stage lists the function check '" + name + "' (solution/*/stage.json, \"function_checks\")");
 }
 
 } // namespace raylab

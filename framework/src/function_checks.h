@@ -25,7 +25,6 @@ struct FunctionCase {
 
 struct FunctionSpec {
     std::string name;                   // the GLSL function, e.g. "intersectSphere"
-    std::string stage;                  // the stage whose TODO writes it
     std::vector<std::string> includes;  // harness includes after ray.glsl and lab_todo.glsl
     std::string call;                   // GLSL expression: a vec4 from a0..a3
     std::vector<FunctionCase> cases;
@@ -34,9 +33,14 @@ struct FunctionSpec {
     std::function<std::string(const FunctionCase&, const glm::dvec4& got, const glm::dvec4& want)> compare;
 };
 
-// Every checked function, in stage order.
+// Every checked function. A stage runs those its stage.json lists under
+// "function_checks" (by name).
 const std::vector<FunctionSpec>& functionSpecs();
+const FunctionSpec& functionSpec(const std::string& name);  // throws Error for an unknown name
+// Throws Error naming the stage.json and key for an unknown name.
 std::vector<const FunctionSpec*> functionSpecsFor(const StageInfo& stage);
+// The stage whose TODO writes function NAME (the one that lists it).
+const StageInfo& stageCheckingFunction(const std::string& name);
 
 struct FunctionOutcome {
     std::string name;

@@ -91,11 +91,12 @@ std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& sta
         f << harnessSource(spec);
         if (!f.flush()) throw Error("cannot write the function-check harness to " + dir.path.string());
     }
-    std::vector<fs::path> search = {dir.path};
-    search.insert(search.end(), sources.search.begin(), sources.search.end());
     std::vector<std::string> defines = stage.defines();
     defines.insert(defines.end(), extraDefines.begin(), extraDefines.end());
-    ShaderSource vertex = assembleShader(kVertexEntry, search, defines);
+    std::vector<fs::path> search = {dir.path};
+    const std::vector<fs::path> stageSearch = searchWithVariants(sources, defines);
+    search.insert(search.end(), stageSearch.begin(), stageSearch.end());
+    ShaderSource vertex = assembleShader(stage.program.vertex, search, defines);
     ShaderSource fragment = assembleShader("harness.frag", search, defines);
     ShaderProgram program(vertex, fragment);
 

@@ -4,14 +4,15 @@
 // t <= T_MIN do not count, both sides of a triangle count, the tests for
 // parallel rays), but solved as exactly as double allows, so that the
 // reference is the ground truth where float rounding is the question.
+#include "shader_constants.h"
+
 #include <glm/glm.hpp>
 
 namespace raylab::reference {
 
-// framework/shaders/ray.glsl: hits closer than this are ignored.
-inline constexpr double kTMin = 1e-4;
-// "No hit" (intersect_*.glsl return NO_HIT = -1).
-inline constexpr double kNoHit = -1.0;
+// T_MIN and NO_HIT of the GLSL.
+using shader::kNoHit;
+using shader::kTMin;
 
 struct DRay {
     glm::dvec3 origin{0.0};

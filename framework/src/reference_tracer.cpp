@@ -4,6 +4,7 @@
 #include "reference_tracer.h"
 
 #include "reference_intersect.h"
+#include "reference_shading.h"
 #include "reference_textures.h"
 
 #include <algorithm>
@@ -18,17 +19,20 @@
 namespace raylab {
 
 using reference::DRay;
+using reference::fresnelConductor;
+using reference::fresnelDielectric;
 using reference::kNoHit;
+using reference::planeUV;
+using reference::sphereUV;
 
 ReferenceFeatures ReferenceFeatures::forStage(const StageInfo& stage) {
-    const int n = std::stoi(stage.number());
     ReferenceFeatures f;
-    f.shading = n >= 2;
-    f.shadows = n >= 3;
-    f.recursion = n >= 4;
-    f.textures = n >= 6;
-    f.normalMaps = n >= 7;
-    f.colorModes = n >= 8;
+    f.shading = stage.has("shading");
+    f.shadows = stage.has("shadows");
+    f.recursion = stage.has("recursion");
+    f.textures = stage.has("textures");
+    f.normalMaps = stage.has("normal_maps");
+    f.colorModes = stage.has("color_modes");
     return f;
 }
 
@@ -60,16 +64,20 @@ Image referenceImage(const std::vector<ReferenceSample>& samples, int width, int
 
 namespace {
 
-// scene_objects.glsl: an object's id is kind * 1024 + index.
+// An object's id is kind * stride + index (shader_constants.h).
 namespace obj {
-constexpr int kSphere = 0, kPlane = 1, kDisc = 2, kTriangle = 3, kTorus = 4;
-constexpr int kStride = 1024;
+using shader::kDisc;
+using shader::kPlane;
+using shader::kSphere;
+using shader::kTorus;
+using shader::kTriangle;
+constexpr int kStride = shader::kObjectKindStride;
 } // namespace obj
-const char* const kKindNames[] = {"sphere", "plane", "disc", "triangle", "torus"};
+using shader::kKindNames;
 
 // trace.glsl: MAX_DEPTH (stack entries and the depth limit) and MAX_RAYS.
-constexpr int kMaxDepth = 8;
-constexpr int kMaxRays = 256;
+using shader::kMaxDepth;
+using shader::kMaxRays;
 
 // Where a secondary ray (shadow, reflected, refracted) starts: the hit point
 // moved off the surface toward SIDE (the normal on the side the ray leaves
@@ -203,26 +211,10 @@ struct ReferenceTracer::Impl {
         return hit.id >= 0;
     }
 
-    // 06 sphere_uv.glsl
-    static glm::dvec2 sphereUV(const glm::dvec3& d) {
-        const double phi = std::atan2(-d.z, d.x);
-        const double theta = std::asin(std::clamp(d.y, -1.0, 1.0));
-        return {0.5 + phi / (2.0 * kPi), 0.5 + theta / kPi};
-    }
-
     static glm::dvec3 sphereTangent(const glm::dvec3& d) {
         const glm::dvec3 east(d.z, 0.0, -d.x);
         const double len = glm::length(east);
         return len > 1e-6 ? east / len : glm::dvec3(1.0, 0.0, 0.0);
-    }
-
-    // 06 plane_uv.glsl
-    static glm::dvec2 planeUV(const glm::dvec3& point, const glm::dvec3& origin, const glm::dvec3& n, double tile) {
-        const glm::dvec3 helper = std::fabs(n.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
-        const glm::dvec3 axisU = glm::normalize(glm::cross(n, helper));
-        const glm::dvec3 axisV = glm::cross(n, axisU);
-        const glm::dvec3 offset = point - origin;
-        return glm::dvec2(glm::dot(offset, axisU), glm::dot(offset, axisV)) / tile;
     }
 
     glm::dvec3 textureLayer(int layer, const glm::dvec2& uv) const {
@@ -326,18 +318,6 @@ struct ReferenceTracer::Impl {
     glm::dvec3 skyColor(const glm::dvec3& dir) const {
         if (!features.textures || !sky) return background;
         return glm::dvec3(sky->sample(dir));
-    }
-
-    // 04 fresnel.glsl
-    static double fresnelDielectric(double cosOutside, double ior) {
-        double f0 = (ior - 1.0) / (ior + 1.0);
-        f0 *= f0;
-        return f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - cosOutside, 0.0, 1.0), 5.0);
-    }
-
-    static glm::dvec3 fresnelConductor(double cosIncident, const glm::dvec3& n, const glm::dvec3& k) {
-        const glm::dvec3 f0 = ((n - 1.0) * (n - 1.0) + k * k) / ((n + 1.0) * (n + 1.0) + k * k);
-        return f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - cosIncident, 0.0, 1.0), 5.0);
     }
 
     // GLSL refract(): vec3(0) under total internal reflection.

@@ -13,7 +13,7 @@
 #include "image.h"
 #include "scene.h"
 #include "stage_catalog.h"
-#include "stage_renderer.h"
+#include "render_settings.h"
 
 #include <glm/glm.hpp>
 
@@ -23,7 +23,7 @@
 
 namespace raylab {
 
-// Which parts of the model a stage has (stage 01 flat colour ... 08 colour modes).
+// Which parts of the model a stage has: its stage.json "features".
 struct ReferenceFeatures {
     bool shading = true;     // 02+: Blinn-Phong (else the flat diffuse colour of 01)
     bool shadows = true;     // 03+: shadow rays

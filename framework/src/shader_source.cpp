@@ -1,5 +1,7 @@
 #include "shader_source.h"
 
+#include "shader_constants.h"
+
 #include "error.h"
 #include "paths.h"
 
@@ -88,7 +90,8 @@ ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path
     a.emit(kGlslVersionLine, kGenerated, 1);
     int n = 2;
     for (const std::string& d : defines) a.emit("#define " + d, kGenerated, n++);
-    std::istringstream lines(prelude);
+    // The constants GLSL and C++ share (shader_constants.h), then the caller's prelude.
+    std::istringstream lines(shader::constantsGlsl() + prelude);
     for (std::string line; std::getline(lines, line);) a.emit(line, kGenerated, n++);
     a.include(a.resolve(entry, "", 0));
     return a.out;

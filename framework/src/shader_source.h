@@ -33,7 +33,8 @@ inline constexpr const char* kGlslVersionLine = "#version 330 core";
 // replace a file of an earlier one). Each file is included once. Include names
 // must be plain relative names inside the search path (no "..", no absolute
 // paths). Throws Error naming the including file and line on any problem.
-// PRELUDE (generated GLSL, e.g. a scene's constants) goes after the defines.
+// The shared constants (shader_constants.h) follow the defines, then PRELUDE
+// (generated GLSL, e.g. a scene's constants).
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
                             const std::vector<std::string>& defines, const std::string& prelude = {});
 

@@ -2,161 +2,207 @@
 
 #include "error.h"
 #include "paths.h"
+#include "render_settings.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <fstream>
+#include <map>
 
 namespace raylab {
 
+namespace fs = std::filesystem;
+using nlohmann::json;
+
 namespace {
 
-std::vector<StageInfo> makeStages() {
+// What a stage may ask of the framework. The reference tracer, the debug
+// views and `raylab demo`/`bench` read these instead of stage numbers.
+const std::set<std::string> kKnownFeatures = {
+    "shading",      // Blinn-Phong (else the flat colour of ray casting)
+    "shadows",      // shadow rays
+    "recursion",    // mirror, glass and metal rays on a stack
+    "surface_at",   // the stage's GLSL has surfaceAt() (any object's normal)
+    "textures",     // textures, sky box, glow
+    "normal_maps",  //
+    "color_modes",  // the seed's colour modes (Up/Down)
+    "demo",         // the stage `raylab demo` and `raylab bench` run
+};
+
+// Reads typed values out of one stage.json with "FILE: KEY: ..." errors.
+struct StageReader {
+    std::string file;
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        throw Error(file + ": " + key + ": " + what);
+    }
+    void onlyKeys(const json& obj, const std::string& where, std::initializer_list<const char*> allowed) const {
+        for (const auto& [key, value] : obj.items()) {
+            (void)value;
+            bool ok = std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; });
+            if (!ok) fail(where.empty() ? key : where + "." + key, "unknown key");
+        }
+    }
+    const json& member(const json& obj, const std::string& where, const char* key) const {
+        if (!obj.contains(key)) fail(where.empty() ? key : where + "." + key, "missing");
+        return obj[key];
+    }
+    const json& object(const json& v, const std::string& key) const {
+        if (!v.is_object()) fail(key, "expected an object");
+        return v;
+    }
+    std::string text(const json& v, const std::string& key) const {
+        if (!v.is_string() || v.get<std::string>().empty()) fail(key, "expected a non-empty string");
+        return v.get<std::string>();
+    }
+    float number(const json& v, const std::string& key) const {
+        if (!v.is_number()) fail(key, "expected a number");
+        return v.get<float>();
+    }
+    int count(const json& v, const std::string& key) const {
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000) fail(key, "expected a whole number from 0 to 1000000");
+        return v.get<int>();
+    }
+    bool flag(const json& v, const std::string& key) const {
+        if (!v.is_boolean()) fail(key, "expected true or false");
+        return v.get<bool>();
+    }
+    std::vector<std::string> strings(const json& v, const std::string& key) const {
+        if (!v.is_array()) fail(key, "expected a list of strings");
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < v.size(); ++i) out.push_back(text(v[i], key + "[" + std::to_string(i) + "]"));
+        return out;
+    }
+    // Optional members: the default when absent.
+    template <typename T, typename Read>
+    T optional(const json& obj, const std::string& where, const char* key, T fallback, Read read) const {
+        return obj.contains(key) ? read(obj[key], where + "." + key) : fallback;
+    }
+
+    StageProgram program(const json& v) const {
+        object(v, "program");
+        onlyKeys(v, "program", {"vertex", "geometry", "fragment"});
+        StageProgram p;
+        p.vertex = text(member(v, "program", "vertex"), "program.vertex");
+        if (v.contains("geometry")) p.geometry = text(v["geometry"], "program.geometry");
+        p.fragment = text(member(v, "program", "fragment"), "program.fragment");
+        return p;
+    }
+
+    StageLimits limits(const json& v) const {
+        object(v, "limits");
+        onlyKeys(v, "limits", {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori", "textures", "sky_box"});
+        StageLimits l;
+        auto c = [&](const char* key, int fallback) {
+            return optional(v, "limits", key, fallback, [&](const json& x, const std::string& k) { return count(x, k); });
+        };
+        l.spheres = c("spheres", l.spheres);
+        l.materials = c("materials", l.materials);
+        l.lights = c("lights", l.lights);
+        l.planes = c("planes", l.planes);
+        l.discs = c("discs", l.discs);
+        l.triangles = c("triangles", l.triangles);
+        l.tori = c("tori", l.tori);
+        l.textures = c("textures", l.textures);
+        l.skyBox = optional(v, "limits", "sky_box", false, [&](const json& x, const std::string& k) { return flag(x, k); });
+        return l;
+    }
+
+    CheckView view(const json& v, const std::string& where) const {
+        object(v, where);
+        onlyKeys(v, where, {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps", "color_mode", "scene"});
+        CheckView c;
+        c.name = text(member(v, where, "name"), where + ".name");
+        c.why = text(member(v, where, "why"), where + ".why");
+        if (v.contains("camera")) {
+            const json& cam = object(v["camera"], where + ".camera");
+            const std::string at = where + ".camera";
+            onlyKeys(cam, at, {"position", "yaw", "pitch"});
+            const json& p = member(cam, at, "position");
+            if (!p.is_array() || p.size() != 3) fail(at + ".position", "expected [x, y, z]");
+            CameraPose pose;
+            for (int i = 0; i < 3; ++i) pose.position[i] = number(p[std::size_t(i)], at + ".position");
+            pose.yawDeg = number(member(cam, at, "yaw"), at + ".yaw");
+            pose.pitchDeg = number(member(cam, at, "pitch"), at + ".pitch");
+            c.pose = pose;
+        }
+        auto b = [&](const char* key, bool fallback) {
+            return optional(v, where, key, fallback, [&](const json& x, const std::string& k) { return flag(x, k); });
+        };
+        c.time = optional(v, where, "time", 0.0f, [&](const json& x, const std::string& k) { return number(x, k); });
+        c.shadows = b("shadows", true);
+        c.glow = b("glow", true);
+        c.normalMaps = b("normal_maps", true);
+        c.maxDepth = optional(v, where, "max_depth", RenderSettings::kMaxDepth, [&](const json& x, const std::string& k) {
+            int d = count(x, k);
+            if (d < 1 || d > RenderSettings::kMaxDepth) fail(k, "expected a depth from 1 to " + std::to_string(RenderSettings::kMaxDepth));
+            return d;
+        });
+        if (v.contains("color_mode")) {
+            const std::string mode = text(v["color_mode"], where + ".color_mode");
+            auto it = std::find(std::begin(kColorModes), std::end(kColorModes), mode);
+            if (it == std::end(kColorModes)) fail(where + ".color_mode", "expected RGB, BRB, BRR, RBB or GGR");
+            c.colorMode = int(it - std::begin(kColorModes));
+        }
+        if (v.contains("scene")) c.scene = text(v["scene"], where + ".scene");
+        return c;
+    }
+};
+
+json parseFile(const fs::path& file, const std::string& shown) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(shown + ": cannot read the file");
+    try {
+        return json::parse(in);
+    } catch (const json::exception& e) {
+        throw Error(shown + ": not valid JSON: " + e.what());
+    }
+}
+
+// Kahn's order: a stage comes after the one it builds on; ties by id, so a
+// track reads in the order of its ids. Tracks follow their first stage's id.
+std::vector<StageInfo> inBuildOrder(std::vector<StageInfo> stages) {
+    std::sort(stages.begin(), stages.end(), [](const StageInfo& a, const StageInfo& b) { return a.id < b.id; });
+    std::map<std::string, const StageInfo*> byId;
+    for (const StageInfo& s : stages) byId[s.id] = &s;
+    for (const StageInfo& s : stages)
+        if (!s.buildsOn.empty() && !byId.count(s.buildsOn))
+            throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: no stage '" + s.buildsOn + "' (no solution/" + s.buildsOn + "/stage.json)");
+    std::vector<StageInfo> ordered;
+    std::set<std::string> placed;
+    std::vector<std::string> trackOrder;
+    while (ordered.size() < stages.size()) {
+        const StageInfo* next = nullptr;
+        for (const StageInfo& s : stages)
+            if (!placed.count(s.id) && (s.buildsOn.empty() || placed.count(s.buildsOn))) {
+                next = &s;
+                break;
+            }
+        if (!next) {
+            for (const StageInfo& s : stages)
+                if (!placed.count(s.id))
+                    throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: '" + s.buildsOn + "' leads in a circle");
+        }
+        placed.insert(next->id);
+        ordered.push_back(*next);
+        if (std::find(trackOrder.begin(), trackOrder.end(), next->track) == trackOrder.end()) trackOrder.push_back(next->track);
+    }
+    std::stable_sort(ordered.begin(), ordered.end(), [&](const StageInfo& a, const StageInfo& b) {
+        return std::find(trackOrder.begin(), trackOrder.end(), a.track) < std::find(trackOrder.begin(), trackOrder.end(), b.track);
+    });
+    return ordered;
+}
+
+std::vector<StageInfo> readStages() {
+    const fs::path solution = projectRoot() / "solution";
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(solution, ec))
+        if (e.is_directory() && fs::is_regular_file(e.path() / "stage.json")) files.push_back(e.path() / "stage.json");
     std::vector<StageInfo> stages;
-
-    StageInfo raycast;
-    raycast.id = "01-raycast";
-    raycast.title = "ray casting: primary rays, ray-sphere intersection, nearest hit, flat colours";
-    raycast.scene = "stage01.json";
-    raycast.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: overlapping spheres at several depths"},
-        {"close-overlap", CameraPose{{1.9f, 1.1f, 3.2f}, -28.0f, -8.0f}, 0.0f,
-         "spheres in front of one another: only the nearest root of the nearest sphere may win"},
-        {"hidden", CameraPose{{5.0f, 1.2f, 3.0f}, 0.0f, -2.0f}, 0.0f,
-         "a small sphere inside a big one stays hidden: the nearest root wins, not the far one"},
-        {"inside", CameraPose{{5.0f, 1.0f, -2.4f}, 0.0f, 0.0f}, 0.0f,
-         "camera inside a large sphere: the near root is behind the eye, the far one is the hit"},
-        {"among", CameraPose{{0.2f, 1.3f, -4.0f}, 180.0f, -4.0f}, 0.0f,
-         "spheres behind the camera must not be seen (t > 0)"},
-        {"moving", std::nullopt, 1.3f, "time 1.3 s: the white sphere has moved"},
-    };
-    stages.push_back(raycast);
-
-    StageInfo shading;
-    shading.id = "02-shading";
-    shading.title = "Blinn-Phong shading: ambient once, diffuse and specular from three point lights, a material table";
-    shading.scene = "stage02.json";
-    shading.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: every sphere lit by three lights"},
-        {"highlights", CameraPose{{1.6f, 1.9f, 3.6f}, -18.0f, -14.0f}, 0.0f,
-         "close to shiny spheres: the size and place of the highlights (half vector, exponent)"},
-        {"dark-side", CameraPose{{-1.5f, 1.6f, -6.5f}, 160.0f, -6.0f}, 0.0f,
-         "the sides facing away from the lights: ambient only, no negative light"},
-        {"inside", CameraPose{{5.0f, 1.0f, -2.4f}, 0.0f, 0.0f}, 0.0f,
-         "camera inside a large sphere: its inside is lit with the normal facing the eye"},
-        {"moving", std::nullopt, 1.3f, "time 1.3 s: the white sphere has moved, its shading with it"},
-    };
-    stages.push_back(shading);
-
-    StageInfo shadows;
-    shadows.id = "03-shadows";
-    shadows.title = "shadows: a ray toward each light, started just off the surface on the correct side";
-    shadows.scene = "stage02.json";
-    shadows.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: spheres shadow each other"},
-        {"shadow-closeup", CameraPose{{2.6f, 1.5f, 3.2f}, -40.0f, -12.0f}, 0.0f,
-         "close to shadows cast by one sphere on another, from three lights"},
-        {"grazing", CameraPose{{-4.5f, 1.4f, 1.5f}, 115.0f, -4.0f}, 0.0f,
-         "surfaces lit at a grazing angle, where a badly started shadow ray hits its own surface"},
-        {"beyond-light", CameraPose{{-3.5f, 4.5f, 5.0f}, 35.0f, -30.0f}, 0.0f,
-         "a sphere behind a light must not shadow anything: only blockers closer than the light count"},
-        {"shadows-off", std::nullopt, 0.0f, "key 1: with shadows off every light reaches every point", false},
-    };
-    stages.push_back(shadows);
-
-    StageInfo recursion;
-    recursion.id = "04-recursion";
-    recursion.title = "reflection and refraction (Fresnel, total internal reflection, gold) with an explicit stack instead of recursion";
-    recursion.scene = "stage04.json";
-    recursion.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera, depth 8: glass, mirror and gold"},
-        {"depth-1", std::nullopt, 0.0f, "depth 1: primary rays only, no reflection or refraction", true, 1},
-        {"depth-2", std::nullopt, 0.0f, "depth 2: one bounce; mirrors in mirrors stay dark", true, 2},
-        {"glass-closeup", CameraPose{{0.4f, 1.3f, 4.0f}, 0.0f, -6.0f}, 0.0f,
-         "through the glass sphere: refraction in and out, Fresnel at the rim"},
-        {"inside-glass", CameraPose{{0.0f, 1.0f, 1.6f}, 20.0f, 0.0f}, 0.0f,
-         "camera inside the glass: leaving the glass, index inverted, total internal reflection"},
-        {"gold", CameraPose{{3.6f, 1.6f, 1.6f}, -30.0f, -12.0f}, 0.0f, "the gold sphere: conductor Fresnel per colour channel"},
-    };
-    stages.push_back(recursion);
-
-    StageInfo primitives;
-    primitives.id = "05-primitives";
-    primitives.title = "more kinds of object: planes, discs, triangles (Moller-Trumbore), a glass cube and a torus (quartic)";
-    primitives.scene = "stage05.json";
-    primitives.maxPlanes = 4;
-    primitives.maxDiscs = 4;
-    primitives.maxTriangles = 32;
-    primitives.maxTori = 2;
-    primitives.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: floor, disc, mirror rectangle, glass cube with the torus"},
-        {"floor-level", CameraPose{{-3.0f, 0.25f, 6.0f}, 20.0f, 1.0f}, 0.0f,
-         "eye just above the floor: the plane toward the horizon, rays almost parallel to it"},
-        {"from-below", CameraPose{{1.0f, -1.5f, 6.0f}, 0.0f, 12.0f}, 0.0f,
-         "eye under the floor: the plane from behind, objects hidden above it"},
-        {"disc-closeup", CameraPose{{2.2f, 1.6f, 2.6f}, -20.0f, -5.0f}, 0.0f, "the disc's round edge, against the floor"},
-        {"mirror-back", CameraPose{{-5.0f, 1.8f, -7.0f}, 200.0f, -5.0f}, 0.0f,
-         "the mirror rectangle from behind: both sides of a triangle count"},
-        {"cube-closeup", CameraPose{{1.6f, 1.9f, 3.2f}, -25.0f, -14.0f}, 0.0f,
-         "the glass cube: its triangles' edges and inside faces, refraction through it"},
-        {"torus-closeup", CameraPose{{0.6f, 1.5f, 2.4f}, -10.0f, -10.0f}, 2.0f,
-         "the torus through the glass, turned: the quartic's roots and the torus normal"},
-    };
-    stages.push_back(primitives);
-
-    StageInfo textures = primitives;
-    textures.id = "06-textures";
-    textures.title = "textures: sphere and plane texture coordinates, a cube-map sky box, the glow around the sun";
-    textures.scene = "stage06.json";
-    textures.maxTextures = 8;
-    textures.skyBox = true;
-    textures.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: earth, moon, tiled floor, marble disc, sky box, sun glow"},
-        {"earth-closeup", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f,
-         "close to the earth: longitude and latitude, the picture the right way round"},
-        {"moon-closeup", CameraPose{{1.6f, 2.0f, 3.3f}, -8.0f, -10.0f}, 0.0f, "close to the moon, seen from another side"},
-        {"floor-closeup", CameraPose{{0.5f, 1.0f, 4.0f}, 30.0f, -30.0f}, 0.0f, "the tiled floor: tiles repeat, square, not mirrored"},
-        {"sky-up", CameraPose{{0.0f, 2.0f, 5.0f}, 60.0f, 50.0f}, 0.0f, "looking up: only the sky box"},
-        {"sun-glow", CameraPose{{0.0f, 2.0f, 5.0f}, 27.0f, 12.0f}, 0.0f, "looking at the sun: its texture and the glow around it"},
-        {"sun-behind-moon", CameraPose{{-0.13f, 0.92f, 4.14f}, 29.0f, 13.0f}, 0.0f,
-         "the moon in front of the sun: no glow over objects nearer than the sun"},
-        {"glow-off", CameraPose{{0.0f, 2.0f, 5.0f}, 27.0f, 12.0f}, 0.0f, "key G: the same without the glow", true, 8, false},
-    };
-    stages.push_back(textures);
-
-    StageInfo normalMaps = textures;
-    normalMaps.id = "07-normalmaps";
-    normalMaps.title = "normal mapping: mountains and craters from a picture of normals, in the sphere's tangent frame";
-    normalMaps.checkViews = {
-        {"front", std::nullopt, 0.0f, "the scene camera: bumpy earth and moon"},
-        {"earth-closeup", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f,
-         "close to the earth: mountains lit from the side, shading the right way round"},
-        {"earth-terminator", CameraPose{{-4.2f, 2.2f, 1.4f}, 65.0f, -10.0f}, 0.0f,
-         "where day turns to night on the earth: bumps are strongest in grazing light"},
-        {"moon-closeup", CameraPose{{1.6f, 2.0f, 3.3f}, -8.0f, -10.0f}, 0.0f, "close to the moon: craters"},
-        {"normal-maps-off", CameraPose{{-1.0f, 2.0f, 3.4f}, -5.0f, -8.0f}, 0.0f, "key N: smooth spheres again", true, 8, true, false},
-    };
-    stages.push_back(normalMaps);
-
-    StageInfo full = normalMaps;
-    full.id = "08-full";
-    full.title = "the full demo: lite and pro scenes, every feature, colour modes";
-    full.scene = "lite.json";
-    full.maxSpheres = 128;
-    full.maxMaterials = 32;
-    const CameraPose cubeCloseup{{0.2f, 3.0f, 2.6f}, 0.0f, -35.0f};
-    full.checkViews = {
-        {"lite-front", std::nullopt, 0.0f, "the lite scene: every kind of object, textures, normal maps, glow"},
-        {"lite-moving", std::nullopt, 2.5f, "time 2.5 s: the moon and the blue sphere have moved"},
-        {"lite-depth-2", std::nullopt, 0.0f, "depth 2: one bounce", true, 2},
-        {"lite-shadows-off", std::nullopt, 0.0f, "key 1: shadows off", false},
-        {"lite-brb", std::nullopt, 0.0f, "colour mode BRB (Up/Down)", true, 8, true, true, 1},
-        {"lite-brr", std::nullopt, 0.0f, "colour mode BRR", true, 8, true, true, 2},
-        {"lite-rbb", std::nullopt, 0.0f, "colour mode RBB", true, 8, true, true, 3},
-        {"lite-ggr", std::nullopt, 0.0f, "colour mode GGR", true, 8, true, true, 4},
-        {"pro-front", std::nullopt, 0.0f, "the pro scene: 110 spheres, the glass cube and the torus", true, 8, true, true, 0, "pro.json"},
-        {"pro-cube", cubeCloseup, 1.0f, "the torus inside the glass cube", true, 8, true, true, 0, "pro.json"},
-    };
-    stages.push_back(full);
-    return stages;
+    for (const fs::path& f : files) stages.push_back(readStageFile(f));
+    return inBuildOrder(std::move(stages));
 }
 
 std::string stageList() {
@@ -167,44 +213,83 @@ std::string stageList() {
 
 } // namespace
 
+StageInfo readStageFile(const fs::path& file) {
+    const std::string shown = displayPath(file);
+    StageReader r{shown};
+    const json doc = parseFile(file, shown);
+    if (!doc.is_object()) r.fail("(top level)", "expected an object");
+    r.onlyKeys(doc, "", {"id", "title", "track", "builds_on", "scene", "program", "limits", "features", "function_checks", "mistakes",
+                         "check_views", "defines"});
+    StageInfo s;
+    s.id = r.text(r.member(doc, "", "id"), "id");
+    if (s.id != file.parent_path().filename().string()) r.fail("id", "'" + s.id + "' is not the folder's name '" + file.parent_path().filename().string() + "'");
+    s.title = r.text(r.member(doc, "", "title"), "title");
+    s.track = r.text(r.member(doc, "", "track"), "track");
+    const json& on = r.member(doc, "", "builds_on");
+    if (!on.is_null()) s.buildsOn = r.text(on, "builds_on");
+    if (s.buildsOn == s.id) r.fail("builds_on", "a stage cannot build on itself");
+    s.scene = r.text(r.member(doc, "", "scene"), "scene");
+    s.program = r.program(r.member(doc, "", "program"));
+    s.limits = r.limits(r.member(doc, "", "limits"));
+    const std::vector<std::string> features = r.strings(r.member(doc, "", "features"), "features");
+    for (std::size_t i = 0; i < features.size(); ++i) {
+        if (!kKnownFeatures.count(features[i])) {
+            std::string known;
+            for (const std::string& k : kKnownFeatures) known += (known.empty() ? "" : ", ") + k;
+            r.fail("features[" + std::to_string(i) + "]", "unknown feature '" + features[i] + "' (known: " + known + ")");
+        }
+        s.features.insert(features[i]);
+    }
+    s.functionChecks = r.strings(r.member(doc, "", "function_checks"), "function_checks");
+    s.mistakes = r.text(r.member(doc, "", "mistakes"), "mistakes");
+    if (s.mistakes.is_absolute() || s.mistakes.lexically_normal().string().rfind("..", 0) == 0)
+        r.fail("mistakes", "expected a folder inside the project, relative to its root");
+    const json& views = r.member(doc, "", "check_views");
+    if (!views.is_array() || views.empty()) r.fail("check_views", "expected a non-empty list of views");
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        CheckView v = r.view(views[i], "check_views[" + std::to_string(i) + "]");
+        for (const CheckView& earlier : s.checkViews)
+            if (earlier.name == v.name) r.fail("check_views[" + std::to_string(i) + "].name", "'" + v.name + "' is used twice");
+        s.checkViews.push_back(v);
+    }
+    if (doc.contains("defines")) s.extraDefines = r.strings(doc["defines"], "defines");
+    return s;
+}
+
 std::vector<std::string> StageInfo::defines() const {
     auto size = [](const char* name, int limit) { return std::string(name) + " " + std::to_string(std::max(1, limit)); };
-    std::vector<std::string> all = {size("MAX_SPHERES", maxSpheres), size("MAX_MATERIALS", maxMaterials), size("MAX_LIGHTS", maxLights),
-                                    size("MAX_PLANES", maxPlanes),   size("MAX_DISCS", maxDiscs),         size("MAX_TRIANGLES", maxTriangles),
-                                    size("MAX_TORI", maxTori)};
+    std::vector<std::string> all = {size("MAX_SPHERES", limits.spheres),   size("MAX_MATERIALS", limits.materials),
+                                    size("MAX_LIGHTS", limits.lights),     size("MAX_PLANES", limits.planes),
+                                    size("MAX_DISCS", limits.discs),       size("MAX_TRIANGLES", limits.triangles),
+                                    size("MAX_TORI", limits.tori)};
     all.insert(all.end(), extraDefines.begin(), extraDefines.end());
     return all;
 }
 
-bool StageInfo::available() const {
-    std::error_code ec;
-    return std::filesystem::is_directory(projectRoot() / "solution" / id, ec);
-}
+fs::path StageInfo::folder() const { return projectRoot() / "solution" / id; }
 
 const std::vector<StageInfo>& allStages() {
-    static const std::vector<StageInfo> stages = makeStages();
+    static const std::vector<StageInfo> stages = readStages();
     return stages;
 }
 
 const StageInfo& findStage(const std::string& idOrNumber) {
+    const bool digits = !idOrNumber.empty() && idOrNumber.size() <= 3 && idOrNumber.find_first_not_of("0123456789") == std::string::npos;
     for (const StageInfo& s : allStages()) {
-        bool numberMatches = !idOrNumber.empty() && idOrNumber.size() <= 2 &&
-                             idOrNumber.find_first_not_of("0123456789") == std::string::npos &&
-                             std::stoi(idOrNumber) == std::stoi(s.number());
-        if (idOrNumber == s.id || numberMatches) {
-            if (!s.available()) throw Error("stage " + s.id + " is not available yet (no solution/" + s.id + "/)");
-            return s;
-        }
+        const std::string n = s.number();
+        const bool numberMatches = digits && !n.empty() && n.size() <= 3 && n.find_first_not_of("0123456789") == std::string::npos &&
+                                   std::stoi(idOrNumber) == std::stoi(n);
+        if (idOrNumber == s.id || numberMatches) return s;
     }
     throw Error("unknown stage '" + idOrNumber + "' (stages: " + stageList() + ")");
 }
 
-const StageInfo& latestAvailableStage() {
-    const StageInfo* latest = nullptr;
+const StageInfo& demoStage() {
+    const StageInfo* demo = nullptr;
     for (const StageInfo& s : allStages())
-        if (s.available()) latest = &s;
-    if (!latest) throw Error("no stage is available (solution/ is empty)");
-    return *latest;
+        if (s.has("demo")) demo = &s;
+    if (!demo) throw Error("no stage has the \"demo\" feature (solution/*/stage.json)");
+    return *demo;
 }
 
 } // namespace raylab

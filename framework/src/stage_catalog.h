@@ -1,9 +1,13 @@
 #pragma once
-// The stages of the course, in the order the seed thesis builds the tracer.
-// A stage exists once solution/<id>/ does; labs/<id>/ is generated from it.
+// The stages of the course, read from solution/<id>/stage.json (see
+// solution/README.md for the format). Nothing in C++ knows a stage by its id
+// or number: what a stage has (scene, limits, features, check views, function
+// checks) is data, and the order of a track follows `builds_on`.
 #include "camera.h"
 
+#include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,35 +27,60 @@ struct CheckView {
     std::string scene;  // empty: the stage's scene; else a file under assets/scenes/
 };
 
-struct StageInfo {
-    std::string id;                 // "01-raycast"
-    std::string title;              // one line for `raylab stages`
-    std::string scene;              // default scene, relative to assets/scenes/
-    std::vector<std::string> extraDefines;  // besides the scene limits below
-    int maxSpheres = 16;            // scene limits the shader is compiled for
-    int maxMaterials = 16;
-    int maxLights = 4;
-    int maxPlanes = 0;              // 0: this stage has no such objects
-    int maxDiscs = 0;
-    int maxTriangles = 0;
-    int maxTori = 0;
-    int maxTextures = 0;            // texture layers (pictures and normal maps)
-    bool skyBox = false;            // draws a sky box
-    std::vector<CheckView> checkViews;
+// The shader files a stage's program is built from (names on its search path).
+struct StageProgram {
+    std::string vertex;
+    std::string geometry;  // empty: no geometry shader
+    std::string fragment;
+};
 
-    std::string number() const { return id.substr(0, 2); }
+// The most of each kind of object a stage's shader is compiled for.
+struct StageLimits {
+    int spheres = 16;
+    int materials = 16;
+    int lights = 4;
+    int planes = 0;  // 0: this stage has no such objects
+    int discs = 0;
+    int triangles = 0;
+    int tori = 0;
+    int textures = 0;  // texture layers (pictures and normal maps)
+    bool skyBox = false;
+};
+
+struct StageInfo {
+    std::string id;        // "01-raycast", the folder name
+    std::string title;     // one line for `raylab stages`
+    std::string track;     // "raytrace"
+    std::string buildsOn;  // the stage whose files this one inherits; empty for none
+    std::string scene;     // default scene, relative to assets/scenes/
+    StageProgram program;
+    StageLimits limits;
+    std::set<std::string> features;           // see kKnownFeatures in stage_catalog.cpp
+    std::vector<std::string> functionChecks;  // names of function checks (function_checks.h)
+    std::filesystem::path mistakes;           // the mistakes catalogue, relative to the project root
+    std::vector<CheckView> checkViews;
+    std::vector<std::string> extraDefines;  // besides the limits ("defines" in stage.json)
+
+    bool has(const std::string& feature) const { return features.count(feature) > 0; }
+    // The part of the id before the first '-' ("01" of "01-raycast"): what
+    // `--stage 01` and messages such as "stage 06 adds it" use.
+    std::string number() const { return id.substr(0, id.find('-')); }
     // MAX_SPHERES, MAX_MATERIALS, MAX_LIGHTS, MAX_PLANES, ... (at least 1:
     // GLSL has no empty arrays) and the extra defines.
     std::vector<std::string> defines() const;
-    bool available() const;         // solution/<id>/ exists
+    std::filesystem::path folder() const;  // solution/<id>
 };
 
+// Reads one stage.json. Throws Error("FILE: KEY: what is wrong").
+StageInfo readStageFile(const std::filesystem::path& file);
+
+// Every stage, track by track, each track in `builds_on` order.
 const std::vector<StageInfo>& allStages();
 
 // Accepts "01-raycast", "01" or "1". Throws Error listing the stage ids.
 const StageInfo& findStage(const std::string& idOrNumber);
 
-// The highest stage whose solution exists.
-const StageInfo& latestAvailableStage();
+// The stage `raylab demo` and `raylab bench` run: the last with the "demo" feature.
+const StageInfo& demoStage();
 
 } // namespace raylab

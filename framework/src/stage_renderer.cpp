@@ -19,16 +19,21 @@ void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std
 }
 
 void checkSceneFits(const StageInfo& stage, const Scene& scene) {
-    checkFits(scene, stage, "spheres", scene.spheres.size(), stage.maxSpheres);
-    checkFits(scene, stage, "materials", scene.materials.size(), stage.maxMaterials);
-    checkFits(scene, stage, "lights", scene.lights.size(), stage.maxLights);
-    checkFits(scene, stage, "planes", scene.planes.size(), stage.maxPlanes);
-    checkFits(scene, stage, "discs", scene.discs.size(), stage.maxDiscs);
-    checkFits(scene, stage, "triangles", scene.triangles.size(), stage.maxTriangles);
-    checkFits(scene, stage, "tori", scene.tori.size(), stage.maxTori);
-    checkFits(scene, stage, "textures", scene.textures.size(), stage.maxTextures);
-    if (scene.skyBox && !stage.skyBox)
-        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box (stage 06 adds it)");
+    const StageLimits& l = stage.limits;
+    checkFits(scene, stage, "spheres", scene.spheres.size(), l.spheres);
+    checkFits(scene, stage, "materials", scene.materials.size(), l.materials);
+    checkFits(scene, stage, "lights", scene.lights.size(), l.lights);
+    checkFits(scene, stage, "planes", scene.planes.size(), l.planes);
+    checkFits(scene, stage, "discs", scene.discs.size(), l.discs);
+    checkFits(scene, stage, "triangles", scene.triangles.size(), l.triangles);
+    checkFits(scene, stage, "tori", scene.tori.size(), l.tori);
+    checkFits(scene, stage, "textures", scene.textures.size(), l.textures);
+    if (scene.skyBox && !l.skyBox) {
+        std::string adds;  // the first stage of the track that has one
+        for (const StageInfo& s : allStages())
+            if (adds.empty() && s.track == stage.track && s.limits.skyBox) adds = " (stage " + s.number() + " adds it)";
+        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box" + adds);
+    }
 }
 
 // Texture units: the scene's pictures, then the sky box.
@@ -67,7 +72,7 @@ void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<gl
 StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format,
                              std::string fragmentEntry, ShaderVariant variant)
     : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)),
-      variant_(std::move(variant)), fragmentEntry_(std::move(fragmentEntry)) {
+      variant_(std::move(variant)), fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
     checkSceneFits(stage_, scene_);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
@@ -101,8 +106,9 @@ void StageRenderer::rebuild() {
         for (const std::string& d : stage_.extraDefines) defines.push_back(d);
     for (const std::string& d : variant_.defines()) defines.push_back(d);
     std::string prelude = variant_.specialized ? bakedSceneGlsl(scene_) : std::string();
-    ShaderSource vertex = assembleShader(kVertexEntry, sources_.search, defines);
-    ShaderSource fragment = assembleShader(fragmentEntry_, sources_.search, defines, prelude);
+    const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
+    ShaderSource vertex = assembleShader(stage_.program.vertex, search, defines);
+    ShaderSource fragment = assembleShader(fragmentEntry_, search, defines, prelude);
     auto program = std::make_unique<ShaderProgram>(vertex, fragment);
     program_ = std::move(program);
     files_ = fragment.files;

@@ -9,7 +9,9 @@
 #include "shader_program.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
+#include "render_settings.h"
 #include "texture.h"
+#include "track_renderer.h"
 
 #include "bvh_buffers.h"
 
@@ -19,16 +21,6 @@
 #include <vector>
 
 namespace raylab {
-
-// Run-time switches a frame is drawn with (window keys, command-line flags).
-struct RenderSettings {
-    static constexpr int kMaxDepth = 8;
-    bool shadows = true;       // key 1, --no-shadows
-    int maxDepth = kMaxDepth;  // rays per path, 1..8: arrow keys, --depth (from stage 04 on)
-    bool glow = true;          // key G, --no-glow (from stage 06 on)
-    bool normalMaps = true;    // key N, --no-normal-maps (from stage 07 on)
-    int colorMode = 0;         // Up/Down, --color-mode (stage 08): index into kColorModes
-};
 
 // How the stage's shader is compiled (fixed per program, unlike RenderSettings).
 // `raylab bench` compares the choices; the defaults are the fastest correct ones.
@@ -45,36 +37,32 @@ struct ShaderVariant {
     static ShaderVariant fastestFor(const Scene& scene);
 };
 
-// The seed's colour modes: which input channel feeds red, green and blue.
-inline constexpr const char* kColorModes[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
-inline constexpr int kColorModeCount = 5;
-
-class StageRenderer {
+// The ray-tracing track's renderer: a full-screen canvas whose fragment
+// shader traces the scene.
+class StageRenderer : public TrackRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene, missing file) or
     // ShaderError (compile/link error, mapped to file:line).
-    // FRAGMENTENTRY: the entry fragment shader (another one, e.g. the debug
-    // views' view_main.frag, gets the same uniforms).
+    // FRAGMENTENTRY: the entry fragment shader; empty for the stage's own
+    // (another one, e.g. the debug views' view_main.frag, gets the same uniforms).
     StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
-                  PixelFormat format = PixelFormat::Rgba8, std::string fragmentEntry = "main.frag", ShaderVariant variant = {});
+                  PixelFormat format = PixelFormat::Rgba8, std::string fragmentEntry = "", ShaderVariant variant = {});
 
-    void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
-    Image read() const { return target_->read(); }
+    void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {}) override;
+    Image read() const override { return target_->read(); }
     const Framebuffer& target() const { return *target_; }
-    // A new render target of another size (the window was resized).
-    void resize(int width, int height, PixelFormat format = PixelFormat::Rgba8) {
+    int width() const override { return target_->width(); }
+    int height() const override { return target_->height(); }
+    void blitToScreen(int screenWidth, int screenHeight) const override { target_->blitToScreen(screenWidth, screenHeight); }
+    void resize(int width, int height, PixelFormat format = PixelFormat::Rgba8) override {
         target_ = std::make_unique<Framebuffer>(width, height, format);
     }
     const Scene& scene() const { return scene_; }
     const ShaderVariant& variant() const { return variant_; }
 
-    // Rebuilds the program from the files on disk. On failure the previous
-    // program stays in use and the error is thrown.
-    void rebuild();
-    // The files the current program was built from (for hot reload).
-    const std::vector<std::filesystem::path>& sourceFiles() const { return files_; }
-    // Stubs of the lab that are still unsolved (empty for the solution).
-    const std::vector<OpenTodo>& openTodos() const { return todos_; }
+    void rebuild() override;
+    const std::vector<std::filesystem::path>& sourceFiles() const override { return files_; }
+    const std::vector<OpenTodo>& openTodos() const override { return todos_; }
 
 private:
     // The static part of the scene (background, materials, lights): uniforms
@@ -96,9 +84,5 @@ private:
     std::vector<OpenTodo> todos_;
     std::string fragmentEntry_;
 };
-
-// Where the framework's vertex shader and a stage's entry fragment shader are.
-inline constexpr const char* kVertexEntry = "canvas.vert";
-inline constexpr const char* kFragmentEntry = "main.frag";
 
 } // namespace raylab

@@ -11,12 +11,11 @@ StageSources solutionSources(const StageInfo& stage) {
     StageSources s;
     s.label = "solution";
     const fs::path root = projectRoot();
-    bool reached = false;
-    const auto& stages = allStages();
-    for (auto it = stages.rbegin(); it != stages.rend(); ++it) {
-        if (it->id == stage.id) reached = true;
-        std::error_code ec;
-        if (reached && fs::is_directory(root / "solution" / it->id, ec)) s.search.push_back(root / "solution" / it->id);
+    // The stage's own folder first, then the stages it builds on: a later
+    // stage's file replaces an earlier one of the same name.
+    for (const StageInfo* at = &stage; at; at = at->buildsOn.empty() ? nullptr : &findStage(at->buildsOn)) {
+        s.search.push_back(root / "solution" / at->id);
+        s.chain.push_back(at->id);
     }
     s.search.push_back(root / "framework" / "shaders");
     return s;
@@ -30,7 +29,53 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot) {
     StageSources s;
     s.label = "lab " + displayPath(labRoot) + "/";
     s.search = {labRoot / stage.id, projectRoot() / "framework" / "shaders"};
+    s.chain = solutionSources(stage).chain;
+    s.lab = true;
     return s;
+}
+
+namespace {
+
+// Which define switches which variant folder on.
+struct VariantSwitch {
+    const char* define;
+    bool whenDefined;  // false: the variant is used while the define is absent
+    const char* folder;
+};
+constexpr VariantSwitch kVariants[] = {
+    {"RAYLAB_NAIVE_NUMERICS", true, "naive-numerics"},     // textbook methods (tests/numerics)
+    {"TORUS_SOLVER_CLOSED_FORM", true, "torus-closed-form"},  // the seed's torus solver
+    {"RAYLAB_BVH", false, "linear-search"},                // objects found by a plain loop
+};
+
+bool defined(const std::vector<std::string>& defines, const std::string& name) {
+    for (const std::string& d : defines)
+        if (d == name || d.rfind(name + " ", 0) == 0) return true;
+    return false;
+}
+
+} // namespace
+
+std::vector<fs::path> searchWithVariants(const StageSources& sources, const std::vector<std::string>& defines) {
+    const fs::path variants = projectRoot() / "framework" / "shaders" / "variants";
+    std::vector<std::string> on;
+    for (const VariantSwitch& v : kVariants)
+        if (defined(defines, v.define) == v.whenDefined) on.push_back(v.folder);
+    auto variantDirsFor = [&](const std::string& stageId, std::vector<fs::path>& out) {
+        std::error_code ec;
+        for (const std::string& folder : on)
+            if (fs::is_directory(variants / folder / stageId, ec)) out.push_back(variants / folder / stageId);
+    };
+    std::vector<fs::path> search;
+    for (std::size_t i = 0; i < sources.search.size(); ++i) {
+        if (sources.lab && i == 0) {
+            for (const std::string& id : sources.chain) variantDirsFor(id, search);
+        } else if (!sources.lab && i < sources.chain.size()) {
+            variantDirsFor(sources.chain[i], search);
+        }
+        search.push_back(sources.search[i]);
+    }
+    return search;
 }
 
 fs::path defaultLabRoot() { return projectRoot() / "labs"; }

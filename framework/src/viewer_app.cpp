@@ -3,6 +3,7 @@
 #include "error.h"
 #include "paths.h"
 #include "settings_keys.h"
+#include "tracks.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,8 +25,7 @@ ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync)
 void ViewerApp::init() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
-    renderer_ = std::make_unique<StageRenderer>(*setup_.stage, setup_.sources, setup_.scene, w, h, PixelFormat::Rgba8, kFragmentEntry,
-                                                ShaderVariant::fastestFor(setup_.scene));
+    renderer_ = makeTrackRenderer(setup_, w, h);
     reportOpenTodos(renderer_->openTodos());
     watcher_.watch(renderer_->sourceFiles());
     time_ = setup_.time;
@@ -73,9 +73,9 @@ void ViewerApp::update(float dt) {
 void ViewerApp::render() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
-    if (w != renderer_->target().width() || h != renderer_->target().height()) renderer_->resize(w, h);
+    if (w != renderer_->width() || h != renderer_->height()) renderer_->resize(w, h);
     renderer_->render(setup_.camera, time_, setup_.settings);
-    renderer_->target().blitToScreen(w, h);
+    renderer_->blitToScreen(w, h);
     if (overlay_ && showOverlay_) drawOverlay();
     ++frames_;
     if (automation_.exitAfterFrames > 0 && frames_ >= automation_.exitAfterFrames) {

@@ -8,8 +8,8 @@
 #include "application.h"
 #include "file_watcher.h"
 #include "overlay.h"
-#include "stage_renderer.h"
 #include "stage_setup.h"
+#include "track_renderer.h"
 
 #include <memory>
 #include <string>
@@ -39,7 +39,7 @@ private:
 
     StageSetup setup_;
     Automation automation_;
-    std::unique_ptr<StageRenderer> renderer_;
+    std::unique_ptr<TrackRenderer> renderer_;
     std::unique_ptr<Overlay> overlay_;
     bool showOverlay_ = true;
     float frameMs_ = 0.0f;  // smoothed frame time for the overlay

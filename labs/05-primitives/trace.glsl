@@ -8,9 +8,7 @@
 // stack is empty, the pixel is done.
 #include "ray_offset.glsl"
 
-uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys)
-
-const int MAX_DEPTH = 8;
+uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 8 is defined by the framework)
 
 // A ray waiting to be traced.
 struct PendingRay {
@@ -23,8 +21,8 @@ struct PendingRay {
 // offsetRayOrigin(point, side) (framework/shaders/ray_offset.glsl, see lab 03).
 
 // Every ray ends its path or splits in two, at most MAX_DEPTH - 1 times:
-// 2^MAX_DEPTH bounds the rays of one pixel, and keeps the loop finite.
-const int MAX_RAYS = 256;
+// MAX_RAYS = 2^MAX_DEPTH (defined by the framework) bounds the rays of one
+// pixel, and keeps the loop finite.
 
 vec3 trace(Ray primary)
 {
@@ -61,13 +59,7 @@ vec3 trace(Ray primary)
                     float F = 1.0;  // total internal reflection
                     if (refracted != vec3(0.0)) {
                         float cosTransmitted = -dot(refracted, normal);
-#ifdef RAYLAB_NAIVE_NUMERICS
-                        // Schlick with the incident cosine also inside the glass:
-                        // badly wrong near the critical angle (tests/numerics/fresnel_test.cpp).
-                        F = fresnelDielectric(cosIncident, m.ior);
-#else
                         F = fresnelDielectric(entering ? cosIncident : cosTransmitted, m.ior);
-#endif
                         if (stackSize < MAX_DEPTH) {
                             stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), refracted),
                                                           current.weight * (1.0 - F), current.depth + 1);

@@ -87,12 +87,10 @@ int solveQuartic(vec4 a, out vec4 roots)
     }
     for (int i = 0; i < count; ++i) {
         float x = roots[i] - a3 / 4.0;
-#ifndef TORUS_SOLVER_CLOSED_FORM
         for (int step = 0; step < 2; ++step) {  // Newton: x -= f(x) / f'(x)
             float slope = quarticSlope(a, x);
             if (abs(slope) > 1e-12) x -= quartic(a, x) / slope;
         }
-#endif
         roots[i] = x;
     }
     return count;

@@ -39,8 +39,8 @@ float intersectTorusLocal(Ray ray, float R, float r)
     // of the distance to the torus, and the roots drown in rounding error a
     // few radii away (the seed thesis saw exactly this). So first jump to
     // where the ray enters the torus's bounding sphere and solve from there
-    // (compiling with TORUS_SOLVER_CLOSED_FORM defined skips this and the
-    // Newton steps, for the numerics tests' comparison).
+    // (the numerics tests compare this with the seed's way, which skips
+    // this and the Newton steps).
     // A little larger than the torus: on its outer equator the torus touches
     // the sphere R + r, and an entry point rounded inward would start inside.
     float bound = 1.01 * (R + r);
@@ -52,11 +52,7 @@ float intersectTorusLocal(Ray ray, float R, float r)
     float h = bound * bound - dot(closest, closest);
     if (h < 0.0) return NO_HIT;          // misses the bounding sphere
     if (-b + sqrt(h) <= T_MIN) return NO_HIT;  // the sphere is behind the ray
-#ifdef TORUS_SOLVER_CLOSED_FORM
-    float tEnter = 0.0;  // the seed's way, kept for comparison: solved from the ray origin itself
-#else
     float tEnter = max(-b - sqrt(h), 0.0);
-#endif
     vec3 o = ray.origin + tEnter * ray.dir;
     vec3 d = ray.dir;
 
@@ -70,12 +66,6 @@ float intersectTorusLocal(Ray ray, float R, float r)
                              k * k - R4 * (o.x * o.x + o.y * o.y));
     vec4 roots;
     int count = solveQuartic(coefficients, roots);
-#ifdef TORUS_SOLVER_CLOSED_FORM
-    float best = T_FAR;
-    for (int i = 0; i < count; ++i)
-        if (tEnter + roots[i] > T_MIN && roots[i] < best) best = roots[i];
-    return best < T_FAR ? tEnter + best : NO_HIT;
-#else
     // Nearest first; each root polished and kept only if the point really
     // lies on the surface (near a double root, rounding can invent a root
     // or lose one).
@@ -108,7 +98,6 @@ float intersectTorusLocal(Ray ray, float R, float r)
         t += max(dist, hitDistance);
     }
     return NO_HIT;
-#endif
 }
 
 // The unit outward normal of the torus at a surface point p (torus frame).

@@ -20,93 +20,17 @@
 // child is visited first; the farther one waits and is skipped when a hit
 // nearer than its box has been found meanwhile.
 //
-// The framework defines RAYLAB_BVH unless it is switched off (`raylab demo
-// --no-bvh`, `raylab bench`); without it this is lab 05's linear search.
+// The walk is in test_spheres.glsl. Where the BVH is switched off (`raylab
+// demo --no-bvh`, `raylab bench`, scenes with few spheres) the framework
+// uses a test_spheres.glsl with lab 05's linear search instead.
 
 void keepNearer(inout Hit hit, float t, int kind, int index)
 {
     if (t != NO_HIT && t < hit.t) hit = Hit(t, objectId(kind, index));
 }
 
-#ifdef RAYLAB_BVH
-// Node n: texel 2n = (box min, first), texel 2n + 1 = (box max, count). A
-// leaf (count > 0) holds the spheres uBvhItems[first .. first + count - 1];
-// an inner node (count 0) has its children at nodes first and first + 1.
-uniform samplerBuffer uBvhNodes;
-uniform isamplerBuffer uBvhItems;
-const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
+#include "test_spheres.glsl"
 
-// Where the ray enters the box lo..hi (0 when it starts inside), or T_FAR
-// when it misses it or reaches it only beyond tMax (the slab test).
-float enterBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax)
-{
-    vec3 t0 = (lo - origin) * invDir;
-    vec3 t1 = (hi - origin) * invDir;
-    vec3 tNear = min(t0, t1);
-    vec3 tFar = max(t0, t1);
-    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
-    return enter <= leave ? enter : T_FAR;
-}
-
-float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
-{
-    return enterBox(origin, invDir, texelFetch(uBvhNodes, 2 * node).xyz, texelFetch(uBvhNodes, 2 * node + 1).xyz, tMax);
-}
-
-// Walks the tree, keeping the nearest sphere hit closer than hit.t. With
-// anyHit it stops at the first sphere found (shadow rays need no more).
-void walkBvh(Ray ray, inout Hit hit, bool anyHit)
-{
-    // 1/0 would give 0 * inf = NaN in the slab test for a ray exactly on a
-    // box face: a tiny direction component instead gives a huge finite slope.
-    vec3 d = ray.dir;
-    vec3 invDir = 1.0 / vec3(abs(d.x) < 1e-20 ? 1e-20 : d.x, abs(d.y) < 1e-20 ? 1e-20 : d.y, abs(d.z) < 1e-20 ? 1e-20 : d.z);
-    int stackNode[BVH_STACK_SIZE];
-    float stackEnter[BVH_STACK_SIZE];
-    int size = 0;
-    int node = 0;
-    if (enterNode(0, ray.origin, invDir, hit.t) == T_FAR) return;
-    while (true) {
-        int first = int(texelFetch(uBvhNodes, 2 * node).w);
-        int count = int(texelFetch(uBvhNodes, 2 * node + 1).w);
-        bool descend = false;
-        if (count > 0) {
-            for (int k = 0; k < count; ++k) {
-                int i = texelFetch(uBvhItems, first + k).r;
-                keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
-            }
-            if (anyHit && hit.id >= 0) return;
-        } else {
-            float enterA = enterNode(first, ray.origin, invDir, hit.t);
-            float enterB = enterNode(first + 1, ray.origin, invDir, hit.t);
-            int near = enterA <= enterB ? first : first + 1;
-            float enterFar = max(enterA, enterB);
-            if (enterFar < T_FAR && size < BVH_STACK_SIZE) {
-                stackNode[size] = near == first ? first + 1 : first;
-                stackEnter[size] = enterFar;
-                ++size;
-            }
-            if (min(enterA, enterB) < T_FAR) {
-                node = near;
-                descend = true;
-            }
-        }
-        if (!descend) {
-            // Next waiting box that could still hold something nearer.
-            bool found = false;
-            while (size > 0 && !found) {
-                --size;
-                if (stackEnter[size] < hit.t) {
-                    node = stackNode[size];
-                    found = true;
-                }
-            }
-            if (!found) return;
-        }
-    }
-}
-#endif
 
 // Every object but the spheres, one by one. With stopAtFirst it returns as
 // soon as something nearer than hit.t is found.
@@ -123,15 +47,6 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
         keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
 }
 
-void testSpheres(Ray ray, inout Hit hit, bool stopAtFirst)
-{
-#ifdef RAYLAB_BVH
-    walkBvh(ray, hit, stopAtFirst);
-#else
-    for (int i = 0; i < uSphereCount && !(stopAtFirst && hit.id >= 0); ++i)
-        keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
-#endif
-}
 
 bool findClosest(Ray ray, out Hit hit)
 {

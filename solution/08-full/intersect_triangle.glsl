@@ -28,8 +28,8 @@
 // as inside for every triangle that shares the edge: both report the hit
 // (at the same t), and nothing falls through.
 //
-// Compiling with RAYLAB_NAIVE_NUMERICS defined gives lab 05's Moller-Trumbore
-// instead (for the numerics tests and the benchmark).
+// The numerics tests and the benchmark compare it with lab 05's
+// Moller-Trumbore.
 // Returns t > T_MIN, or NO_HIT.
 
 // p.x q.y - p.y q.x with p and q in one fixed order (the lexicographically
@@ -47,23 +47,6 @@ float edgeFunction(vec2 p, vec2 q)
 
 float intersectTriangle(Ray ray, vec3 a, vec3 b, vec3 c)
 {
-#ifdef RAYLAB_NAIVE_NUMERICS
-    // Lab 05's Moller-Trumbore.
-    vec3 e1 = b - a;
-    vec3 e2 = c - a;
-    vec3 p = cross(ray.dir, e2);
-    float det = dot(e1, p);
-    if (abs(det) < 1e-10) return NO_HIT;
-    float invDet = 1.0 / det;
-    vec3 s = ray.origin - a;
-    float u = dot(s, p) * invDet;
-    if (u < 0.0 || u > 1.0) return NO_HIT;
-    vec3 q = cross(s, e1);
-    float v = dot(ray.dir, q) * invDet;
-    if (v < 0.0 || u + v > 1.0) return NO_HIT;
-    float t = dot(e2, q) * invDet;
-    return t > T_MIN ? t : NO_HIT;
-#else
     // 1. The axis the ray runs along most, and the shear that makes it +z.
     vec3 d = ray.dir;
     vec3 absD = abs(d);
@@ -103,5 +86,4 @@ float intersectTriangle(Ray ray, vec3 a, vec3 b, vec3 c)
     float T = U * (sz * A[kz]) + V * (sz * B[kz]) + W * (sz * C[kz]);
     float t = T / det;
     return t > T_MIN ? t : NO_HIT;
-#endif
 }

@@ -32,7 +32,7 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-const StageInfo& full() { return findStage("08"); }
+const StageInfo& full() { return demoStage(); }
 
 const CheckView& view(const std::string& name) {
     for (const CheckView& v : full().checkViews)
@@ -45,7 +45,7 @@ Scene sceneOf(const CheckView& v) { return loadScene(projectRoot() / "assets/sce
 Image render(const CheckView& v, const ShaderVariant& variant, const StageSources& sources = solutionSources(full())) {
     raylab::test::ensureGlContext();
     Scene scene = sceneOf(v);
-    StageRenderer r(full(), sources, scene, kWidth, kHeight, PixelFormat::Rgba32F, kFragmentEntry, variant);
+    StageRenderer r(full(), sources, scene, kWidth, kHeight, PixelFormat::Rgba32F, "", variant);
     r.render(cameraFor(v.pose, scene), v.time, settingsOf(v));
     long nonFinite = 0;
     Image image = imageFromFloats(r.target().readFloats(), kWidth, kHeight, &nonFinite);
@@ -111,7 +111,7 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
     fs::path stageDir = dir / "08-full";
     fs::create_directories(stageDir);
     for (const auto& entry : fs::directory_iterator(projectRoot() / "solution/08-full")) fs::copy(entry.path(), stageDir / entry.path().filename());
-    raylab::test::replaceInFile(stageDir / "find_closest.glsl", "if (enterFar < T_FAR && size < BVH_STACK_SIZE)", "if (false)");
+    raylab::test::replaceInFile(stageDir / "test_spheres.glsl", "if (enterFar < T_FAR && size < BVH_STACK_SIZE)", "if (false)");
     StageSources broken = solutionSources(full());
     broken.search.front() = stageDir;
     const CheckView& v = view("pro-front");
@@ -125,14 +125,13 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
 TEST(VariantViews, EveryStageDrawsTheSameSpecialised) {
     raylab::test::ensureGlContext();
     for (const StageInfo& stage : allStages()) {
-        if (!stage.available()) continue;
         const CheckView& v = stage.checkViews.front();
         Scene scene = loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? stage.scene : v.scene));
         Image images[2];
         for (int k = 0; k < 2; ++k) {
             ShaderVariant variant = ShaderVariant::fastestFor(scene);
             variant.specialized = k == 1;
-            StageRenderer r(stage, solutionSources(stage), scene, kWidth, kHeight, PixelFormat::Rgba32F, kFragmentEntry, variant);
+            StageRenderer r(stage, solutionSources(stage), scene, kWidth, kHeight, PixelFormat::Rgba32F, "", variant);
             r.render(cameraFor(v.pose, scene), v.time, settingsOf(v));
             images[k] = imageFromFloats(r.target().readFloats(), kWidth, kHeight, nullptr);
         }

@@ -21,6 +21,7 @@
 #include "paths.h"
 #include "reference_tracer.h"
 #include "stage_setup.h"
+#include "shader_constants.h"
 #include "test_support.h"
 #include "view_renderers.h"
 
@@ -174,7 +175,7 @@ TEST(ReferenceTracer, PrimaryHitDepthNormalAndIdAreAnalytic) {
     // Down onto the floor: plane 0 has id 1 * 1024 + 0, normal +y, t = 1 / sin(angle).
     PrimaryRay down{{0.0, 0.0, 5.0}, glm::normalize(glm::dvec3(0.0, -1.0, 1.0))};
     s = tracer.trace(down);
-    EXPECT_EQ(s.id, 1024);
+    EXPECT_EQ(s.id, raylab::shader::kPlane * raylab::shader::kObjectKindStride);
     EXPECT_NEAR(s.depth, std::sqrt(2.0), 1e-12);
     EXPECT_EQ(s.normal, glm::dvec3(0.0, 1.0, 0.0));
 

@@ -53,6 +53,11 @@ std::vector<std::pair<fs::path, json>> specs(const fs::path& dir) {
     return out;
 }
 
+// The stages after the first N, in course order.
+std::vector<std::string> laterThan(const std::vector<std::string>& stages, std::size_t n) {
+    return stages.size() > n ? std::vector<std::string>(stages.begin() + long(n), stages.end()) : std::vector<std::string>{};
+}
+
 void copyTree(const fs::path& from, const fs::path& to) { fs::copy(from, to, fs::copy_options::recursive); }
 
 } // namespace
@@ -73,8 +78,7 @@ int main(int argc, char** argv) {
         fs::remove(out / "labgen.log");
 
         std::vector<std::string> stages;
-        for (const StageInfo& s : allStages())
-            if (s.available()) stages.push_back(s.id);
+        for (const StageInfo& s : allStages()) stages.push_back(s.id);
         json expected;
         auto expectAll = [&](const std::string& student, const std::string& value) {
             for (const std::string& s : stages) expected[student][s] = value;
@@ -90,19 +94,19 @@ int main(int argc, char** argv) {
             copyTree(projectRoot() / "labs", subs / name);
             expectAll(name, "<100");
         }
+        // By position in the course, not by stage number: the first three
+        // stages submitted, then the first four finished.
         solvedStudent("submitted-01-03-only");
-        for (const std::string& s : stages)
-            if (s.substr(0, 2) > "03") {
-                fs::remove_all(subs / "submitted-01-03-only" / s);
-                expected["submitted-01-03-only"][s] = "not submitted";
-            }
+        for (const std::string& s : laterThan(stages, 3)) {
+            fs::remove_all(subs / "submitted-01-03-only" / s);
+            expected["submitted-01-03-only"][s] = "not submitted";
+        }
         solvedStudent("finished-01-04");
-        for (const std::string& s : stages)
-            if (s.substr(0, 2) > "04") {
-                fs::remove_all(subs / "finished-01-04" / s);
-                copyTree(projectRoot() / "labs" / s, subs / "finished-01-04" / s);
-                expected["finished-01-04"][s] = "<100";
-            }
+        for (const std::string& s : laterThan(stages, 4)) {
+            fs::remove_all(subs / "finished-01-04" / s);
+            copyTree(projectRoot() / "labs" / s, subs / "finished-01-04" / s);
+            expected["finished-01-04"][s] = "<100";
+        }
 
         for (const auto& [file, spec] : specs(projectRoot() / "tests" / "grading" / "broken")) {
             std::string name = "broken-" + file.stem().string();
@@ -115,7 +119,11 @@ int main(int argc, char** argv) {
         // Mistakes: 16 students, each mistake once, never two in one stage of a student.
         const int mistakeStudents = 30 - int(expected.size());
         std::vector<std::vector<Change>> assigned(std::size_t(std::max(mistakeStudents, 1)));
-        for (const auto& [file, spec] : specs(projectRoot() / "tests" / "mistakes")) {
+        std::vector<std::pair<fs::path, json>> mistakes;
+        for (const StageInfo& s : allStages())
+            if (fs::is_directory(projectRoot() / s.mistakes))
+                for (auto& m : specs(projectRoot() / s.mistakes)) mistakes.push_back(std::move(m));
+        for (const auto& [file, spec] : mistakes) {
             Change c{spec["stage"], spec["file"], spec["replace"], displayPath(file)};
             std::size_t best = assigned.size();
             for (std::size_t k = 0; k < assigned.size(); ++k) {

@@ -40,7 +40,8 @@ std::map<std::string, std::string> generateStage(const StageInfo& stage, MarkedF
     const fs::path own = projectRoot() / "solution" / stage.id;
     const fs::path framework = projectRoot() / "framework";
     std::map<std::string, std::string> files;
-    for (const char* entry : {kVertexEntry, kFragmentEntry}) {
+    for (const std::string& entry : {stage.program.vertex, stage.program.geometry, stage.program.fragment}) {
+        if (entry.empty()) continue;
         ShaderSource src = assembleShader(entry, sources.search, stage.defines());
         for (const fs::path& f : src.files) {
             fs::path canonical = fs::weakly_canonical(f);
@@ -87,7 +88,6 @@ int main(int argc, char** argv) {
         const fs::path root = solved ? fs::path(solvedDir) : fs::path(labsDir);
         int drift = 0;
         for (const StageInfo& stage : allStages()) {
-            if (!stage.available()) continue;
             auto files = generateStage(stage, solved ? MarkedForm::Solved : MarkedForm::Lab);
             const fs::path dir = root / stage.id;
             std::set<std::string> stale;

@@ -1,0 +1,22 @@
+#pragma once
+// Run-time switches a frame is drawn with (window keys, command-line flags).
+// Shared by the GPU renderer and the CPU reference tracer, so it holds no GL.
+
+#include "shader_constants.h"
+
+namespace raylab {
+
+struct RenderSettings {
+    static constexpr int kMaxDepth = shader::kMaxDepth;
+    bool shadows = true;       // key 1, --no-shadows
+    int maxDepth = kMaxDepth;  // rays per path, 1..8: arrow keys, --depth (from stage 04 on)
+    bool glow = true;          // key G, --no-glow (from stage 06 on)
+    bool normalMaps = true;    // key N, --no-normal-maps (from stage 07 on)
+    int colorMode = 0;         // Up/Down, --color-mode (stage 08): index into kColorModes
+};
+
+// The seed's colour modes: which input channel feeds red, green and blue.
+inline constexpr const char* kColorModes[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
+inline constexpr int kColorModeCount = 5;
+
+} // namespace raylab

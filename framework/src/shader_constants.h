@@ -1,0 +1,31 @@
+#pragma once
+// Constants that the GLSL and the C++ must agree on, defined once here.
+// assembleShader() writes them at the top of every shader (after the
+// #defines), so the GLSL uses the same names: NO_HIT, T_MIN, T_FAR,
+// MAX_DEPTH, MAX_RAYS, KIND_SPHERE ... KIND_TORUS and OBJECT_KIND_STRIDE.
+#include <string>
+
+namespace raylab::shader {
+
+// Returned by intersection functions when the ray misses (NO_HIT).
+inline constexpr double kNoHit = -1.0;
+// Hits closer than this are ignored: a ray never hits its own origin (T_MIN).
+inline constexpr double kTMin = 1e-4;
+// A very large distance: "nothing hit yet" (T_FAR).
+inline constexpr double kTFar = 1e30;
+// Rays per path, and the entries of trace()'s stack (MAX_DEPTH).
+inline constexpr int kMaxDepth = 8;
+// The most rays one pixel traces (MAX_RAYS): every ray ends its path or
+// splits in two, at most MAX_DEPTH - 1 times.
+inline constexpr int kMaxRays = 1 << kMaxDepth;
+
+// A hit's object id is kind * kObjectKindStride + index (OBJECT_KIND_STRIDE,
+// KIND_*): spheres are kind 0, so a sphere's id is its index.
+inline constexpr int kObjectKindStride = 1024;
+enum ObjectKind : int { kSphere = 0, kPlane = 1, kDisc = 2, kTriangle = 3, kTorus = 4 };
+inline constexpr const char* kKindNames[] = {"sphere", "plane", "disc", "triangle", "torus"};
+
+// The GLSL declarations of the constants above, one per line.
+std::string constantsGlsl();
+
+} // namespace raylab::shader

@@ -14,7 +14,8 @@ struct Hit {
 
 // Defined by the framework at the top of every shader, with the same values
 // as its C++ (framework/src/shader_constants.h):
-//   NO_HIT     returned by intersection functions when the ray misses (-1)
-//   T_MIN      hits closer than this are ignored: a ray never hits its own origin
-//   T_FAR      a very large distance: "nothing hit yet"
-//   MAX_DEPTH  rays per path (trace.glsl)
+//   NO_HIT     -1: returned by intersection functions when the ray misses
+//   T_MIN      1e-4: hits closer than this are ignored, so a ray never hits
+//              its own origin
+//   T_FAR      1e30: a very large distance, "nothing hit yet"
+//   MAX_DEPTH  8: rays per path (trace.glsl); MAX_RAYS = 2^MAX_DEPTH

@@ -1,10 +1,13 @@
 // Assembling shaders from files: includes, defines, and mapping compiler
 // errors back to the file and line the student wrote.
 #include "error.h"
+#include "shader_constants.h"
 #include "shader_source.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace raylab;
 using raylab::test::ScratchDir;
@@ -118,4 +121,34 @@ TEST(ShaderSource, FindsOpenTodosOutsideComments) {
     ASSERT_EQ(todos.size(), 1u);
     EXPECT_EQ(todos[0].line, 3);
     EXPECT_EQ(todos[0].title, "TODO(9.a): do the thing");
+}
+
+// The constants GLSL and C++ share are written into every shader from the
+// C++ definitions, with the values the C++ uses.
+TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {});
+    auto floatOf = [&](const std::string& name) {
+        const std::string key = "const float " + name + " = ";
+        auto at = s.text.find(key);
+        EXPECT_NE(at, std::string::npos) << name;
+        return at == std::string::npos ? 0.0f : std::stof(s.text.substr(at + key.size()));
+    };
+    auto intOf = [&](const std::string& name) {
+        const std::string key = "const int " + name + " = ";
+        auto at = s.text.find(key);
+        EXPECT_NE(at, std::string::npos) << name;
+        return at == std::string::npos ? -1 : std::stoi(s.text.substr(at + key.size()));
+    };
+    using namespace raylab::shader;
+    EXPECT_EQ(floatOf("T_MIN"), float(kTMin));
+    EXPECT_EQ(floatOf("NO_HIT"), float(kNoHit));
+    EXPECT_EQ(floatOf("T_FAR"), float(kTFar));
+    EXPECT_EQ(intOf("MAX_DEPTH"), kMaxDepth);
+    EXPECT_EQ(intOf("MAX_RAYS"), kMaxRays);
+    EXPECT_EQ(intOf("KIND_TORUS"), kTorus);
+    EXPECT_EQ(intOf("OBJECT_KIND_STRIDE"), kObjectKindStride);
+    // Generated lines, not the student's: errors never point into them.
+    const int line = int(std::count(s.text.begin(), s.text.begin() + long(s.text.find("const float T_MIN")), '\n')) + 1;
+    EXPECT_EQ(s.where(line).file, "<raylab>");
 }

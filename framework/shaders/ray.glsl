@@ -13,7 +13,7 @@ struct Hit {
 };
 
 // Defined by the framework at the top of every shader, with the same values
-// as its C++ (framework/src/shader_constants.h):
+// as its C++ (framework/src/core/shader_constants.h):
 //   NO_HIT     -1: returned by intersection functions when the ray misses
 //   T_MIN      1e-4: hits closer than this are ignored, so a ray never hits
 //              its own origin

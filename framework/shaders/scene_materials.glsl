@@ -19,7 +19,7 @@ struct Material {
     int normalMap;    // layer of uTextures, -1: none (stage 07)
 };
 
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform vec3 uMatAmbient[MAX_MATERIALS];
 uniform vec3 uMatDiffuse[MAX_MATERIALS];
 uniform vec3 uMatSpecular[MAX_MATERIALS];

@@ -5,7 +5,7 @@
 // index in that kind's list. Spheres are kind 0 (KIND_SPHERE), so a sphere's
 // id is simply its index, as in labs 01-04. KIND_SPHERE, KIND_PLANE,
 // KIND_DISC, KIND_TRIANGLE, KIND_TORUS and OBJECT_KIND_STRIDE are defined by
-// the framework at the top of every shader (framework/src/shader_constants.h).
+// the framework at the top of every shader (framework/src/core/shader_constants.h).
 
 int objectId(int kind, int index) { return kind * OBJECT_KIND_STRIDE + index; }
 int objectKind(int id) { return id / OBJECT_KIND_STRIDE; }
@@ -13,7 +13,7 @@ int objectIndex(int id) { return id - objectKind(id) * OBJECT_KIND_STRIDE; }
 
 
 // Planes: all points p with dot(normal, p) = offset.
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uPlaneCount;
 uniform vec4 uPlanes[MAX_PLANES];            // xyz = unit normal, w = offset
 uniform float uPlaneTileSize[MAX_PLANES];    // a texture repeats every this many units
@@ -21,7 +21,7 @@ uniform int uPlaneMaterial[MAX_PLANES];
 #endif
 
 // Discs: the points of a plane within `radius` of the centre.
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uDiscCount;
 uniform vec4 uDiscs[MAX_DISCS];              // xyz = centre, w = radius
 uniform vec3 uDiscNormals[MAX_DISCS];        // unit
@@ -29,7 +29,7 @@ uniform int uDiscMaterial[MAX_DISCS];
 #endif
 
 // Triangles: corners 3i, 3i+1, 3i+2, counter-clockwise seen from the front.
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uTriangleCount;
 uniform vec3 uTriangleVertices[3 * MAX_TRIANGLES];
 uniform int uTriangleMaterial[MAX_TRIANGLES];
@@ -38,12 +38,12 @@ uniform int uTriangleMaterial[MAX_TRIANGLES];
 // Tori: a ring of radius `major` (centre to the middle of the tube) with a
 // tube of radius `minor`. uTorusToLocal turns world directions into the
 // torus's own frame, where its axis is +z.
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uTorusCount;
 uniform vec4 uTori[MAX_TORI];                // xyz = centre, w = major radius
 uniform float uTorusMinor[MAX_TORI];
 #endif
 uniform mat3 uTorusToLocal[MAX_TORI];
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uTorusMaterial[MAX_TORI];
 #endif

@@ -1,10 +1,10 @@
 // The scene's spheres, uploaded by the framework from the scene file
-// (framework/src/stage_renderer.cpp). (Students need not change this file.)
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+// (framework/src/raytrace/stage_renderer.cpp). (Students need not change this file.)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uSphereCount;                   // how many entries below are used
 #endif
 uniform vec4 uSpheres[MAX_SPHERES];         // xyz = centre, w = radius
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform vec3 uSphereColors[MAX_SPHERES];    // flat colour of each sphere
 uniform vec3 uBackground;                   // seen where a ray hits nothing
 #endif

@@ -14,13 +14,13 @@ vec4 textureLayer(int layer, vec2 uv)
 // The sky box: a cube map, looked up by direction. uHasSky is 0 when the
 // scene has none (then the background colour is the sky).
 uniform samplerCube uSky;
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uHasSky;
 #endif
 
 // The glowing sphere (the "sun"; key G): uGlowSphere < 0 means none.
 uniform int uGlow;
-#ifndef SCENE_BAKED  // else constants (framework/src/scene_baking.cpp)
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uGlowSphere;
 uniform vec3 uGlowColor;
 uniform float uGlowSize;   // how far the halo reaches, in sun radii

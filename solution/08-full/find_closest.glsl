@@ -4,7 +4,7 @@
 // Lab 05's findClosest tests every object for every ray. That is fine for a
 // dozen objects; the pro scene has 110 spheres, and every shading point
 // sends a shadow ray per light on top. Here the spheres sit in a bounding
-// volume hierarchy (BVH), built on the CPU (framework/src/bvh.cpp): a tree
+// volume hierarchy (BVH), built on the CPU (framework/src/raytrace/scene/bvh.cpp): a tree
 // of boxes, each box holding its children. A ray that misses a box skips
 // every sphere inside it. The few other objects (planes, the disc, the
 // triangles, the torus) are tested one by one as in lab 05.

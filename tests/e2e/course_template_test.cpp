@@ -119,3 +119,15 @@ TEST(CourseTemplate, UnknownFunctionCheckIsAnError) {
     EXPECT_NE(r.err.find("solution/01-raycast/stage.json: function_checks[0]: no function check 'intersectSpheres'"), std::string::npos)
         << r.err;
 }
+
+// The ray tracer has no geometry stage: a stage that names one is refused, not ignored.
+TEST(CourseTemplate, AGeometryShaderOnTheRayTracerIsRefused) {
+    ScratchDir root;
+    copyTree(root.path());
+    replaceInFile(root / "solution/02-shading/stage.json", "\"vertex\": \"canvas.vert\",", "\"vertex\": \"canvas.vert\", \"geometry\": \"fins.geom\",");
+    CommandResult r = inTree(root.path(), raylabCmd() + " render --stage 02 --solution --size 80x60 --out " + quote((root / "x.png").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("solution/02-shading/stage.json: program.geometry: the ray tracer's renderer takes no geometry shader"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(root / "x.png"));
+}

@@ -1,4 +1,4 @@
-// The CPU reference tracer (framework/src/reference_tracer.h) against the GPU
+// The CPU reference tracer (framework/src/raytrace/reference/reference_tracer.h) against the GPU
 // solution: the same scene, camera, time and settings must give images that
 // agree within the graders' tolerance (CompareTolerance: 8/255 after the 3x3
 // neighbourhood search, at most 0.5% of the pixels off) - in every check view

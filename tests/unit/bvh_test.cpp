@@ -1,4 +1,4 @@
-// The bounding volume hierarchy of stage 08 (framework/src/bvh.h): its
+// The bounding volume hierarchy of stage 08 (framework/src/raytrace/scene/bvh.h): its
 // structure, checked on the pro scene. The GPU traversal is checked by
 // tests/e2e/bvh_images_test.cpp (images equal to the linear search).
 #include "bvh.h"

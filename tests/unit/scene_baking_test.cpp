@@ -1,4 +1,4 @@
-// A scene compiled into the shader (framework/src/scene_baking.h): every
+// A scene compiled into the shader (framework/src/raytrace/scene/scene_baking.h): every
 // static value appears as a constant that reads back as the same float, and
 // the arrays are sized to the scene. (That the baked shader draws the same
 // pictures: tests/e2e/bvh_images_test.cpp.)

@@ -14,7 +14,6 @@
 #include "paths.h"
 #include "shader_source.h"
 #include "stage_catalog.h"
-#include "stage_renderer.h"
 #include "stage_sources.h"
 
 #include <CLI/CLI.hpp>

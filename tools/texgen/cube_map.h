@@ -4,7 +4,7 @@
 // core, section 8.13): for the major axis ma and the face's (sc, tc),
 //   s = (sc / |ma| + 1) / 2,  t = (tc / |ma| + 1) / 2,
 // and texel row 0 (t near 0) is the first row handed to glTexImage2D, i.e.
-// the top row of the PNG as framework/src/texture.cpp uploads it unflipped.
+// the top row of the PNG as framework/src/gl/texture.cpp uploads it unflipped.
 // Inverting the table with s, t in [-1, 1] taken at pixel centres (s grows
 // with the column x, t with the row y from the top):
 //

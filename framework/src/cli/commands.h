@@ -1,0 +1,91 @@
+#pragma once
+// The subcommands of `raylab`, one file each (cmd_*.cpp). Each returns the
+// process exit code: 0 success, 1 a check failed, 2 bad input or an error.
+#include "gl_context.h"
+#include "stage_setup.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+int cmdStages();
+
+struct RunOptions {
+    bool noVsync = false;
+    int exitAfterFrames = 0;
+    std::string screenshot;
+};
+int cmdRun(const StageOptions& stage, const RunOptions& run);
+
+struct RenderOptions {
+    std::string outFile;        // .png (a picture) or .pfm (raw floats)
+    Backend backend = Backend::Auto;
+    std::string view = "color"; // color, depth, normal, id, bounces, stack (debug_views.h)
+    bool reference = false;     // draw with the CPU reference tracer instead of the GPU
+};
+int cmdRender(const StageOptions& stage, const RenderOptions& render);
+
+// `raylab rays`: the GPU's primary rays to a file (format: ray_dump.h).
+int cmdRays(const StageOptions& stage, const std::string& outFile, Backend backend);
+
+// `raylab trace --pixel X,Y`: one pixel's path from the CPU reference tracer
+// (no OpenGL context). PIXEL is "X,Y", 0,0 the top left.
+int cmdTrace(const StageOptions& stage, const std::string& pixel);
+
+struct DemoOptions {
+    std::string stage;   // empty: the highest finished stage
+    std::string scene;   // "lite", "pro" or a file; empty: the stage's scene
+    std::string size = "800x600";
+    std::string outDir;  // empty: a new folder under the current directory
+    int frames = 6;
+    bool headless = false;
+    bool noShadows = false;
+    int maxDepth = RenderSettings::kMaxDepth;
+    bool noBvh = false;
+    Backend backend = Backend::Auto;
+};
+int cmdDemo(const DemoOptions& demo);
+
+struct CheckOptions {
+    std::string againstDir;  // compare with these PNGs instead of the live solution
+    std::string saveDir;     // write the checked images here
+    Backend backend = Backend::Auto;
+};
+int cmdCheck(const StageOptions& stage, const CheckOptions& check);
+
+struct GradeOptions {
+    std::string submissions;  // one folder per student, each laid out like labs/
+    std::string outDir;
+    std::string stages;       // "01,02,04"; empty: every available stage
+    int jobs = 2;
+    double timeoutSeconds = 60.0;  // per stage of a submission
+    long memoryMb = 2048;          // per stage of a submission (address space); the pro scene needs well under 1 GB
+    unsigned seed = 0;             // of the seeded views; keep it secret to prevent tuning
+};
+int cmdGrade(const GradeOptions& grade);
+
+// The child-process halves of `raylab grade` (not for direct use).
+int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);
+int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student, const std::string& outDir,
+                 unsigned seed);
+
+struct BenchOptions {
+    std::string outDir;               // bench.csv, bench.md, bench.png go here (made when missing)
+    bool quick = false;               // a small grid for CI: lite at 160x120, one frame per setting
+    std::vector<std::string> scenes;  // empty: lite and pro (quick: lite)
+    std::string size;                 // empty: 800x600 (quick: 160x120)
+    int frames = 0;                   // timed frames per setting; 0: 5 (quick: 1)
+    Backend backend = Backend::Auto;
+    std::string commandLine;          // for the report
+};
+int cmdBench(const BenchOptions& bench);
+
+// The command line as typed ("raylab bench --out x"), for reports.
+void rememberCommandLine(int argc, char** argv);
+const std::string& programCommandLine();
+
+// True when a window can be opened (X11 or Wayland display set).
+bool displayAvailable();
+
+} // namespace raylab

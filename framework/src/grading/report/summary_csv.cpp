@@ -1,0 +1,44 @@
+// The class summary as CSV (grade_report.h).
+#include "grade_report.h"
+
+#include "atomic_file.h"
+#include "report_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace raylab {
+
+using namespace report;
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------- CSV
+
+std::string summaryCsv(const ClassResult& r) {
+    const std::string eol = "\r\n";
+    std::string out = "student";
+    for (const std::string& id : r.stages) out += "," + csvField(id);
+    out += ",total,max,notes" + eol;
+    for (const StudentResult& st : r.students) {
+        out += csvField(st.name);
+        std::string notes;
+        auto note = [&notes](const std::string& n) { notes += (notes.empty() ? "" : "; ") + n; };
+        for (const std::string& id : r.stages) {
+            const StageResult* s = findStage(st, id);
+            out += ",";
+            if (!s) {
+                note(id + ": no result");
+                continue;
+            }
+            out += num(s->score);
+            if (!isGraded(*s)) note(id + ": " + statusWord(*s));
+        }
+        out += "," + num(st.score()) + "," + num(st.maxScore()) + "," + csvField(notes) + eol;
+    }
+    return out;
+}
+
+void writeSummaryCsv(const ClassResult& result, const fs::path& file) { writeTextFileAtomic(file, summaryCsv(result)); }
+
+} // namespace raylab

@@ -1,0 +1,284 @@
+#include "stage_renderer.h"
+
+#include "error.h"
+#include "paths.h"
+#include "scene_baking.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count, int limit) {
+    if (count > 0 && limit == 0) throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
+    if (int(count) > limit)
+        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what + ", but stage " + stage.id +
+                    " supports at most " + std::to_string(limit));
+}
+
+void checkSceneFits(const StageInfo& stage, const Scene& scene) {
+    const StageLimits& l = stage.limits;
+    checkFits(scene, stage, "spheres", scene.spheres.size(), l.spheres);
+    checkFits(scene, stage, "materials", scene.materials.size(), l.materials);
+    checkFits(scene, stage, "lights", scene.lights.size(), l.lights);
+    checkFits(scene, stage, "planes", scene.planes.size(), l.planes);
+    checkFits(scene, stage, "discs", scene.discs.size(), l.discs);
+    checkFits(scene, stage, "triangles", scene.triangles.size(), l.triangles);
+    checkFits(scene, stage, "tori", scene.tori.size(), l.tori);
+    checkFits(scene, stage, "textures", scene.textures.size(), l.textures);
+    if (scene.skyBox && !l.skyBox) {
+        std::string adds;  // the first stage of the track that has one
+        for (const StageInfo& s : allStages())
+            if (adds.empty() && s.track == stage.track && s.limits.skyBox) adds = " (stage " + s.number() + " adds it)";
+        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box" + adds);
+    }
+}
+
+// Texture units: the scene's pictures, then the sky box.
+constexpr int kTextureUnit = 0;
+constexpr int kSkyUnit = 1;
+constexpr int kBvhNodeUnit = 2;
+constexpr int kBvhItemUnit = 3;
+
+void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
+    if (!values.empty()) glUniform1iv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+}
+
+void setFloatArray(const ShaderProgram& p, const char* name, const std::vector<GLfloat>& values) {
+    if (!values.empty()) glUniform1fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+}
+
+void setVec4Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec4>& values) {
+    if (!values.empty()) glUniform4fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
+}
+
+// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z.
+glm::mat3 torusToLocal(glm::vec3 axis) {
+    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
+    glm::vec3 y = glm::cross(axis, x);
+    return glm::transpose(glm::mat3(x, y, axis));  // rows x, y, axis
+}
+
+// Uploads an array uniform NAME[0..] of vec3s when the program has it.
+void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec3>& values) {
+    if (!values.empty()) glUniform3fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
+}
+
+} // namespace
+
+StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format,
+                             std::string fragmentEntry, ShaderVariant variant)
+    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)),
+      variant_(std::move(variant)), fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
+    // The tracer draws one full-screen canvas: a geometry stage has no place in it.
+    if (!stage_.program.geometry.empty())
+        throw Error(displayPath(stage_.folder() / "stage.json") + ": program.geometry: the ray tracer's renderer takes no geometry shader");
+    checkSceneFits(stage_, scene_);
+    if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
+    if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
+    rebuild();
+}
+
+std::vector<std::string> ShaderVariant::defines() const {
+    std::vector<std::string> d;
+    if (bvh) d.push_back("RAYLAB_BVH");
+    if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
+    if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
+    return d;
+}
+
+ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
+    // Measured with `raylab bench` at 800x600, depth 8 (docs/bench/README.md):
+    // with 10 spheres the BVH costs more than it saves, with 110
+    // it saves a fifth of the frame.
+    constexpr std::size_t kSpheresForBvh = 32;
+    ShaderVariant v;
+    v.bvh = scene.spheres.size() >= kSpheresForBvh;
+    v.specialized = true;
+    return v;
+}
+
+void StageRenderer::rebuild() {
+    // A specialised program sizes its arrays to the scene (the stage's
+    // limits were checked above all the same).
+    std::vector<std::string> defines = variant_.specialized ? bakedSceneDefines(scene_) : stage_.defines();
+    if (variant_.specialized)
+        for (const std::string& d : stage_.extraDefines) defines.push_back(d);
+    for (const std::string& d : variant_.defines()) defines.push_back(d);
+    std::string prelude = variant_.specialized ? bakedSceneGlsl(scene_) : std::string();
+    const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
+    ShaderSource vertex = assembleShader(stage_.program.vertex, search, defines);
+    ShaderSource fragment = assembleShader(fragmentEntry_, search, defines, prelude);
+    auto program = std::make_unique<ShaderProgram>(vertex, fragment);
+    program_ = std::move(program);
+    files_ = fragment.files;
+    files_.insert(files_.end(), vertex.files.begin(), vertex.files.end());
+    todos_ = findOpenTodos(fragment);
+    uploadSceneConstants();
+}
+
+void StageRenderer::uploadSceneConstants() {
+    const ShaderProgram& p = *program_;
+    p.use();
+    glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
+
+    // Spheres: flat colour and material index (positions are set per frame).
+    std::vector<glm::vec3> colors;
+    std::vector<GLint> materialOf;
+    for (const Sphere& s : scene_.spheres) {
+        colors.push_back(scene_.materials[std::size_t(s.material)].diffuse);
+        materialOf.push_back(s.material);
+    }
+    glUniform1i(p.uniform("uSphereCount"), GLint(scene_.spheres.size()));
+    setIntArray(p, "uSphereMaterial", materialOf);
+    setVec3Array(p, "uSphereColors", colors);
+    uploadStaticShapes();
+
+    // The material table.
+    std::vector<glm::vec3> ambient, diffuse, specular, metalN, metalK;
+    std::vector<GLfloat> shininess, ior;
+    std::vector<GLint> type;
+    for (const Material& m : scene_.materials) {
+        ambient.push_back(m.ambient);
+        diffuse.push_back(m.diffuse);
+        specular.push_back(m.specular);
+        shininess.push_back(m.shininess);
+        type.push_back(GLint(m.type));
+        ior.push_back(m.ior);
+        metalN.push_back(m.n);
+        metalK.push_back(m.k);
+    }
+    setVec3Array(p, "uMatAmbient", ambient);
+    setVec3Array(p, "uMatDiffuse", diffuse);
+    setVec3Array(p, "uMatSpecular", specular);
+    setVec3Array(p, "uMatN", metalN);
+    setVec3Array(p, "uMatK", metalK);
+    std::vector<GLint> texture, normalMap;
+    for (const Material& m : scene_.materials) {
+        texture.push_back(m.texture);
+        normalMap.push_back(m.normalMap);
+    }
+    setFloatArray(p, "uMatShininess", shininess);
+    setFloatArray(p, "uMatIor", ior);
+    setIntArray(p, "uMatType", type);
+    setIntArray(p, "uMatTexture", texture);
+    setIntArray(p, "uMatNormalMap", normalMap);
+
+    // Pictures, sky box and the glowing sphere.
+    glUniform1i(p.uniform("uTextures"), kTextureUnit);
+    glUniform1i(p.uniform("uSky"), kSkyUnit);
+    // The tree is built only for a program that walks it (stage 08 with
+    // RAYLAB_BVH), once, on the first such build.
+    if (variant_.bvh && !bvh_ && p.uniform("uBvhNodes") >= 0) bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
+    glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
+    glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
+    glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);
+    glUniform1i(p.uniform("uGlowSphere"), scene_.glow.sphere);
+    glUniform3fv(p.uniform("uGlowColor"), 1, glm::value_ptr(scene_.glow.color));
+    glUniform1f(p.uniform("uGlowSize"), scene_.glow.size);
+
+    // Point lights.
+    std::vector<glm::vec3> lightPositions, lightColors;
+    for (const PointLight& l : scene_.lights) {
+        lightPositions.push_back(l.position);
+        lightColors.push_back(l.color);
+    }
+    glUniform1i(p.uniform("uLightCount"), GLint(lightPositions.size()));
+    setVec3Array(p, "uLightPositions", lightPositions);
+    setVec3Array(p, "uLightColors", lightColors);
+}
+
+// Planes, discs and triangles never move: uploaded with the constants.
+void StageRenderer::uploadStaticShapes() {
+    const ShaderProgram& p = *program_;
+    std::vector<glm::vec4> planes;
+    std::vector<GLfloat> tiles;
+    std::vector<GLint> planeMaterial;
+    for (const Plane& pl : scene_.planes) {
+        planes.emplace_back(pl.normal, glm::dot(pl.normal, pl.point));
+        tiles.push_back(pl.tileSize);
+        planeMaterial.push_back(pl.material);
+    }
+    glUniform1i(p.uniform("uPlaneCount"), GLint(planes.size()));
+    setVec4Array(p, "uPlanes", planes);
+    setFloatArray(p, "uPlaneTileSize", tiles);
+    setIntArray(p, "uPlaneMaterial", planeMaterial);
+
+    std::vector<glm::vec4> discs;
+    std::vector<glm::vec3> discNormals;
+    std::vector<GLint> discMaterial;
+    for (const Disc& d : scene_.discs) {
+        discs.emplace_back(d.center, d.radius);
+        discNormals.push_back(d.normal);
+        discMaterial.push_back(d.material);
+    }
+    glUniform1i(p.uniform("uDiscCount"), GLint(discs.size()));
+    setVec4Array(p, "uDiscs", discs);
+    setVec3Array(p, "uDiscNormals", discNormals);
+    setIntArray(p, "uDiscMaterial", discMaterial);
+
+    std::vector<glm::vec3> vertices;
+    std::vector<GLint> triangleMaterial;
+    for (const Triangle& t : scene_.triangles) {
+        vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
+        triangleMaterial.push_back(t.material);
+    }
+    glUniform1i(p.uniform("uTriangleCount"), GLint(triangleMaterial.size()));
+    setVec3Array(p, "uTriangleVertices", vertices);
+    setIntArray(p, "uTriangleMaterial", triangleMaterial);
+
+    std::vector<glm::vec4> tori;
+    std::vector<GLfloat> minor;
+    std::vector<GLint> torusMaterial;
+    for (const Torus& t : scene_.tori) {
+        tori.emplace_back(t.center, t.majorRadius);
+        minor.push_back(t.minorRadius);
+        torusMaterial.push_back(t.material);
+    }
+    glUniform1i(p.uniform("uTorusCount"), GLint(tori.size()));
+    setVec4Array(p, "uTori", tori);
+    setFloatArray(p, "uTorusMinor", minor);
+    setIntArray(p, "uTorusMaterial", torusMaterial);
+}
+
+void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
+    target_->bind();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const ShaderProgram& p = *program_;
+    p.use();
+    const CameraPose& pose = camera.pose();
+    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(pose.position));
+    glUniform3fv(p.uniform("uForward"), 1, glm::value_ptr(camera.forward()));
+    glUniform3fv(p.uniform("uRight"), 1, glm::value_ptr(camera.right()));
+    glUniform3fv(p.uniform("uUp"), 1, glm::value_ptr(camera.up()));
+    glUniform1f(p.uniform("uFocal"), camera.focalLength());
+    glUniform1f(p.uniform("uAspect"), float(target_->width()) / float(target_->height()));
+    glUniform1f(p.uniform("uTime"), timeSeconds);
+    glUniform1i(p.uniform("uShadows"), settings.shadows ? 1 : 0);
+    glUniform1i(p.uniform("uMaxDepth"), settings.maxDepth);
+    glUniform1i(p.uniform("uGlow"), settings.glow ? 1 : 0);
+    glUniform1i(p.uniform("uNormalMaps"), settings.normalMaps ? 1 : 0);
+    glUniform1i(p.uniform("uColorMode"), settings.colorMode);
+    if (textures_) textures_->bind(kTextureUnit);
+    if (sky_) sky_->bind(kSkyUnit);
+    if (bvh_) bvh_->bind(kBvhNodeUnit, kBvhItemUnit);
+    // Only sphere positions and torus axes change from frame to frame;
+    // the rest of the scene is uploaded once per program, in uploadSceneConstants().
+    std::vector<glm::vec4> spheres;
+    for (const Sphere& s : scene_.spheres) spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
+    setVec4Array(p, "uSpheres", spheres);
+    // Spinning tori turn their axis.
+    std::vector<glm::mat3> toLocal;
+    for (const Torus& t : scene_.tori) toLocal.push_back(torusToLocal(t.axisAt(timeSeconds)));
+    if (!toLocal.empty())
+        glUniformMatrix3fv(p.uniform("uTorusToLocal[0]"), GLsizei(toLocal.size()), GL_FALSE, glm::value_ptr(toLocal[0]));
+    canvas_.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace raylab

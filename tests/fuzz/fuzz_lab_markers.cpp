@@ -14,7 +14,7 @@ std::size_t lineCount(const std::string& s) {  // lines as std::getline sees the
     for (char c : s) n += c == '\n';
     return n + (!s.empty() && s.back() != '\n');
 }
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace raylab;
@@ -22,7 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (MarkedForm form : {MarkedForm::Lab, MarkedForm::Solved}) {
         try {
             std::string out = transformMarkedSource(text, form, "fuzz.glsl");
-            // Every output line is one input line (possibly shortened): never more lines out than in.
+            // Every output line is one input line (possibly shortened): never more lines out than
+            // in.
             if (lineCount(out) > lineCount(text)) __builtin_trap();
         } catch (const Error&) {
             // Malformed region: the expected rejection.

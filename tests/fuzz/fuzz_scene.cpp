@@ -35,7 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& x : s.triangles) check(x.material);
         for (const auto& x : s.tori) check(x.material);
         for (const auto& m : s.materials)
-            if (m.texture >= int(s.textures.size()) || m.normalMap >= int(s.textures.size())) __builtin_trap();
+            if (m.texture >= int(s.textures.size()) || m.normalMap >= int(s.textures.size()))
+                __builtin_trap();
         if (s.glow.sphere >= int(s.spheres.size())) __builtin_trap();
     } catch (const Error&) {
         // A message for the user: the expected way to reject bad input.

@@ -25,9 +25,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::size_t start = 0;
     for (int i = 0; i < 3; ++i) {
         std::size_t end = i == 2 ? std::string::npos : input.find(separator, start);
-        std::string part = start == std::string::npos ? std::string()
-                                                      : input.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        fuzz::writeBytes(dir / names[i], reinterpret_cast<const std::uint8_t*>(part.data()), part.size());
+        std::string part =
+            start == std::string::npos
+                ? std::string()
+                : input.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        fuzz::writeBytes(dir / names[i], reinterpret_cast<const std::uint8_t*>(part.data()),
+                         part.size());
         start = end == std::string::npos ? std::string::npos : end + separator.size();
     }
     try {

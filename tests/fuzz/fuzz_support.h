@@ -34,4 +34,4 @@ inline void writeBytes(const fs::path& file, const std::uint8_t* data, std::size
     if (!out) std::abort();  // the harness itself failed, not the code under test
 }
 
-} // namespace raylab::fuzz
+}  // namespace raylab::fuzz

@@ -39,7 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::size_t lines = 0;
         for (char c : s.text) lines += c == '\n';
         if (lines != s.origin.size()) __builtin_trap();
+        (void)findOpenTodos(s);
         (void)mapCompilerLog("0:" + std::to_string(lines) + "(1): error: x\n", s);
+        (void)mapCompilerLog(input, s);  // the input as a compiler log too
     } catch (const Error&) {
         // A message naming the file and line: the expected rejection.
     }

@@ -27,6 +27,7 @@ packages=(
   glslang-tools                                    # Khronos reference GLSL compiler (tests)
   gnuplot-nox                                      # `raylab bench` speed-vs-error plot (bench.png)
   xvfb xauth                                       # windowed-mode tests without a display
+  clang libclang-rt-14-dev clang-format            # tests: libFuzzer targets (ctest -L fuzz), tools/check-format.sh
 )
 
 missing=()

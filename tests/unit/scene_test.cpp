@@ -72,6 +72,13 @@ TEST(Scene, BadFilesGiveOneLineErrorsThatSayWhere) {
     EXPECT_NE(errorFor("[]").find("expected an object"), std::string::npos);
 }
 
+// Found by tests/fuzz/fuzz_scene: the JSON library throws out_of_range, not
+// parse_error, for a number beyond a double; it must still be an Error.
+TEST(Scene, HugeNumberIsAnErrorNotACrash) {
+    EXPECT_NE(errorFor(replaced("\"yaw\": 10", "\"yaw\": 1e500")).find("scene.json: JSON number out of range"), std::string::npos);
+    EXPECT_NE(errorFor("[-1e99999]").find("JSON number out of range"), std::string::npos);
+}
+
 TEST(Scene, MaterialsAreATableAndSpheresNameTheirEntry) {
     ScratchDir dir;
     writeFile(dir / "scene.json", R"({

@@ -152,3 +152,39 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
     const int line = int(std::count(s.text.begin(), s.text.begin() + long(s.text.find("const float T_MIN")), '\n')) + 1;
     EXPECT_EQ(s.where(line).file, "<raylab>");
 }
+
+// Found by tests/fuzz/fuzz_shader_source: std::regex (libstdc++) recurses once
+// per character, so one long line - an #include with a long comment, long
+// indentation, a long #version line, a long line of code or a long TODO
+// title - overflowed the stack (a crash, not an Error). Lines of any length
+// must work; a graded submission is untrusted input.
+TEST(ShaderSource, VeryLongLinesDoNotOverflowTheStack) {
+    const std::size_t n = 2000000;
+    ScratchDir dir;
+    writeFile(dir / "s/main.frag", "#version 330 core // " + std::string(n, 'v') + "\n" +
+                                       "#include \"a.glsl\" // " + std::string(n, 'c') + "\n" +
+                                       std::string(n, ' ') + "#include \"b.glsl\"\n" +
+                                       "// TODO(9.a): " + std::string(n, 't') + "\n" +
+                                       "float x[] = float[](" + std::string(n, '1') + "); labTodo();\n");
+    writeFile(dir / "s/a.glsl", "int a;\n");
+    writeFile(dir / "s/b.glsl", "int b;\n");
+    ShaderSource s = assembleShader("main.frag", {dir / "s"}, {});
+    EXPECT_EQ(s.files.size(), 3u);
+    EXPECT_NE(s.text.find("int a;\nint b;\n"), std::string::npos);
+    EXPECT_EQ(s.text.find("vvvv"), std::string::npos) << "the #version line becomes a blank line";
+    auto todos = findOpenTodos(s);
+    ASSERT_EQ(todos.size(), 1u);
+    EXPECT_EQ(todos[0].line, 5);
+    EXPECT_EQ(todos[0].title, "TODO(9.a): " + std::string(n, 't'));
+    std::string log = "0:2(1): error: " + std::string(n, 'e') + "\n";
+    EXPECT_NE(mapCompilerLog(log, s).find(": error: eee"), std::string::npos);
+}
+
+// A line number too long for an int was passed to std::stoi, which threw
+// std::out_of_range (not an Error). Such a line is not a reference: kept as is.
+TEST(ShaderSource, HugeLineNumbersInALogAreKeptAsTheyAre) {
+    Tree t;
+    ShaderSource s = assembleShader("main.frag", t.search(), {});
+    std::string log = "0:99999999999(1): error: x\n0(99999999999) : error C0000: y\nERROR: 0:99999999999: z\n";
+    EXPECT_EQ(mapCompilerLog(log, s), log);
+}

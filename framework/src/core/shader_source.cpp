@@ -6,6 +6,8 @@
 #include "paths.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <regex>
 #include <sstream>
 #include <unordered_set>
@@ -15,6 +17,75 @@ namespace raylab {
 namespace {
 
 const char* kGenerated = "<raylab>";
+
+// The line parsers below are written by hand, not with std::regex: libstdc++'s
+// regex matcher recurses once per character, so one long line (a long
+// comment after an #include, long indentation, a long line of code) overflowed
+// the stack and crashed - found by tests/fuzz/fuzz_shader_source. Each keeps
+// the meaning of the regex it replaces (quoted above it), `.` included: it
+// does not match '\r'.
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+std::size_t skipSpace(const std::string& s, std::size_t i) {
+    while (i < s.size() && isSpace(s[i])) ++i;
+    return i;
+}
+bool startsAt(const std::string& s, std::size_t i, const char* word) { return s.compare(i, std::strlen(word), word) == 0; }
+bool noCarriageReturnFrom(const std::string& s, std::size_t i) { return s.find('\r', std::min(i, s.size())) == std::string::npos; }
+
+// R"(^\s*#\s*include\s*(["<])([^">]*)[">]\s*(//.*)?$)": sets NAME.
+bool parseInclude(const std::string& line, std::string& name) {
+    std::size_t i = skipSpace(line, 0);
+    if (i >= line.size() || line[i] != '#') return false;
+    i = skipSpace(line, i + 1);
+    if (!startsAt(line, i, "include")) return false;
+    i = skipSpace(line, i + 7);
+    if (i >= line.size() || (line[i] != '"' && line[i] != '<')) return false;
+    std::size_t close = line.find_first_of("\">", i + 1);
+    if (close == std::string::npos) return false;
+    std::size_t rest = skipSpace(line, close + 1);
+    if (rest < line.size() && !(startsAt(line, rest, "//") && noCarriageReturnFrom(line, rest))) return false;
+    name = line.substr(i + 1, close - i - 1);
+    return true;
+}
+
+// R"(^\s*#\s*version\b.*)"
+bool isVersionLine(const std::string& line) {
+    std::size_t i = skipSpace(line, 0);
+    if (i >= line.size() || line[i] != '#') return false;
+    i = skipSpace(line, i + 1);
+    if (!startsAt(line, i, "version")) return false;
+    i += 7;
+    return (i == line.size() || !isWordChar(line[i])) && noCarriageReturnFrom(line, i);
+}
+
+// R"(^\s*//\s*(TODO\([^)]*\):?.*)$)": sets TITLE (from "TODO(" on).
+bool parseTodoTitle(const std::string& line, std::string& title) {
+    std::size_t i = skipSpace(line, 0);
+    if (!startsAt(line, i, "//")) return false;
+    i = skipSpace(line, i + 2);
+    if (!startsAt(line, i, "TODO(")) return false;
+    std::size_t close = line.find(')', i + 5);
+    if (close == std::string::npos || !noCarriageReturnFrom(line, close)) return false;
+    title = line.substr(i);
+    return true;
+}
+
+// R"(^[^/]*\blabTodo\s*\(\s*\)\s*;)" (searched): a labTodo(); call before any '/'.
+bool hasStubCall(const std::string& line) {
+    const std::size_t slash = line.find('/');
+    for (std::size_t at = line.find("labTodo"); at != std::string::npos && at < slash; at = line.find("labTodo", at + 1)) {
+        if (at > 0 && isWordChar(line[at - 1])) continue;
+        std::size_t i = skipSpace(line, at + 7);
+        if (i >= line.size() || line[i] != '(') continue;
+        i = skipSpace(line, i + 1);
+        if (i >= line.size() || line[i] != ')') continue;
+        i = skipSpace(line, i + 1);
+        if (i < line.size() && line[i] == ';') return true;
+    }
+    return false;
+}
 
 struct Assembler {
     const std::vector<fs::path>& search;
@@ -59,15 +130,12 @@ struct Assembler {
         out.files.push_back(file);
         std::string shown = displayPath(file);
         std::istringstream in(readTextFile(file));
-        static const std::regex includeRe(R"(^\s*#\s*include\s*(["<])([^">]*)[">]\s*(//.*)?$)");
-        static const std::regex versionRe(R"(^\s*#\s*version\b.*)");
-        std::string line;
+        std::string line, name;
         for (int n = 1; std::getline(in, line); ++n) {
             if (!line.empty() && line.back() == '\r') line.pop_back();
-            std::smatch m;
-            if (std::regex_match(line, m, includeRe)) {
-                include(resolve(m[2].str(), shown, n));
-            } else if (std::regex_match(line, versionRe)) {
+            if (parseInclude(line, name)) {
+                include(resolve(name, shown, n));
+            } else if (isVersionLine(line)) {
                 // The framework sets the version; keep line numbers by leaving a blank line.
                 emit("", shown, n);
             } else {
@@ -100,23 +168,39 @@ ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path
 std::string mapCompilerLog(const std::string& log, const ShaderSource& source) {
     // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...",
     // glslang, AMD, Intel on Windows: "ERROR: 0:12: ...".
-    static const std::regex mesa(R"(^\s*\d+:(\d+)\((\d+)\):\s*(.*)$)");
-    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
-    static const std::regex glslang(R"(^\s*(ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$)");
+    // Only the head of a line (at most kHead characters after the indentation)
+    // goes through std::regex, which recurses per character (see above); the
+    // message is the rest of the line. A line number too large for an int (on
+    // which std::stoi threw out_of_range) means the line is not a reference.
+    static const std::regex mesa(R"(\d+:(\d+)\((\d+)\):)");
+    static const std::regex nvidia(R"(\d+\((\d+)\)\s*:)");
+    static const std::regex glslang(R"((ERROR|WARNING):\s*\d+:(\d+):)");
+    constexpr std::size_t kHead = 80;
     std::istringstream in(log);
     std::string line, out;
     while (std::getline(in, line)) {
+        const std::size_t start = skipSpace(line, 0);
+        const std::string head = line.substr(start, kHead);
         std::smatch m;
-        if (std::regex_match(line, m, mesa)) {
-            SourceLine s = source.where(std::stoi(m[1]));
-            line = s.file + ":" + std::to_string(s.line) + ":" + m[2].str() + ": " + m[3].str();
-        } else if (std::regex_match(line, m, nvidia)) {
-            SourceLine s = source.where(std::stoi(m[1]));
-            line = s.file + ":" + std::to_string(s.line) + ": " + m[2].str();
-        } else if (std::regex_match(line, m, glslang)) {
-            SourceLine s = source.where(std::stoi(m[2]));
+        std::string message;
+        SourceLine s;
+        auto matches = [&](const std::regex& re, int lineGroup) {
+            if (!std::regex_search(head, m, re, std::regex_constants::match_continuous)) return false;
+            std::string digits = m[lineGroup].str();
+            digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+            if (digits.size() > 10 || (digits.size() == 10 && digits > "2147483647")) return false;  // over INT_MAX
+            s = source.where(std::stoi(digits));
+            std::size_t rest = skipSpace(line, start + std::size_t(m.length(0)));
+            message = line.substr(rest);
+            return noCarriageReturnFrom(line, rest);  // the regexes ended in (.*)$
+        };
+        if (matches(mesa, 1)) {
+            line = s.file + ":" + std::to_string(s.line) + ":" + m[2].str() + ": " + message;
+        } else if (matches(nvidia, 1)) {
+            line = s.file + ":" + std::to_string(s.line) + ": " + message;
+        } else if (matches(glslang, 2)) {
             std::string kind = m[1].str() == "ERROR" ? "error: " : "warning: ";
-            line = s.file + ":" + std::to_string(s.line) + ": " + kind + m[3].str();
+            line = s.file + ":" + std::to_string(s.line) + ": " + kind + message;
         }
         if (!line.empty()) out += line + "\n";
     }
@@ -124,8 +208,6 @@ std::string mapCompilerLog(const std::string& log, const ShaderSource& source) {
 }
 
 std::vector<OpenTodo> findOpenTodos(const ShaderSource& source) {
-    static const std::regex todoTitle(R"(^\s*//\s*(TODO\([^)]*\):?.*)$)");
-    static const std::regex stubCall(R"(^[^/]*\blabTodo\s*\(\s*\)\s*;)");
     std::vector<OpenTodo> todos;
     for (const fs::path& file : source.files) {
         std::string shown = displayPath(file);
@@ -133,9 +215,8 @@ std::vector<OpenTodo> findOpenTodos(const ShaderSource& source) {
         std::istringstream in(readTextFile(file));
         std::string line, title;
         for (int n = 1; std::getline(in, line); ++n) {
-            std::smatch m;
-            if (std::regex_match(line, m, todoTitle)) title = m[1].str();
-            else if (std::regex_search(line, stubCall)) todos.push_back({shown, n, title.empty() ? "TODO" : title});
+            if (parseTodoTitle(line, title)) continue;
+            if (hasStubCall(line)) todos.push_back({shown, n, title.empty() ? "TODO" : title});
         }
     }
     return todos;

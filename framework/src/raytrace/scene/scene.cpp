@@ -118,6 +118,11 @@ Scene loadScene(const std::filesystem::path& file) {
         doc = json::parse(text);
     } catch (const json::parse_error& e) {
         throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": JSON syntax error");
+    } catch (const json::out_of_range&) {
+        // nlohmann::json reports a number too large for a double ("1e500") as
+        // out_of_range (406), not parse_error: without this it escaped as a
+        // non-Error exception (found by tests/fuzz/fuzz_scene).
+        throw Error(scene.file + ": JSON number out of range (larger than a double can hold)");
     }
     SceneReader r{scene.file, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");

@@ -1,0 +1,144 @@
+// A torus (a ring doughnut) in its own frame: centred at the origin, axis
+// +z, distance R from the centre to the middle of the tube, tube radius r.
+// A point p is on its surface when
+//     f(p) = (|p|^2 + R^2 - r^2)^2 - 4 R^2 (p.x^2 + p.y^2) = 0.
+// Along a ray o + t d (|d| = 1) that is a quartic in t: up to four hits.
+#include "solve_quartic.glsl"
+
+// Distance from p to the torus surface (negative inside the tube).
+float torusDistance(vec3 p, float R, float r)
+{
+    return length(vec2(length(p.xy) - R, p.z)) - r;
+}
+
+// Two Newton steps on the torus's distance function along the ray: unlike
+// the quartic, the distance is computed without cancellation, so the root
+// lands within a few float steps of the true hit. Skipped where the ray
+// grazes the surface (the step would overshoot).
+float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
+{
+    for (int step = 0; step < 2; ++step) {
+        vec3 p = o + t * d;
+        float ring = length(p.xy);
+        vec2 q = vec2(ring - R, p.z);
+        float len = length(q);
+        if (ring < 1e-12 || len < 1e-12) break;
+        vec3 gradient = vec3(p.xy * (q.x / (ring * len)), q.y / len);  // unit normal
+        float slope = dot(gradient, d);
+        if (abs(slope) < 0.05) break;
+        t -= (len - r) / slope;
+    }
+    return t;
+}
+
+// The nearest t > T_MIN where the ray (in the torus frame) meets the torus,
+// or NO_HIT. (Provided.)
+float intersectTorusLocal(Ray ray, float R, float r)
+{
+    // Float precision: the quartic's coefficients grow with the fourth power
+    // of the distance to the torus, and the roots drown in rounding error a
+    // few radii away (the seed thesis saw exactly this). So first jump to
+    // where the ray enters the torus's bounding sphere and solve from there
+    // (compiling with TORUS_SOLVER_CLOSED_FORM defined skips this and the
+    // Newton steps, for the numerics tests' comparison).
+    // A little larger than the torus: on its outer equator the torus touches
+    // the sphere R + r, and an entry point rounded inward would start inside.
+    float bound = 1.01 * (R + r);
+    float b = dot(ray.origin, ray.dir);
+    // h = bound^2 - (distance from the centre to the ray's line)^2. Not as
+    // b*b - (|o|^2 - bound^2): far away both terms are about |o|^2 and
+    // their difference drowns in rounding.
+    vec3 closest = ray.origin - b * ray.dir;
+    float h = bound * bound - dot(closest, closest);
+    if (h < 0.0) return NO_HIT;          // misses the bounding sphere
+    if (-b + sqrt(h) <= T_MIN) return NO_HIT;  // the sphere is behind the ray
+#ifdef TORUS_SOLVER_CLOSED_FORM
+    float tEnter = 0.0;  // the seed's way, kept for comparison: solved from the ray origin itself
+#else
+    float tEnter = max(-b - sqrt(h), 0.0);
+#endif
+    vec3 o = ray.origin + tEnter * ray.dir;
+    vec3 d = ray.dir;
+
+    float m = dot(o, o);
+    float n = dot(o, d);
+    float k = m + R * R - r * r;
+    float R4 = 4.0 * R * R;
+    vec4 coefficients = vec4(4.0 * n,
+                             4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y),
+                             4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
+                             k * k - R4 * (o.x * o.x + o.y * o.y));
+    vec4 roots;
+    int count = solveQuartic(coefficients, roots);
+#ifdef TORUS_SOLVER_CLOSED_FORM
+    float best = T_FAR;
+    for (int i = 0; i < count; ++i)
+        if (tEnter + roots[i] > T_MIN && roots[i] < best) best = roots[i];
+    return best < T_FAR ? tEnter + best : NO_HIT;
+#else
+    // Nearest first; each root polished and kept only if the point really
+    // lies on the surface (near a double root, rounding can invent a root
+    // or lose one).
+    for (int i = 0; i < count; ++i)
+        for (int j = i + 1; j < count; ++j)
+            if (roots[j] < roots[i]) { float x = roots[i]; roots[i] = roots[j]; roots[j] = x; }
+    for (int i = 0; i < count; ++i) {
+        if (tEnter + roots[i] <= T_MIN) continue;
+        float t = polishTorusHit(o, d, roots[i], R, r);
+        // Polishing may move a root just in front of the origin behind it.
+        if (tEnter + t > T_MIN && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
+    }
+    // No root survived: march the distance function through the bounding
+    // sphere (rays close to tangent, where a lost root hides).
+    float t = max(T_MIN - tEnter, 0.0);
+    float tExit = -b + sqrt(h) - tEnter;
+    if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: no marching from there (rare: only a lost root gets here)
+    // A secondary ray starts a hair off the surface (offsetRayOrigin): it
+    // must first get clear of it, or its own start would count as a hit.
+    float hitDistance = 1e-4 * r;
+    bool clear = false;
+    for (int step = 0; step < 96 && t < tExit; ++step) {
+        float dist = torusDistance(o + t * d, R, r);
+        if (dist >= hitDistance) {
+            clear = true;
+        } else if (clear) {
+            float polished = polishTorusHit(o, d, t, R, r);
+            return tEnter + (tEnter + polished > T_MIN ? polished : t);
+        }
+        t += max(dist, hitDistance);
+    }
+    return NO_HIT;
+#endif
+}
+
+// The unit outward normal of the torus at a surface point p (torus frame).
+// The normal of an implicit surface f(p) = 0 is the direction of the
+// gradient of f.
+vec3 torusNormalLocal(vec3 p, float R, float r)
+{
+    // TODO(05.d): the gradient of f above, divided by 4 for simplicity:
+    //     (|p|^2 + R^2 - r^2) p - 2 R^2 (p.x, p.y, 0)
+    // normalised.
+    // Checked by: raylab check --stage 05 (views front, torus-closeup).
+    //@solution
+    return normalize((dot(p, p) + R * R - r * r) * p - 2.0 * R * R * vec3(p.xy, 0.0));
+    //@stub
+    //@ labTodo();
+    //@ return normalize(p);
+    //@end
+}
+
+// World-space versions for torus number i of the scene.
+float intersectTorus(Ray ray, int i)
+{
+    mat3 toLocal = uTorusToLocal[i];
+    Ray local = Ray(toLocal * (ray.origin - uTori[i].xyz), toLocal * ray.dir);
+    return intersectTorusLocal(local, uTori[i].w, uTorusMinor[i]);
+}
+
+vec3 torusNormal(int i, vec3 point)
+{
+    mat3 toLocal = uTorusToLocal[i];
+    // toLocal is a rotation: its transpose turns local directions back.
+    return transpose(toLocal) * torusNormalLocal(toLocal * (point - uTori[i].xyz), uTori[i].w, uTorusMinor[i]);
+}

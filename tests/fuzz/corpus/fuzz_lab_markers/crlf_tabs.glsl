@@ -1,0 +1,6 @@
+// TODO(a)
+	//@solution
+//@stub
+//@ a
+//@end
+rest

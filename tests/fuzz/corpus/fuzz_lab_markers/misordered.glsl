@@ -1,0 +1,7 @@
+// TODO(x): y
+//@solution
+//@end
+//@stub
+not a stub
+//@end
+//@bogus

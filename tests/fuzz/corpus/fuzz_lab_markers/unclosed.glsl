@@ -1,0 +1,5 @@
+// TODO(x): y
+//@solution
+x
+//@stub
+//@ y

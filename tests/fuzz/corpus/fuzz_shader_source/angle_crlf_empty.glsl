@@ -1,0 +1,4 @@
+  #  include <a.glsl> // angle brackets
+#include ""
+//@@file
+int x;

@@ -1,0 +1,3 @@
+#include "sub/dir/x.glsl"
+#include "."
+#include "a.glsl/"

@@ -1,0 +1,6 @@
+#include "a.glsl"
+#include "a.glsl"
+#include "missing.glsl"
+//@@file
+#version 100
+float a;

@@ -1,0 +1,114 @@
+// The ray tracer, without recursion. GLSL has no recursive calls, so the
+// rays that still have to be followed wait on a small stack.
+//
+// At a glass surface one ray becomes two: the reflected one and the
+// refracted one. The refracted ray is pushed on the stack with its weight;
+// the reflected ray is followed at once. When a path ends (a matte surface,
+// the sky, or the depth limit), the next waiting ray is popped. When the
+// stack is empty, the pixel is done.
+#include "ray_offset.glsl"
+
+uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys)
+
+const int MAX_DEPTH = 8;
+
+// A ray waiting to be traced.
+struct PendingRay {
+    Ray ray;
+    vec3 weight;  // how much of its colour reaches the pixel
+    int depth;    // rays on its path so far, itself included (primary ray: 1)
+};
+
+// Secondary rays start just off the surface, on the side they leave from:
+// offsetRayOrigin(point, side) (framework/shaders/ray_offset.glsl, see lab 03).
+
+// Every ray ends its path or splits in two, at most MAX_DEPTH - 1 times:
+// 2^MAX_DEPTH bounds the rays of one pixel, and keeps the loop finite.
+const int MAX_RAYS = 256;
+
+vec3 trace(Ray primary)
+{
+    // Pending rays on one path have different depths 2..MAX_DEPTH, so
+    // MAX_DEPTH entries are always enough.
+    PendingRay stack[MAX_DEPTH];
+    int stackSize = 0;
+    vec3 color = vec3(0.0);
+    PendingRay current = PendingRay(primary, vec3(1.0), 1);
+
+    for (int n = 0; n < MAX_RAYS; ++n) {
+        bool pathGoesOn = false;
+        Hit hit;
+        if (!findClosest(current.ray, hit)) {
+            color += current.weight * skyColor(current.ray.dir);  // escaped to the sky
+        } else {
+            Surface s = surfaceAt(current.ray, hit);
+            vec3 point = s.point;
+            bool entering = dot(current.ray.dir, s.normal) < 0.0;
+            vec3 normal = entering ? s.normal : -s.normal;  // faces the incoming ray
+            Material m = s.material;
+            color += current.weight * blinnPhong(point, normal, -current.ray.dir, m);
+
+            if (m.type != MAT_PLASTIC && current.depth < uMaxDepth) {
+                float cosIncident = -dot(current.ray.dir, normal);
+                vec3 reflectance;  // the share of light the reflected ray carries
+                if (m.type == MAT_MIRROR) {
+                    reflectance = m.specular;
+                } else if (m.type == MAT_METAL) {
+                    reflectance = fresnelConductor(cosIncident, m.n, m.k);
+                } else {
+                    // TODO(04.b): glass. The relative index eta is 1/ior entering
+                    // the glass and ior leaving it. refract() returns vec3(0.0)
+                    // under total internal reflection: then everything is
+                    // reflected (F = 1). Otherwise push the refracted ray - it
+                    // starts just INSIDE the surface it crosses, at
+                    // offsetRayOrigin(point, -normal) - with weight
+                    // current.weight * (1 - F), F from fresnelDielectric with the
+                    // cosine on the air side.
+                    // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
+                    //@solution
+                    float eta = entering ? 1.0 / m.ior : m.ior;
+                    vec3 refracted = refract(current.ray.dir, normal, eta);
+                    float F = 1.0;  // total internal reflection
+                    if (refracted != vec3(0.0)) {
+                        float cosTransmitted = -dot(refracted, normal);
+#ifdef RAYLAB_NAIVE_NUMERICS
+                        // Schlick with the incident cosine also inside the glass:
+                        // badly wrong near the critical angle (tests/numerics/fresnel_test.cpp).
+                        F = fresnelDielectric(cosIncident, m.ior);
+#else
+                        F = fresnelDielectric(entering ? cosIncident : cosTransmitted, m.ior);
+#endif
+                        if (stackSize < MAX_DEPTH) {
+                            stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), refracted),
+                                                          current.weight * (1.0 - F), current.depth + 1);
+                            ++stackSize;
+                        }
+                    }
+                    reflectance = vec3(F);
+                    //@stub
+                    //@ labTodo();
+                    //@ reflectance = vec3(1.0);  // placeholder: glass as a perfect mirror
+                    //@end
+                }
+                current = PendingRay(Ray(offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)),
+                                     current.weight * reflectance, current.depth + 1);
+                pathGoesOn = true;
+            }
+        }
+
+        if (!pathGoesOn) {
+            // TODO(04.a): this path has ended. Continue with the ray on top
+            // of the stack, or stop when the stack is empty.
+            // Checked by: raylab check --stage 04 (views front, inside-glass).
+            //@solution
+            if (stackSize == 0) break;
+            --stackSize;
+            current = stack[stackSize];
+            //@stub
+            //@ labTodo();
+            //@ break;
+            //@end
+        }
+    }
+    return color;
+}

@@ -14,17 +14,20 @@ const std::string kView = "--stage 01 --solution --size 96x72 --camera 1.2,1.5,6
 // Reflection, refraction and Fresnel exercise far more maths.
 const std::string kHeavyView = "--stage 04 --solution --size 96x72 --camera 0.4,1.3,4,0,-6";
 // The full tracer: texture array (glTexImage3D, a GLEW pointer), cube map, torus, glow.
-const std::string kFullView = "--stage 08 --solution --scene " + quote((sourceDir() / "assets/scenes/pro.json").string()) +
+const std::string kFullView = "--stage 08 --solution --scene " +
+                              quote((sourceDir() / "assets/scenes/pro.json").string()) +
                               " --size 96x72 --time 1.5";
 
-raylab::Image render(const ScratchDir& dir, const std::string& backend, const std::string& view = kView) {
+raylab::Image render(const ScratchDir& dir, const std::string& backend,
+                     const std::string& view = kView) {
     fs::path out = dir / (backend + ".png");
-    CommandResult r = runRaylab("render " + view + " --backend " + backend + " --out " + quote(out));
+    CommandResult r =
+        runRaylab("render " + view + " --backend " + backend + " --out " + quote(out));
     EXPECT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.out.find(backend + " backend"), std::string::npos) << r.all();
     return raylab::loadPng(out);
 }
-} // namespace
+}  // namespace
 
 TEST(Backends, EglAndOsMesaGiveTheSameImage) {
     ScratchDir dir;
@@ -38,26 +41,30 @@ TEST(Backends, EglAndOsMesaGiveTheSameImage) {
 TEST(Backends, EglAndOsMesaAgreeOnTheRecursiveTracerToo) {
     ScratchDir dir;
     raylab::Image egl = render(dir, "egl", kHeavyView), osmesa = render(dir, "osmesa", kHeavyView);
-    EXPECT_EQ(egl.rgba, osmesa.rgba) << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
+    EXPECT_EQ(egl.rgba, osmesa.rgba)
+        << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
 }
 
 TEST(Backends, EglAndOsMesaAgreeOnTheFullTracerWithTextures) {
     ScratchDir dir;
     raylab::Image egl = render(dir, "egl", kFullView), osmesa = render(dir, "osmesa", kFullView);
-    EXPECT_EQ(egl.rgba, osmesa.rgba) << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
+    EXPECT_EQ(egl.rgba, osmesa.rgba)
+        << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
 }
 
 TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) {
-    if (runCommand("command -v xvfb-run").exitCode != 0) GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
+    if (runCommand("command -v xvfb-run").exitCode != 0)
+        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
     ScratchDir dir;
     raylab::Image headless = render(dir, "egl");
     fs::path shot = dir / "window.png";
     // 24-bit screen: xvfb-run's default 8-bit screen has no OpenGL visual.
-    CommandResult r = runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + quote(RAYLAB_EXE) + " run " + kView +
-                                 " --frames 3 --screenshot " + quote(shot));
+    CommandResult r = runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + quote(RAYLAB_EXE) +
+                                 " run " + kView + " --frames 3 --screenshot " + quote(shot));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     raylab::Image window = raylab::loadPng(shot);
-    raylab::ImageDiff d = raylab::compareImages(window, headless, raylab::CompareTolerance{}.channel);
+    raylab::ImageDiff d =
+        raylab::compareImages(window, headless, raylab::CompareTolerance{}.channel);
     EXPECT_EQ(d.maxDiff, 0) << raylab::describe(d);
 }
 
@@ -67,8 +74,8 @@ TEST(Backends, AutoFallsBackToOsMesaWhenEglIsUnavailable) {
     ScratchDir dir;
     raylab::Image egl = render(dir, "egl");
     fs::path out = dir / "fallback.png";
-    CommandResult r = runCommand("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json " + quote(RAYLAB_EXE) + " render " + kView +
-                                 " --out " + quote(out));
+    CommandResult r = runCommand("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json " +
+                                 quote(RAYLAB_EXE) + " render " + kView + " --out " + quote(out));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.err.find("using the OSMesa backend"), std::string::npos) << r.all();
     EXPECT_NE(r.out.find("osmesa backend"), std::string::npos) << r.all();
@@ -77,7 +84,9 @@ TEST(Backends, AutoFallsBackToOsMesaWhenEglIsUnavailable) {
 
 // Without a display, the window refuses at once instead of running unseen.
 TEST(Backends, RunWithoutADisplayIsAClearError) {
-    CommandResult r = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + quote(RAYLAB_EXE) + " run --stage 01 --solution");
+    CommandResult r = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " +
+                                 quote(RAYLAB_EXE) + " run --stage 01 --solution");
     EXPECT_EQ(r.exitCode, 2) << r.all();
-    EXPECT_NE(r.err.find("raylab: error: cannot open a window: no display"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("raylab: error: cannot open a window: no display"), std::string::npos)
+        << r.err;
 }

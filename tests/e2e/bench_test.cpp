@@ -38,9 +38,11 @@ std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file) {
     return rows;
 }
 
-double num(const std::map<std::string, std::string>& row, const std::string& key) { return std::stod(row.at(key)); }
+double num(const std::map<std::string, std::string>& row, const std::string& key) {
+    return std::stod(row.at(key));
+}
 
-} // namespace
+}  // namespace
 
 TEST(Bench, QuickRunWritesTableCsvAndPlotWithMeaningfulErrors) {
     ScratchDir dir;
@@ -60,8 +62,9 @@ TEST(Bench, QuickRunWritesTableCsvAndPlotWithMeaningfulErrors) {
         else if (row.at("depth") == "2") shallow = &row;
         else base = &row;
     }
-    std::printf("[ figure ] rmse: default %s, linear %s, specialised %s, depth 2 %s\n", base->at("rmse").c_str(), linear->at("rmse").c_str(),
-                spec->at("rmse").c_str(), shallow->at("rmse").c_str());
+    std::printf("[ figure ] rmse: default %s, linear %s, specialised %s, depth 2 %s\n",
+                base->at("rmse").c_str(), linear->at("rmse").c_str(), spec->at("rmse").c_str(),
+                shallow->at("rmse").c_str());
     // The GPU default is close to the double reference ...
     EXPECT_LT(num(*base, "rmse"), 0.02) << "the default frame is far from the reference";
     // ... the BVH and the specialised shader draw the same picture ...
@@ -69,12 +72,14 @@ TEST(Bench, QuickRunWritesTableCsvAndPlotWithMeaningfulErrors) {
     EXPECT_NEAR(num(*spec, "rmse"), num(*base, "rmse"), 0.002);
     // ... and depth 2 loses the reflections the reference has.
     EXPECT_GT(num(*shallow, "rmse"), 1.5 * num(*base, "rmse"));
-    EXPECT_NE(readFile(dir / "out/bench.md").find("raylab bench --quick"), std::string::npos) << "the table names its command";
+    EXPECT_NE(readFile(dir / "out/bench.md").find("raylab bench --quick"), std::string::npos)
+        << "the table names its command";
 }
 
 TEST(Bench, BadInputFailsBeforeMeasuringAndWritesNothing) {
     ScratchDir dir;
-    CommandResult r = runRaylab("bench --quick --scenes nosuch.json --out " + quote((dir / "out").string()));
+    CommandResult r =
+        runRaylab("bench --quick --scenes nosuch.json --out " + quote((dir / "out").string()));
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("nosuch.json"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out"));

@@ -40,9 +40,12 @@ const CheckView& view(const std::string& name) {
     throw std::runtime_error("no view " + name);
 }
 
-Scene sceneOf(const CheckView& v) { return loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? full().scene : v.scene)); }
+Scene sceneOf(const CheckView& v) {
+    return loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? full().scene : v.scene));
+}
 
-Image render(const CheckView& v, const ShaderVariant& variant, const StageSources& sources = solutionSources(full())) {
+Image render(const CheckView& v, const ShaderVariant& variant,
+             const StageSources& sources = solutionSources(full())) {
     raylab::test::ensureGlContext();
     Scene scene = sceneOf(v);
     StageRenderer r(full(), sources, scene, kWidth, kHeight, PixelFormat::Rgba32F, "", variant);
@@ -57,7 +60,8 @@ Image render(const CheckView& v, const ShaderVariant& variant, const StageSource
 Image reference(const CheckView& v) {
     Scene scene = sceneOf(v);
     ReferenceTracer tracer(scene, ReferenceFeatures::forStage(full()), v.time, settingsOf(v));
-    return referenceImage(tracer.traceImage(cameraFor(v.pose, scene), kWidth, kHeight), kWidth, kHeight);
+    return referenceImage(tracer.traceImage(cameraFor(v.pose, scene), kWidth, kHeight), kWidth,
+                          kHeight);
 }
 
 ShaderVariant linear() {
@@ -66,9 +70,11 @@ ShaderVariant linear() {
     return v;
 }
 
-ImageDiff diff(const Image& a, const Image& b) { return compareImages(a, b, CompareTolerance{}.channel); }
+ImageDiff diff(const Image& a, const Image& b) {
+    return compareImages(a, b, CompareTolerance{}.channel);
+}
 
-} // namespace
+}  // namespace
 
 class VariantViews : public ::testing::TestWithParam<std::string> {};
 
@@ -77,15 +83,18 @@ TEST_P(VariantViews, BvhDrawsWhatTheReferenceTracerDraws) {
     Image ref = reference(v);
     ImageDiff bvh = diff(render(v, ShaderVariant{}), ref);
     ImageDiff lin = diff(render(v, linear()), ref);
-    std::printf("[ figure ] %s against the reference tracer: BVH %.3f%% of pixels differ, linear search %.3f%%\n", v.name.c_str(),
-                100.0 * bvh.badShare, 100.0 * lin.badShare);
-    EXPECT_TRUE(imagesAgree(bvh, CompareTolerance{})) << 100.0 * bvh.badShare << "% of pixels differ";
+    std::printf("[ figure ] %s against the reference tracer: BVH %.3f%% of pixels differ, linear "
+                "search %.3f%%\n",
+                v.name.c_str(), 100.0 * bvh.badShare, 100.0 * lin.badShare);
+    EXPECT_TRUE(imagesAgree(bvh, CompareTolerance{}))
+        << 100.0 * bvh.badShare << "% of pixels differ";
 }
 
 TEST_P(VariantViews, BvhDrawsWhatTheLinearSearchDraws) {
     const CheckView& v = view(GetParam());
     ImageDiff d = diff(render(v, ShaderVariant{}), render(v, linear()));
-    std::printf("[ figure ] %s: BVH vs linear search: %.3f%% of pixels differ (max %d/255)\n", v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
+    std::printf("[ figure ] %s: BVH vs linear search: %.3f%% of pixels differ (max %d/255)\n",
+                v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
     EXPECT_TRUE(imagesAgree(d, CompareTolerance{})) << 100.0 * d.badShare << "% of pixels differ";
 }
 
@@ -94,7 +103,8 @@ TEST_P(VariantViews, SpecialisedShaderDrawsWhatTheGenericOneDraws) {
     ShaderVariant specialised;
     specialised.specialized = true;
     ImageDiff d = diff(render(v, specialised), render(v, ShaderVariant{}));
-    std::printf("[ figure ] %s: specialised vs generic: %.3f%% of pixels differ (max %d/255)\n", v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
+    std::printf("[ figure ] %s: specialised vs generic: %.3f%% of pixels differ (max %d/255)\n",
+                v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
     EXPECT_TRUE(imagesAgree(d, CompareTolerance{})) << 100.0 * d.badShare << "% of pixels differ";
 }
 
@@ -102,7 +112,8 @@ std::string testName(const ::testing::TestParamInfo<std::string>& p) {
     return p.param == "lite-front" ? "LiteFront" : p.param == "pro-front" ? "ProFront" : "ProCube";
 }
 
-INSTANTIATE_TEST_SUITE_P(Stage08, VariantViews, ::testing::Values("lite-front", "pro-front", "pro-cube"), testName);
+INSTANTIATE_TEST_SUITE_P(Stage08, VariantViews,
+                         ::testing::Values("lite-front", "pro-front", "pro-cube"), testName);
 
 // A traversal that forgets the farther child of every box loses objects:
 // the same comparison must see it.
@@ -110,14 +121,18 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
     ScratchDir dir;
     fs::path stageDir = dir / "08-full";
     fs::create_directories(stageDir);
-    for (const auto& entry : fs::directory_iterator(projectRoot() / "solution/08-full")) fs::copy(entry.path(), stageDir / entry.path().filename());
-    raylab::test::replaceInFile(stageDir / "test_spheres.glsl", "if (enterFar < T_FAR && size < BVH_STACK_SIZE)", "if (false)");
+    for (const auto& entry : fs::directory_iterator(projectRoot() / "solution/08-full"))
+        fs::copy(entry.path(), stageDir / entry.path().filename());
+    raylab::test::replaceInFile(stageDir / "test_spheres.glsl",
+                                "if (enterFar < T_FAR && size < BVH_STACK_SIZE)", "if (false)");
     StageSources broken = solutionSources(full());
     broken.search.front() = stageDir;
     const CheckView& v = view("pro-front");
     ImageDiff d = diff(render(v, ShaderVariant{}, broken), render(v, linear()));
-    std::printf("[ figure ] broken traversal vs linear search: %.3f%% of pixels differ\n", 100.0 * d.badShare);
-    EXPECT_FALSE(imagesAgree(d, CompareTolerance{})) << "a traversal that never visits far children went unnoticed";
+    std::printf("[ figure ] broken traversal vs linear search: %.3f%% of pixels differ\n",
+                100.0 * d.badShare);
+    EXPECT_FALSE(imagesAgree(d, CompareTolerance{}))
+        << "a traversal that never visits far children went unnoticed";
 }
 
 // The window and the demo compile every stage specialised to its scene
@@ -126,18 +141,21 @@ TEST(VariantViews, EveryStageDrawsTheSameSpecialised) {
     raylab::test::ensureGlContext();
     for (const StageInfo& stage : allStages()) {
         const CheckView& v = stage.checkViews.front();
-        Scene scene = loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? stage.scene : v.scene));
+        Scene scene =
+            loadScene(projectRoot() / "assets/scenes" / (v.scene.empty() ? stage.scene : v.scene));
         Image images[2];
         for (int k = 0; k < 2; ++k) {
             ShaderVariant variant = ShaderVariant::fastestFor(scene);
             variant.specialized = k == 1;
-            StageRenderer r(stage, solutionSources(stage), scene, kWidth, kHeight, PixelFormat::Rgba32F, "", variant);
+            StageRenderer r(stage, solutionSources(stage), scene, kWidth, kHeight,
+                            PixelFormat::Rgba32F, "", variant);
             r.render(cameraFor(v.pose, scene), v.time, settingsOf(v));
             images[k] = imageFromFloats(r.target().readFloats(), kWidth, kHeight, nullptr);
         }
         ImageDiff d = diff(images[1], images[0]);
-        std::printf("[ figure ] %s %s: specialised vs generic: %.3f%% of pixels differ (max %d/255)\n", stage.id.c_str(), v.name.c_str(),
-                    100.0 * d.badShare, d.maxDiff);
+        std::printf(
+            "[ figure ] %s %s: specialised vs generic: %.3f%% of pixels differ (max %d/255)\n",
+            stage.id.c_str(), v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
         EXPECT_TRUE(imagesAgree(d, CompareTolerance{})) << stage.id;
     }
 }

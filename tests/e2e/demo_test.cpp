@@ -13,8 +13,9 @@ namespace {
 
 // Runs `raylab ARGS` with DIR as the working directory.
 CommandResult demoIn(const ScratchDir& dir, const std::string& args) {
-    return runCommand("cd " + quote(dir.path().string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY " +
-                      quote(raylabExe().string()) + " demo " + args);
+    return runCommand("cd " + quote(dir.path().string()) +
+                      " && env -u DISPLAY -u WAYLAND_DISPLAY " + quote(raylabExe().string()) +
+                      " demo " + args);
 }
 
 int entries(const fs::path& dir) {
@@ -24,7 +25,8 @@ int entries(const fs::path& dir) {
 }
 
 // A copy of the lite scene with one text replacement, in DIR.
-fs::path liteWith(const ScratchDir& dir, const std::string& name, const std::string& from, const std::string& to) {
+fs::path liteWith(const ScratchDir& dir, const std::string& name, const std::string& from,
+                  const std::string& to) {
     std::string text = readFile(sourceDir() / "assets/scenes/lite.json");
     text.replace(text.find(from), from.size(), to);
     // Texture paths are relative to the scene file's folder.
@@ -35,7 +37,7 @@ fs::path liteWith(const ScratchDir& dir, const std::string& name, const std::str
     return dir / "scenes" / name;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Demo, HeadlessFlyThroughWritesFramesToANewFolderAndPrintsTheMedian) {
     ScratchDir dir;
@@ -44,11 +46,14 @@ TEST(Demo, HeadlessFlyThroughWritesFramesToANewFolderAndPrintsTheMedian) {
     EXPECT_NE(r.out.find("scene assets/scenes/lite.json"), std::string::npos) << r.out;
     EXPECT_TRUE(std::regex_search(r.out, std::regex("frame time: median [0-9.]+ ms"))) << r.out;
     std::smatch folder;
-    ASSERT_TRUE(std::regex_search(r.out, folder, std::regex("2 frames written to (\\S+)"))) << r.out;
+    ASSERT_TRUE(std::regex_search(r.out, folder, std::regex("2 frames written to (\\S+)")))
+        << r.out;
     fs::path out = folder[1].str();
-    EXPECT_EQ(out.parent_path(), fs::canonical(dir.path())) << "the default folder is new, under the current directory";
+    EXPECT_EQ(out.parent_path(), fs::canonical(dir.path()))
+        << "the default folder is new, under the current directory";
     EXPECT_EQ(entries(out), 2);
-    raylab::Image first = raylab::loadPng(out / "frame-000.png"), second = raylab::loadPng(out / "frame-001.png");
+    raylab::Image first = raylab::loadPng(out / "frame-000.png"),
+                  second = raylab::loadPng(out / "frame-001.png");
     EXPECT_EQ(first.width, 160);
     EXPECT_EQ(first.height, 120);
     EXPECT_NE(first.rgba, second.rgba) << "the camera flies: frames differ";
@@ -61,7 +66,8 @@ TEST(Demo, HeadlessFlyThroughWritesFramesToANewFolderAndPrintsTheMedian) {
 
 TEST(Demo, ProSceneRendersIntoTheGivenFolderWithShadowsOff) {
     ScratchDir dir;
-    CommandResult r = demoIn(dir, "--scene pro --frames 1 --size 160x120 --no-shadows --out frames");
+    CommandResult r =
+        demoIn(dir, "--scene pro --frames 1 --size 160x120 --no-shadows --out frames");
     ASSERT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.out.find("shadows off"), std::string::npos) << r.out;
     raylab::Image frame = raylab::loadPng(dir / "frames/frame-000.png");
@@ -71,16 +77,19 @@ TEST(Demo, ProSceneRendersIntoTheGivenFolderWithShadowsOff) {
 TEST(Demo, BadScenesFailWithOneLineBeforeAnyFolderIsMade) {
     ScratchDir dir;
     const std::string lite = readFile(sourceDir() / "assets/scenes/lite.json");
-    const std::string sunRadiusLine =
-        std::to_string(1 + std::count(lite.begin(), lite.begin() + long(lite.find("\"radius\": 7.0")), '\n'));
+    const std::string sunRadiusLine = std::to_string(
+        1 + std::count(lite.begin(), lite.begin() + long(lite.find("\"radius\": 7.0")), '\n'));
     struct Case {
         std::string args, expected;
     } cases[] = {
         {"--scene nowhere.json", "scene file nowhere.json does not exist"},
-        {"--scene " + quote(liteWith(dir, "syntax.json", "\"radius\": 7.0", "\"radius\": 7.0,,").string()),
+        {"--scene " +
+             quote(liteWith(dir, "syntax.json", "\"radius\": 7.0", "\"radius\": 7.0,,").string()),
          "syntax.json: line " + sunRadiusLine + ", column"},
-        {"--scene " + quote(liteWith(dir, "texture.json", "moon.png", "mooon.png").string()), "materials.moon.texture: file"},
-        {"--scene " + quote(liteWith(dir, "radius.json", "\"radius\": 7.0", "\"radius\": \"big\"").string()),
+        {"--scene " + quote(liteWith(dir, "texture.json", "moon.png", "mooon.png").string()),
+         "materials.moon.texture: file"},
+        {"--scene " +
+             quote(liteWith(dir, "radius.json", "\"radius\": 7.0", "\"radius\": \"big\"").string()),
          "radius.json: spheres[0].radius: expected a number"},
         {"--scene lite --frames 0", "--frames must be between 1 and 1000"},
         {"--scene lite --depth 9", "--depth must be between 1 and 8"},
@@ -92,15 +101,19 @@ TEST(Demo, BadScenesFailWithOneLineBeforeAnyFolderIsMade) {
         EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
     }
-    EXPECT_EQ(entries(dir.path()), 1) << "only the scenes/ folder of this test: no output folder was made";
+    EXPECT_EQ(entries(dir.path()), 1)
+        << "only the scenes/ folder of this test: no output folder was made";
 }
 
 TEST(Demo, ASceneWithMoreObjectsThanTheShaderSupportsIsRefused) {
     ScratchDir dir;
     std::string spheres;
-    for (int i = 0; i < 130; ++i) spheres += R"({"center": [0, 0, 0], "radius": 1, "material": "red"},)";
+    for (int i = 0; i < 130; ++i)
+        spheres += R"({"center": [0, 0, 0], "radius": 1, "material": "red"},)";
     fs::path scene = liteWith(dir, "bad.json", "\"spheres\": [", "\"spheres\": [" + spheres);
     CommandResult r = demoIn(dir, "--scene " + quote(scene.string()) + " --size 160x120");
     EXPECT_EQ(r.exitCode, 2) << r.all();
-    EXPECT_NE(r.err.find("bad.json: spheres: 140 spheres, but stage 08-full supports at most 128"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bad.json: spheres: 140 spheres, but stage 08-full supports at most 128"),
+              std::string::npos)
+        << r.err;
 }

@@ -18,17 +18,21 @@ CommandResult validate(const ScratchDir& dir, const ShaderSource& source, const 
     writeFile(file, source.text);
     return runCommand("glslangValidator " + quote(file));
 }
-} // namespace
+}  // namespace
 
 TEST(Glslang, EveryStageShaderIsValidGlsl330Core) {
-    ASSERT_EQ(runCommand("command -v glslangValidator").exitCode, 0) << "install glslang-tools (install.sh does)";
+    ASSERT_EQ(runCommand("command -v glslangValidator").exitCode, 0)
+        << "install glslang-tools (install.sh does)";
     ScratchDir dir;
     int checked = 0;
     for (const StageInfo& stage : allStages()) {
-        for (const StageSources& sources : {solutionSources(stage), labSources(stage, defaultLabRoot())}) {
+        for (const StageSources& sources :
+             {solutionSources(stage), labSources(stage, defaultLabRoot())}) {
             SCOPED_TRACE(stage.id + " " + sources.label);
-            ShaderSource vert = assembleShader(stage.program.vertex, sources.search, stage.defines());
-            ShaderSource frag = assembleShader(stage.program.fragment, sources.search, stage.defines());
+            ShaderSource vert =
+                assembleShader(stage.program.vertex, sources.search, stage.defines());
+            ShaderSource frag =
+                assembleShader(stage.program.fragment, sources.search, stage.defines());
             CommandResult rv = validate(dir, vert, "s.vert"), rf = validate(dir, frag, "s.frag");
             EXPECT_EQ(rv.exitCode, 0) << mapCompilerLog(rv.out, vert);
             EXPECT_EQ(rf.exitCode, 0) << mapCompilerLog(rf.out, frag);
@@ -43,7 +47,9 @@ TEST(Glslang, EveryStageShaderIsValidGlsl330Core) {
 // and its error maps back to the file and line.
 TEST(Glslang, RejectsInvalidCodeAndTheErrorMapsToTheFile) {
     ScratchDir dir;
-    writeFile(dir / "s/main.frag", "out vec4 c;\nfloat f() {\n    return 1.0 + true;\n}\nvoid main() { c = vec4(f()); }\n");
+    writeFile(
+        dir / "s/main.frag",
+        "out vec4 c;\nfloat f() {\n    return 1.0 + true;\n}\nvoid main() { c = vec4(f()); }\n");
     ShaderSource frag = assembleShader("main.frag", {dir / "s"}, {});
     CommandResult r = validate(dir, frag, "bad.frag");
     EXPECT_NE(r.exitCode, 0) << r.all();

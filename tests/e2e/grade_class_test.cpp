@@ -34,7 +34,7 @@ bool statusMatches(const std::string& status, const std::string& alternatives) {
     }
 }
 
-} // namespace
+}  // namespace
 
 TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     ScratchDir dir;
@@ -44,9 +44,11 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     ASSERT_EQ(expected.size(), 30u);
 
     auto start = std::chrono::steady_clock::now();
-    CommandResult r = runRaylab("grade --submissions " + quote((dir / "submissions").string()) + " --out " + quote((dir / "out").string()) +
-                                " --jobs 2 --timeout 20 --seed 7");
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CommandResult r =
+        runRaylab("grade --submissions " + quote((dir / "submissions").string()) + " --out " +
+                  quote((dir / "out").string()) + " --jobs 2 --timeout 20 --seed 7");
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("[ figure   ] 30 students x 8 stages graded in %.1f s with --jobs 2\n", seconds);
     ASSERT_EQ(r.exitCode, 0) << r.all();
 
@@ -62,7 +64,8 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
             const std::string w = want;
             if (w == "not submitted") {
                 EXPECT_FALSE(fs::exists(stageResult));
-                EXPECT_NE(readFile(dir / "out" / "summary.csv").find(stage + ": not submitted"), std::string::npos);
+                EXPECT_NE(readFile(dir / "out" / "summary.csv").find(stage + ": not submitted"),
+                          std::string::npos);
                 ++checked;
                 continue;
             }
@@ -89,7 +92,8 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
                 EXPECT_LT(stageScore, 99.5) << "a mistake or an unfinished lab must lose points";
             } else {
                 ASSERT_EQ(w.rfind("status:", 0), 0u) << w;
-                EXPECT_TRUE(statusMatches(notGraded, w.substr(7))) << "status '" << notGraded << "', expected " << w;
+                EXPECT_TRUE(statusMatches(notGraded, w.substr(7)))
+                    << "status '" << notGraded << "', expected " << w;
                 EXPECT_EQ(stageScore, 0.0);
             }
             ++checked;
@@ -99,9 +103,11 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
 
     // The broken submissions are explained in the report.
     const std::string html = readFile(dir / "out" / "report.html");
-    EXPECT_NE(html.find("intersect_sphere.glsl:"), std::string::npos) << "the compile error names the student's file";
+    EXPECT_NE(html.find("intersect_sphere.glsl:"), std::string::npos)
+        << "the compile error names the student's file";
     EXPECT_NE(html.find("timed out"), std::string::npos);
     EXPECT_NE(html.find("NaN or Inf"), std::string::npos);
     EXPECT_NE(html.find("is not allowed"), std::string::npos);
-    for (const char* file : {"summary.csv", "junit.xml", "report.html"}) EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
+    for (const char* file : {"summary.csv", "junit.xml", "report.html"})
+        EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
 }

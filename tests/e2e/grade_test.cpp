@@ -17,25 +17,29 @@ void makeClass(const fs::path& dir) {
     fs::remove_all(dir / "bob" / "02-shading");
 }
 
-} // namespace
+}  // namespace
 
 TEST(Grade, WritesEveryReportAndGivesTheSameScoresTwice) {
     ScratchDir dir;
     makeClass(dir / "class");
-    const std::string args = "grade --submissions " + quote((dir / "class").string()) + " --stages 01,02 --jobs 2 --seed 11 --out ";
+    const std::string args = "grade --submissions " + quote((dir / "class").string()) +
+                             " --stages 01,02 --jobs 2 --seed 11 --out ";
     CommandResult first = runRaylab(args + quote((dir / "a").string()));
     ASSERT_EQ(first.exitCode, 0) << first.all();
     CommandResult second = runRaylab(args + quote((dir / "b").string()));
     ASSERT_EQ(second.exitCode, 0) << second.all();
 
-    for (const char* f : {"report.html", "summary.csv", "junit.xml", "students/ada/results.json", "students/bob/results.json"})
+    for (const char* f : {"report.html", "summary.csv", "junit.xml", "students/ada/results.json",
+                          "students/bob/results.json"})
         EXPECT_TRUE(fs::exists(dir / "a" / f)) << f;
-    EXPECT_EQ(readFile(dir / "a" / "summary.csv"), readFile(dir / "b" / "summary.csv")) << "grading must be deterministic";
+    EXPECT_EQ(readFile(dir / "a" / "summary.csv"), readFile(dir / "b" / "summary.csv"))
+        << "grading must be deterministic";
     auto ada = nlohmann::json::parse(readFile(dir / "a" / "students" / "ada" / "results.json"));
     EXPECT_DOUBLE_EQ(ada["score"].get<double>(), 200.0);
     auto bob = nlohmann::json::parse(readFile(dir / "a" / "students" / "bob" / "results.json"));
     EXPECT_LT(bob["score"].get<double>(), 10.0);
-    EXPECT_NE(readFile(dir / "a" / "summary.csv").find("02-shading: not submitted"), std::string::npos);
+    EXPECT_NE(readFile(dir / "a" / "summary.csv").find("02-shading: not submitted"),
+              std::string::npos);
     // The seeded views exist and are graded like the others.
     EXPECT_TRUE(fs::exists(dir / "a" / "students" / "ada" / "01-raycast" / "seeded-1.png"));
     EXPECT_TRUE(fs::exists(dir / "a" / "reference" / "01-raycast" / "seeded-3.png"));
@@ -48,31 +52,41 @@ TEST(Grade, AnotherSeedGivesOtherViews) {
     ScratchDir dir;
     writeSolvedLabs(dir / "class" / "ada");
     for (const char* seed : {"1", "2"}) {
-        CommandResult r = runRaylab("grade --submissions " + quote((dir / "class").string()) + " --stages 01 --seed " + seed + " --out " +
-                                    quote((dir / seed).string()));
+        CommandResult r =
+            runRaylab("grade --submissions " + quote((dir / "class").string()) +
+                      " --stages 01 --seed " + seed + " --out " + quote((dir / seed).string()));
         ASSERT_EQ(r.exitCode, 0) << r.all();
     }
-    EXPECT_NE(readFile(dir / "1" / "reference" / "01-raycast" / "seeded-1.png"), readFile(dir / "2" / "reference" / "01-raycast" / "seeded-1.png"));
-    EXPECT_EQ(readFile(dir / "1" / "reference" / "01-raycast" / "front.png"), readFile(dir / "2" / "reference" / "01-raycast" / "front.png"));
+    EXPECT_NE(readFile(dir / "1" / "reference" / "01-raycast" / "seeded-1.png"),
+              readFile(dir / "2" / "reference" / "01-raycast" / "seeded-1.png"));
+    EXPECT_EQ(readFile(dir / "1" / "reference" / "01-raycast" / "front.png"),
+              readFile(dir / "2" / "reference" / "01-raycast" / "front.png"));
 }
 
 TEST(Grade, BadArgumentsAreOneLineErrors) {
     ScratchDir dir;
     fs::create_directories(dir / "empty");
     writeSolvedLabs(dir / "class" / "ada");
-    const std::string cls = " --submissions " + quote((dir / "class").string()) + " --out " + quote((dir / "out").string());
+    const std::string cls = " --submissions " + quote((dir / "class").string()) + " --out " +
+                            quote((dir / "out").string());
     struct Case {
         std::string args, expected;
     } cases[] = {
-        {"grade --submissions /nonexistent --out " + quote((dir / "o").string()), "--submissions '/nonexistent': no such folder"},
-        {"grade --submissions " + quote((dir / "empty").string()) + " --out " + quote((dir / "o").string()), "no student folders"},
+        {"grade --submissions /nonexistent --out " + quote((dir / "o").string()),
+         "--submissions '/nonexistent': no such folder"},
+        {"grade --submissions " + quote((dir / "empty").string()) + " --out " +
+             quote((dir / "o").string()),
+         "no student folders"},
         {"grade" + cls + " --stages 01,42", "unknown stage '42'"},
         {"grade" + cls + " --jobs 0", "--jobs must be between 1 and 64"},
         {"grade" + cls + " --timeout -1", "--timeout must be between"},
         {"grade" + cls + " --memory-mb 5", "--memory-mb must be 0"},
-        {"grade --submissions " + quote((dir / "class").string()) + " --out " + quote((dir / "class" / "graded").string()),
+        {"grade --submissions " + quote((dir / "class").string()) + " --out " +
+             quote((dir / "class" / "graded").string()),
          "must be separate folders"},
-        {"grade --submissions " + quote((dir / "class").string()) + " --out " + quote((dir / "class").string()), "must be separate folders"},
+        {"grade --submissions " + quote((dir / "class").string()) + " --out " +
+             quote((dir / "class").string()),
+         "must be separate folders"},
     };
     for (const Case& c : cases) {
         CommandResult r = runRaylab(c.args);
@@ -93,14 +107,16 @@ TEST(Grade, AwkwardFoldersAndAnEarlierRunChangeNothingForOthers) {
     writeSolvedLabs(cls / "report.html");
     fs::create_directories(cls / "empty");
     fs::create_directories(cls / "linker");
-    fs::create_directory_symlink(sourceDir() / "solution" / "01-raycast", cls / "linker" / "01-raycast");
+    fs::create_directory_symlink(sourceDir() / "solution" / "01-raycast",
+                                 cls / "linker" / "01-raycast");
     fs::create_directory_symlink(cls / "ada", cls / "alias");
     // Leftovers of an earlier run in --out.
     fs::create_directories(dir / "out" / "students" / "ada" / "01-raycast");
     writeFile(dir / "out" / "students" / "ada" / "01-raycast" / "result.json", "stale");
     writeFile(dir / "out" / "summary.csv", "stale");
 
-    CommandResult r = runRaylab("grade --submissions " + quote(cls.string()) + " --stages 01 --out " + quote((dir / "out").string()));
+    CommandResult r = runRaylab("grade --submissions " + quote(cls.string()) +
+                                " --stages 01 --out " + quote((dir / "out").string()));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.err.find("skipping alias: a symbolic link"), std::string::npos) << r.err;
     const std::string csv = readFile(dir / "out" / "summary.csv");
@@ -108,7 +124,9 @@ TEST(Grade, AwkwardFoldersAndAnEarlierRunChangeNothingForOthers) {
     EXPECT_NE(csv.find("reference,100,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("report.html,100,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("empty,0,"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("linker,0,"), std::string::npos) << "a stage folder linked to the solution earns nothing\n" << csv;
+    EXPECT_NE(csv.find("linker,0,"), std::string::npos)
+        << "a stage folder linked to the solution earns nothing\n"
+        << csv;
     EXPECT_NE(csv.find("01-raycast: error"), std::string::npos) << csv;
     EXPECT_EQ(csv.find("alias"), std::string::npos) << csv;
     EXPECT_TRUE(fs::is_regular_file(dir / "out" / "report.html"));
@@ -119,7 +137,8 @@ TEST(Grade, AwkwardFoldersAndAnEarlierRunChangeNothingForOthers) {
 TEST(Grade, CheckSeesNaNLikeGrading) {
     ScratchDir lab;
     writeSolvedLabs(lab.path());
-    replaceInFile(lab / "02-shading" / "blinn_phong.glsl", "color += m.ambient;", "color += m.ambient * sqrt(-1.0 - m.ambient.x);");
+    replaceInFile(lab / "02-shading" / "blinn_phong.glsl", "color += m.ambient;",
+                  "color += m.ambient * sqrt(-1.0 - m.ambient.x);");
     CommandResult r = runRaylab("check --stage 02 --lab " + quote(lab.path().string()));
     EXPECT_EQ(r.exitCode, 1) << r.all();
     EXPECT_NE(r.out.find("pixels are NaN or Inf"), std::string::npos) << r.out;
@@ -132,15 +151,22 @@ TEST(Grade, CheckSeesNaNLikeGrading) {
 TEST(Grade, InterruptStopsTheChildrenAndWritesNoReport) {
     ScratchDir dir;
     writeSolvedLabs(dir / "class" / "looper");
-    auto spec = nlohmann::json::parse(readFile(sourceDir() / "tests/grading/broken/endless-loop.json"));
-    replaceInFile(dir / "class" / "looper" / spec["stage"].get<std::string>() / spec["file"].get<std::string>(), spec["replace"][0][0],
-                  spec["replace"][0][1]);
+    auto spec =
+        nlohmann::json::parse(readFile(sourceDir() / "tests/grading/broken/endless-loop.json"));
+    replaceInFile(dir / "class" / "looper" / spec["stage"].get<std::string>() /
+                      spec["file"].get<std::string>(),
+                  spec["replace"][0][0], spec["replace"][0][1]);
     const fs::path out = dir / "out-interrupted";
-    CommandResult r = runCommand(quote(RAYLAB_EXE) + " grade --submissions " + quote((dir / "class").string()) + " --stages 02 --timeout 120 --out " +
-                                 quote(out.string()) + " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo \"rc=$?\"; sleep 1; " +
-                                 "echo \"left=$(pgrep -f '[g]rade-item --stage 02-shading --lab " + (dir / "class" / "looper").string() + "' | wc -l)\"");
+    CommandResult r =
+        runCommand(quote(RAYLAB_EXE) + " grade --submissions " + quote((dir / "class").string()) +
+                   " --stages 02 --timeout 120 --out " + quote(out.string()) +
+                   " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo \"rc=$?\"; sleep 1; " +
+                   "echo \"left=$(pgrep -f '[g]rade-item --stage 02-shading --lab " +
+                   (dir / "class" / "looper").string() + "' | wc -l)\"");
     EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.all();
-    EXPECT_NE(r.out.find("left=0"), std::string::npos) << "children outlived the interrupted grader\n" << r.all();
+    EXPECT_NE(r.out.find("left=0"), std::string::npos)
+        << "children outlived the interrupted grader\n"
+        << r.all();
     EXPECT_NE(r.err.find("interrupted; no report was written"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out / "report.html"));
     EXPECT_FALSE(fs::exists(out / "summary.csv"));

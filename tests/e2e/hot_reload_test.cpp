@@ -3,8 +3,8 @@
 // fixed edit takes effect.
 #include "file_watcher.h"
 #include "gl_context.h"
-#include "scene.h"
 #include "paths.h"
+#include "scene.h"
 #include "stage_renderer.h"
 #include "test_support.h"
 
@@ -21,7 +21,7 @@ void touchLater(const fs::path& file) {
     auto before = fs::last_write_time(file);
     fs::last_write_time(file, before + std::chrono::seconds(2));
 }
-} // namespace
+}  // namespace
 
 TEST(HotReload, BrokenEditKeepsTheLastGoodProgramAndFixedEditTakesEffect) {
     ScratchDir lab;
@@ -38,7 +38,8 @@ TEST(HotReload, BrokenEditKeepsTheLastGoodProgramAndFixedEditTakesEffect) {
     // constants (materials, lights, colours) belong to the new program too.
     renderer.rebuild();
     renderer.render(camera, 0.0f);
-    EXPECT_EQ(renderer.read().rgba, good.rgba) << "a rebuilt program must get the scene's constants";
+    EXPECT_EQ(renderer.read().rgba, good.rgba)
+        << "a rebuilt program must get the scene's constants";
 
     FileWatcher watcher;
     watcher.watch(renderer.sourceFiles());
@@ -54,7 +55,8 @@ TEST(HotReload, BrokenEditKeepsTheLastGoodProgramAndFixedEditTakesEffect) {
         renderer.rebuild();
         FAIL() << "a broken shader must not build";
     } catch (const ShaderError& e) {
-        EXPECT_NE(std::string(e.what()).find("01-raycast/main.frag:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("01-raycast/main.frag:"), std::string::npos)
+            << e.what();
     }
     renderer.render(camera, 0.0f);
     EXPECT_EQ(renderer.read().rgba, good.rgba) << "the last good program keeps running";

@@ -55,7 +55,7 @@ std::vector<int> branchLines(const std::string& text) {
     return found;
 }
 
-} // namespace
+}  // namespace
 
 // Students read only what they need: the framework's switches (naive
 // numerics, the seed's torus solver, the linear search) live in
@@ -66,7 +66,8 @@ TEST(Labgen, LabFilesHoldNoPreprocessorBranches) {
         const std::string ext = e.path().extension().string();
         if (ext != ".glsl" && ext != ".frag" && ext != ".vert" && ext != ".geom") continue;
         ++files;
-        for (int line : branchLines(readFile(e.path()))) ADD_FAILURE() << e.path().string() << ":" << line << ": a preprocessor branch";
+        for (int line : branchLines(readFile(e.path())))
+            ADD_FAILURE() << e.path().string() << ":" << line << ": a preprocessor branch";
     }
     EXPECT_GE(files, 40);
 }

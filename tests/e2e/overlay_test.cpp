@@ -52,8 +52,8 @@ public:
             }
             const std::string fd = std::to_string(fds[1]);
             // 24-bit screen: an 8-bit one has no OpenGL visual.
-            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "640x480x24", "-nolisten", "tcp",
-                   static_cast<char*>(nullptr));
+            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "640x480x24",
+                   "-nolisten", "tcp", static_cast<char*>(nullptr));
             _exit(127);
         }
         close(fds[1]);
@@ -129,8 +129,8 @@ struct GlWindow {
         SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
         SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
         SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
-        window = SDL_CreateWindow("overlay test", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, kWidth, kHeight,
-                                  SDL_WINDOW_OPENGL | SDL_WINDOW_ALLOW_HIGHDPI);
+        window = SDL_CreateWindow("overlay test", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                                  kWidth, kHeight, SDL_WINDOW_OPENGL | SDL_WINDOW_ALLOW_HIGHDPI);
         if (!window) {
             error = std::string("SDL_CreateWindow: ") + SDL_GetError();
             return;
@@ -152,7 +152,8 @@ struct Pixels {
     std::vector<std::uint8_t> rgba;  // bottom row first, as glReadPixels gives it
     // (x, y) with y counted from the top, like window coordinates.
     std::array<std::uint8_t, 3> at(int x, int yFromTop) const {
-        const std::size_t i = (std::size_t(height - 1 - yFromTop) * std::size_t(width) + std::size_t(x)) * 4;
+        const std::size_t i =
+            (std::size_t(height - 1 - yFromTop) * std::size_t(width) + std::size_t(x)) * 4;
         return {rgba[i], rgba[i + 1], rgba[i + 2]};
     }
     // Pixels in [x0, x1) x [y0, y1) (from the top) whose colour is not the clear colour.
@@ -195,12 +196,13 @@ Pixels drawFrame(raylab::Overlay& overlay, const std::string& title, const Rows&
     return p;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Overlay, DrawsItsPanelOverARealWindow) {
     // No skip: without Xvfb this test cannot check the overlay at all.
     ASSERT_EQ(runCommand("command -v Xvfb").exitCode, 0)
-        << "Xvfb is not installed: the overlay test needs a real X window (install.sh installs the xvfb package)";
+        << "Xvfb is not installed: the overlay test needs a real X window (install.sh installs the "
+           "xvfb package)";
     XvfbServer xvfb;
     ASSERT_TRUE(xvfb.ok()) << xvfb.error();
     ScopedEnv display("DISPLAY", xvfb.display());
@@ -230,7 +232,8 @@ TEST(Overlay, DrawsItsPanelOverARealWindow) {
         glActiveTexture(GL_TEXTURE0);
 
         const Rows rowsA = {{"stage", "01-raycast"}, {"camera", "0.0, 1.5, 6.0"}, {"frame", "1"}};
-        const Rows rowsB = {{"stage", "04-recursion"}, {"camera", "9.9, -8.8, 7.7"}, {"frame", "12345"}};
+        const Rows rowsB = {
+            {"stage", "04-recursion"}, {"camera", "9.9, -8.8, 7.7"}, {"frame", "12345"}};
         Pixels a = drawFrame(overlay, "RayLab overlay test", rowsA);
 
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -249,18 +252,23 @@ TEST(Overlay, DrawsItsPanelOverARealWindow) {
         // The panel (top-left, 10 px in) covers its corner region - from the
         // very first call - while the far corner keeps the clear colour.
         EXPECT_EQ(a.notClear(12, 12, 60, 24), 48 * 12) << "no panel in the top-left corner";
-        EXPECT_EQ(a.notClear(kWidth - 40, kHeight - 40, kWidth, kHeight), 0) << "the overlay drew over the far corner";
+        EXPECT_EQ(a.notClear(kWidth - 40, kHeight - 40, kWidth, kHeight), 0)
+            << "the overlay drew over the far corner";
         EXPECT_EQ(a.notClear(0, 0, kWidth, 8), 0) << "the panel should start 10 px from the top";
 
         // Same rows, same pixels; other rows, other pixels (the text is drawn).
         Pixels a2 = drawFrame(overlay, "RayLab overlay test", rowsA);
-        EXPECT_EQ(a2.differing(a, 0, 0, kWidth, kHeight), 0) << "the same rows drew different pixels";
-        drawFrame(overlay, "RayLab overlay test", rowsB);  // an auto-sized panel follows its text one frame late
+        EXPECT_EQ(a2.differing(a, 0, 0, kWidth, kHeight), 0)
+            << "the same rows drew different pixels";
+        drawFrame(overlay, "RayLab overlay test",
+                  rowsB);  // an auto-sized panel follows its text one frame late
         Pixels b = drawFrame(overlay, "RayLab overlay test", rowsB);
-        EXPECT_GT(b.differing(a, 0, 0, kWidth / 2, kHeight / 2), 50) << "changing the rows did not change the panel";
+        EXPECT_GT(b.differing(a, 0, 0, kWidth / 2, kHeight / 2), 50)
+            << "changing the rows did not change the panel";
         EXPECT_EQ(b.notClear(kWidth - 40, kHeight - 40, kWidth, kHeight), 0);
         Pixels c = drawFrame(overlay, "Another title", rowsA);
-        EXPECT_GT(c.differing(a, 0, 0, kWidth / 2, kHeight / 2), 20) << "changing the title did not change the panel";
+        EXPECT_GT(c.differing(a, 0, 0, kWidth / 2, kHeight / 2), 20)
+            << "changing the title did not change the panel";
 
         // Events pass through without effect on the picture (display only).
         SDL_Event click{};
@@ -271,7 +279,8 @@ TEST(Overlay, DrawsItsPanelOverARealWindow) {
         overlay.processEvent(click);
         drawFrame(overlay, "RayLab overlay test", rowsA);  // back to the size of rowsA's panel
         Pixels afterClick = drawFrame(overlay, "RayLab overlay test", rowsA);
-        EXPECT_EQ(afterClick.differing(a, 0, 0, kWidth, kHeight), 0) << "an event changed the panel";
+        EXPECT_EQ(afterClick.differing(a, 0, 0, kWidth, kHeight), 0)
+            << "an event changed the panel";
 
         glBindVertexArray(0);
         glDeleteVertexArrays(1, &vao);

@@ -20,8 +20,8 @@
 #include "image_compare.h"
 #include "paths.h"
 #include "reference_tracer.h"
-#include "stage_setup.h"
 #include "shader_constants.h"
+#include "stage_setup.h"
 #include "test_support.h"
 #include "view_renderers.h"
 
@@ -50,26 +50,33 @@ ViewRenderers& gpuFor(const StageInfo& stage) {
     auto it = renderers.find(stage.id);
     if (it == renderers.end()) {
         Scene scene = loadScene(projectRoot() / "assets" / "scenes" / stage.scene);
-        it = renderers.emplace(stage.id, std::make_unique<ViewRenderers>(stage, solutionSources(stage), scene, "", kWidth, kHeight)).first;
+        it = renderers
+                 .emplace(stage.id, std::make_unique<ViewRenderers>(stage, solutionSources(stage),
+                                                                    scene, "", kWidth, kHeight))
+                 .first;
     }
     return *it->second;
 }
 
 Scene sceneOf(const StageInfo& stage, const CheckView& view) {
-    return loadScene(projectRoot() / "assets" / "scenes" / (view.scene.empty() ? stage.scene : view.scene));
+    return loadScene(projectRoot() / "assets" / "scenes" /
+                     (view.scene.empty() ? stage.scene : view.scene));
 }
 
-Image referenceFrame(const StageInfo& stage, const CheckView& view, const RenderSettings& settings) {
+Image referenceFrame(const StageInfo& stage, const CheckView& view,
+                     const RenderSettings& settings) {
     const Scene scene = sceneOf(stage, view);
     ReferenceTracer tracer(scene, ReferenceFeatures::forStage(stage), view.time, settings);
     long nonFinite = 0;
-    Image image = referenceImage(tracer.traceImage(cameraFor(view.pose, scene), kWidth, kHeight), kWidth, kHeight, &nonFinite);
+    Image image = referenceImage(tracer.traceImage(cameraFor(view.pose, scene), kWidth, kHeight),
+                                 kWidth, kHeight, &nonFinite);
     EXPECT_EQ(nonFinite, 0) << stage.id << " " << view.name << ": NaN/Inf in the reference";
     return image;
 }
 
 // GPU frame of VIEW against the reference of VIEW drawn with SETTINGS.
-ImageDiff compareView(const StageInfo& stage, const CheckView& view, const RenderSettings& settings) {
+ImageDiff compareView(const StageInfo& stage, const CheckView& view,
+                      const RenderSettings& settings) {
     const Image gpu = gpuFor(stage).render(view);
     const Image cpu = referenceFrame(stage, view, settings);
     return compareImages(gpu, cpu, CompareTolerance{}.channel);
@@ -79,13 +86,16 @@ void expectAgreement(const char* stageId, const CheckView& view) {
     const StageInfo& stage = findStage(stageId);
     const auto start = std::chrono::steady_clock::now();
     const ImageDiff diff = compareView(stage, view, settingsOf(view));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("[ figure   ] %-13s %-16s GPU vs reference: %s (allowed %.1f%%; %.1f s)\n", stage.id.c_str(), view.name.c_str(),
-                describe(diff).c_str(), CompareTolerance{}.maxBadShare * 100.0, seconds);
-    EXPECT_TRUE(imagesAgree(diff, CompareTolerance{})) << stage.id << " " << view.name << ": " << describe(diff);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("[ figure   ] %-13s %-16s GPU vs reference: %s (allowed %.1f%%; %.1f s)\n",
+                stage.id.c_str(), view.name.c_str(), describe(diff).c_str(),
+                CompareTolerance{}.maxBadShare * 100.0, seconds);
+    EXPECT_TRUE(imagesAgree(diff, CompareTolerance{}))
+        << stage.id << " " << view.name << ": " << describe(diff);
 }
 
-} // namespace
+}  // namespace
 
 TEST(ReferenceTracer, AgreesWithTheGpuInEveryStage08CheckView) {
     const StageInfo& stage = findStage("08");
@@ -93,7 +103,8 @@ TEST(ReferenceTracer, AgreesWithTheGpuInEveryStage08CheckView) {
 }
 
 TEST(ReferenceTracer, AgreesWithTheGpuInTheDefaultViewOfStages01To07) {
-    for (const char* id : {"01", "02", "03", "04", "05", "06", "07"}) expectAgreement(id, findStage(id).checkViews.front());
+    for (const char* id : {"01", "02", "03", "04", "05", "06", "07"})
+        expectAgreement(id, findStage(id).checkViews.front());
 }
 
 // Honesty: the comparison sees a wrong model. The reference drawn with
@@ -105,13 +116,15 @@ TEST(ReferenceTracer, ComparisonFailsForAKnownWrongInput) {
     RenderSettings noShadows = settingsOf(front);
     noShadows.shadows = false;
     const ImageDiff shadows = compareView(stage, front, noShadows);
-    std::printf("[ figure   ] reference without shadows vs GPU with shadows (%s): %s\n", front.name.c_str(), describe(shadows).c_str());
+    std::printf("[ figure   ] reference without shadows vs GPU with shadows (%s): %s\n",
+                front.name.c_str(), describe(shadows).c_str());
     EXPECT_FALSE(imagesAgree(shadows, CompareTolerance{}));
 
     RenderSettings brb = settingsOf(front);
     brb.colorMode = 1;
     const ImageDiff mode = compareView(stage, front, brb);
-    std::printf("[ figure   ] reference in colour mode BRB vs GPU in RGB (%s): %s\n", front.name.c_str(), describe(mode).c_str());
+    std::printf("[ figure   ] reference in colour mode BRB vs GPU in RGB (%s): %s\n",
+                front.name.c_str(), describe(mode).c_str());
     EXPECT_FALSE(imagesAgree(mode, CompareTolerance{}));
 
     // Stage 03 without shadows against its GPU frame with them.
@@ -119,7 +132,8 @@ TEST(ReferenceTracer, ComparisonFailsForAKnownWrongInput) {
     RenderSettings off = settingsOf(s03.checkViews.front());
     off.shadows = false;
     const ImageDiff s03diff = compareView(s03, s03.checkViews.front(), off);
-    std::printf("[ figure   ] stage 03 reference without shadows vs GPU with shadows: %s\n", describe(s03diff).c_str());
+    std::printf("[ figure   ] stage 03 reference without shadows vs GPU with shadows: %s\n",
+                describe(s03diff).c_str());
     EXPECT_FALSE(imagesAgree(s03diff, CompareTolerance{}));
 }
 
@@ -142,13 +156,14 @@ const char* kTinyScene = R"({
   "planes": [ { "point": [0, -1, 0], "normal": [0, 1, 0], "material": "grey" } ]
 })";
 
-} // namespace
+}  // namespace
 
 TEST(ReferenceTracer, PrimaryHitDepthNormalAndIdAreAnalytic) {
     ScratchDir dir;
     writeFile(dir / "tiny.json", kTinyScene);
     const Scene scene = loadScene(dir / "tiny.json");
-    const ReferenceTracer tracer(scene, ReferenceFeatures::forStage(findStage("05")), 0.0f, RenderSettings{});
+    const ReferenceTracer tracer(scene, ReferenceFeatures::forStage(findStage("05")), 0.0f,
+                                 RenderSettings{});
 
     // The centre pixel of an odd-sized image looks straight down -z: the
     // red sphere's front at t = 4, normal +z.
@@ -166,7 +181,8 @@ TEST(ReferenceTracer, PrimaryHitDepthNormalAndIdAreAnalytic) {
     const double t = -b - std::sqrt(b * b - (glm::dot(oblique.origin, oblique.origin) - 1.0));
     const glm::dvec3 point = oblique.origin + t * oblique.dir;
     s = tracer.trace(oblique);
-    std::printf("[ figure   ] oblique hit: t %.15g (analytic %.15g), normal error %.2e\n", s.depth, t, glm::length(s.normal - point));
+    std::printf("[ figure   ] oblique hit: t %.15g (analytic %.15g), normal error %.2e\n", s.depth,
+                t, glm::length(s.normal - point));
     EXPECT_EQ(s.id, 0);
     EXPECT_NEAR(s.depth, t, 1e-12);
     EXPECT_NEAR(glm::length(s.normal - point), 0.0, 1e-12);
@@ -197,11 +213,12 @@ TEST(ReferenceTracer, RaysAndStackThroughAGlassSphere) {
     ScratchDir dir;
     writeFile(dir / "tiny.json", kTinyScene);
     const Scene scene = loadScene(dir / "tiny.json");
-    const ReferenceTracer tracer(scene, ReferenceFeatures::forStage(findStage("04")), 0.0f, RenderSettings{});
+    const ReferenceTracer tracer(scene, ReferenceFeatures::forStage(findStage("04")), 0.0f,
+                                 RenderSettings{});
     std::ostringstream log;
     const ReferenceSample s = tracer.trace(PrimaryRay{{3.0, 0.0, 5.0}, {0.0, 0.0, -1.0}}, &log);
-    std::printf("[ figure   ] through the glass sphere: %d rays, at most %d waiting, overflow %s\n", s.rays, s.maxStack,
-                s.stackOverflow ? "yes" : "no");
+    std::printf("[ figure   ] through the glass sphere: %d rays, at most %d waiting, overflow %s\n",
+                s.rays, s.maxStack, s.stackOverflow ? "yes" : "no");
     EXPECT_EQ(s.id, 1);
     EXPECT_DOUBLE_EQ(s.depth, 6.5);
     EXPECT_EQ(s.rays, 15);
@@ -213,8 +230,9 @@ TEST(ReferenceTracer, RaysAndStackThroughAGlassSphere) {
     // Depth 2: the primary ray and its two children only.
     RenderSettings shallow;
     shallow.maxDepth = 2;
-    const ReferenceSample two = ReferenceTracer(scene, ReferenceFeatures::forStage(findStage("04")), 0.0f, shallow)
-                                    .trace(PrimaryRay{{3.0, 0.0, 5.0}, {0.0, 0.0, -1.0}});
+    const ReferenceSample two =
+        ReferenceTracer(scene, ReferenceFeatures::forStage(findStage("04")), 0.0f, shallow)
+            .trace(PrimaryRay{{3.0, 0.0, 5.0}, {0.0, 0.0, -1.0}});
     EXPECT_EQ(two.rays, 3);
     EXPECT_EQ(two.maxStack, 1);
 }
@@ -226,9 +244,12 @@ TEST(ReferenceTracer, TraceCommandPrintsThePathAndRefusesAPixelOutsideTheImage) 
                                 " --camera 3,0,5,0,0 --size 101x101 --pixel 50,50");
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exitCode, 0) << r.all();
-    for (const char* expected : {"primary ray from (3, 0, 5) along (0, 0, -1)", "ray 1 (depth 1, weight 1,1,1): hits sphere 1 'glass' at t=6.5",
-                                 "pushes refracted ray 2", "pop ray 2", "rays traced: 15", "colour: "})
-        EXPECT_NE(r.out.find(expected), std::string::npos) << "missing '" << expected << "' in:\n" << r.out;
+    for (const char* expected :
+         {"primary ray from (3, 0, 5) along (0, 0, -1)",
+          "ray 1 (depth 1, weight 1,1,1): hits sphere 1 'glass' at t=6.5", "pushes refracted ray 2",
+          "pop ray 2", "rays traced: 15", "colour: "})
+        EXPECT_NE(r.out.find(expected), std::string::npos) << "missing '" << expected << "' in:\n"
+                                                           << r.out;
 
     r = runRaylab("trace --stage 08 --size 160x120 --pixel 9999,0");
     EXPECT_EQ(r.exitCode, 2) << r.all();

@@ -7,20 +7,23 @@
 
 #include <gtest/gtest.h>
 
-
 using namespace raylab::test;
 
 TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodosWithFileAndLine) {
     CommandResult r = runRaylab("check --stage 01 --lab");
     EXPECT_EQ(r.exitCode, 1) << r.all();
-    EXPECT_EQ(failedViews(r.out).size(), 7u) << "six views and the intersectSphere function check\n" << r.all();
-    EXPECT_NE(r.err.find("labs/01-raycast/intersect_sphere.glsl:17: TODO(01.a)"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos) << r.err;
+    EXPECT_EQ(failedViews(r.out).size(), 7u) << "six views and the intersectSphere function check\n"
+                                             << r.all();
+    EXPECT_NE(r.err.find("labs/01-raycast/intersect_sphere.glsl:17: TODO(01.a)"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos)
+        << r.err;
 }
 
 TEST(Stage01, KnownMistakesCoverTheGuidesList) {
     int count = 0;
-    for (const auto& entry : fs::directory_iterator(sourceDir() / "tests/mistakes/01-raycast")) count += entry.path().extension() == ".json";
+    for (const auto& entry : fs::directory_iterator(sourceDir() / "tests/mistakes/01-raycast"))
+        count += entry.path().extension() == ".json";
     EXPECT_GE(count, 3) << "issue: far root, discriminant sign, no t > 0 check at least";
 }
 
@@ -33,10 +36,14 @@ TEST(Stage01, GpuPrimaryRaysMatchTheCameraMaths) {
     raylab::Camera cam(raylab::CameraPose{eye, 20.0f, -7.0f}, 40.0f);
     const int px = 13, py = 37;
     glm::vec3 center = eye + 30.0f * glm::normalize(cam.rayDirection(px, py, w, h));
-    writeFile(dir / "dot.json", "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0.5, 1, 4], \"yaw\": 20, \"pitch\": -7, \"fov_y\": 40},"
-                                "\"spheres\": [{\"center\": [" + std::to_string(center.x) + "," + std::to_string(center.y) + "," +
-                                    std::to_string(center.z) + "], \"radius\": 0.05, \"color\": [1, 1, 1]}]}");
-    CommandResult r = runRaylab("render --stage 01 --solution --size 64x48 --scene " + quote(dir / "dot.json") + " --out " + quote(dir / "dot.png"));
+    writeFile(dir / "dot.json", "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0.5, 1, "
+                                "4], \"yaw\": 20, \"pitch\": -7, \"fov_y\": 40},"
+                                "\"spheres\": [{\"center\": [" +
+                                    std::to_string(center.x) + "," + std::to_string(center.y) +
+                                    "," + std::to_string(center.z) +
+                                    "], \"radius\": 0.05, \"color\": [1, 1, 1]}]}");
+    CommandResult r = runRaylab("render --stage 01 --solution --size 64x48 --scene " +
+                                quote(dir / "dot.json") + " --out " + quote(dir / "dot.png"));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     raylab::Image img = raylab::loadPng(dir / "dot.png");
     int lit = 0;
@@ -44,7 +51,8 @@ TEST(Stage01, GpuPrimaryRaysMatchTheCameraMaths) {
         for (int x = 0; x < w; ++x)
             if (img.pixel(x, y)[0] > 128) {
                 ++lit;
-                EXPECT_TRUE(x == px && y == py) << "white pixel at (" << x << ", " << y << "), expected only (" << px << ", " << py << ")";
+                EXPECT_TRUE(x == px && y == py) << "white pixel at (" << x << ", " << y
+                                                << "), expected only (" << px << ", " << py << ")";
             }
     EXPECT_EQ(lit, 1);
 }

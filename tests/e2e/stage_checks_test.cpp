@@ -19,8 +19,7 @@ namespace {
 
 std::vector<std::string> availableStages() {
     std::vector<std::string> ids;
-    for (const raylab::StageInfo& s : raylab::allStages())
-        ids.push_back(s.id);
+    for (const raylab::StageInfo& s : raylab::allStages()) ids.push_back(s.id);
     return ids;
 }
 
@@ -30,11 +29,12 @@ protected:
     std::string stageArg() const { return "--stage " + stage(); }
 };
 
-} // namespace
+}  // namespace
 
 TEST_P(StageChecks, SolutionMatchesTheCommittedReferenceImages) {
     fs::path refs = sourceDir() / "tests/reference" / stage();
-    ASSERT_TRUE(fs::is_directory(refs)) << "make them with: build/raylab check " << stageArg() << " --solution --save " << refs;
+    ASSERT_TRUE(fs::is_directory(refs))
+        << "make them with: build/raylab check " << stageArg() << " --solution --save " << refs;
     CommandResult r = runRaylab("check " + stageArg() + " --solution --against " + quote(refs));
     EXPECT_EQ(r.exitCode, 0) << r.all();
     EXPECT_TRUE(failedViews(r.out).empty()) << r.out;
@@ -74,8 +74,10 @@ TEST_P(StageChecks, EveryKnownMistakeIsCaught) {
         EXPECT_EQ(r.exitCode, 1) << r.all();
         std::vector<std::string> failed = failedViews(r.out);
         for (const auto& view : spec["caught_by"])
-            EXPECT_NE(std::find(failed.begin(), failed.end(), view.get<std::string>()), failed.end())
-                << "expected view " << view << " to fail\n" << r.out;
+            EXPECT_NE(std::find(failed.begin(), failed.end(), view.get<std::string>()),
+                      failed.end())
+                << "expected view " << view << " to fail\n"
+                << r.out;
         ++mistakes;
     }
     EXPECT_GE(mistakes, 2) << "at least two typical mistakes per stage";

@@ -29,7 +29,9 @@ namespace {
 
 const fs::path kCommitted = sourceDir() / "assets/textures";
 
-CommandResult runTexgen(const std::string& args) { return runCommand(quote(RAYLAB_TEXGEN_EXE) + " " + args); }
+CommandResult runTexgen(const std::string& args) {
+    return runCommand(quote(RAYLAB_TEXGEN_EXE) + " " + args);
+}
 
 std::set<std::string> pngNames(const fs::path& dir) {
     std::set<std::string> names;
@@ -56,14 +58,18 @@ std::vector<std::string> textureDifferences(const fs::path& committed, const fs:
     std::vector<std::string> problems;
     const std::set<std::string> have = pngNames(committed), made = pngNames(generated);
     for (const std::string& name : made)
-        if (!have.count(name)) problems.push_back(name + ": generated but not committed (run build/raylab-texgen assets/textures)");
+        if (!have.count(name))
+            problems.push_back(
+                name + ": generated but not committed (run build/raylab-texgen assets/textures)");
     for (const std::string& name : have)
-        if (!made.count(name)) problems.push_back(name + ": committed but raylab-texgen does not make it");
+        if (!made.count(name))
+            problems.push_back(name + ": committed but raylab-texgen does not make it");
     for (const std::string& name : have) {
         if (!made.count(name)) continue;
         const Image expected = loadPng(committed / name), actual = loadPng(generated / name);
         if (expected.width != actual.width || expected.height != actual.height) {
-            problems.push_back(name + ": committed " + std::to_string(expected.width) + "x" + std::to_string(expected.height) + ", generated " +
+            problems.push_back(name + ": committed " + std::to_string(expected.width) + "x" +
+                               std::to_string(expected.height) + ", generated " +
                                std::to_string(actual.width) + "x" + std::to_string(actual.height));
             continue;
         }
@@ -75,12 +81,14 @@ std::vector<std::string> textureDifferences(const fs::path& committed, const fs:
                 bool differs = false;
                 for (int c = 0; c < 4; ++c) differs |= std::abs(int(e[c]) - int(a[c])) > 1;
                 if (differs && off++ == 0)
-                    first = "first at pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): expected " + rgba(e) + ", got " + rgba(a);
+                    first = "first at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                            "): expected " + rgba(e) + ", got " + rgba(a);
             }
         const int allowed = expected.width * expected.height / 1000;
         if (off > allowed)
-            problems.push_back(name + ": " + std::to_string(off) + " pixels differ by more than 1/255 (at most " + std::to_string(allowed) +
-                               " may), " + first);
+            problems.push_back(name + ": " + std::to_string(off) +
+                               " pixels differ by more than 1/255 (at most " +
+                               std::to_string(allowed) + " may), " + first);
     }
     return problems;
 }
@@ -91,11 +99,14 @@ std::string joined(const std::vector<std::string>& lines) {
     return all;
 }
 
-bool anyContains(const std::vector<std::string>& lines, const std::string& a, const std::string& b = "") {
-    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(a) != std::string::npos && l.find(b) != std::string::npos; });
+bool anyContains(const std::vector<std::string>& lines, const std::string& a,
+                 const std::string& b = "") {
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
+        return l.find(a) != std::string::npos && l.find(b) != std::string::npos;
+    });
 }
 
-} // namespace
+}  // namespace
 
 // The generator is deterministic and the committed files are its output.
 TEST(Texgen, CommittedTexturesAreReproduced) {
@@ -107,9 +118,12 @@ TEST(Texgen, CommittedTexturesAreReproduced) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), long(made.size())) << r.out;
     // The set the later stages rely on, with the documented sizes, opaque.
     const std::map<std::string, std::pair<int, int>> sizes = {
-        {"earth.png", {512, 256}},  {"earth_normal.png", {512, 256}}, {"moon.png", {256, 128}},   {"moon_normal.png", {256, 128}},
-        {"sun.png", {256, 128}},    {"sky_px.png", {256, 256}},       {"sky_nx.png", {256, 256}}, {"sky_py.png", {256, 256}},
-        {"sky_ny.png", {256, 256}}, {"sky_pz.png", {256, 256}},       {"sky_nz.png", {256, 256}}, {"tiles.png", {256, 256}},
+        {"earth.png", {512, 256}},  {"earth_normal.png", {512, 256}},
+        {"moon.png", {256, 128}},   {"moon_normal.png", {256, 128}},
+        {"sun.png", {256, 128}},    {"sky_px.png", {256, 256}},
+        {"sky_nx.png", {256, 256}}, {"sky_py.png", {256, 256}},
+        {"sky_ny.png", {256, 256}}, {"sky_pz.png", {256, 256}},
+        {"sky_nz.png", {256, 256}}, {"tiles.png", {256, 256}},
         {"marble.png", {256, 256}},
     };
     EXPECT_EQ(made.size(), sizes.size());
@@ -123,7 +137,8 @@ TEST(Texgen, CommittedTexturesAreReproduced) {
         EXPECT_TRUE(opaque) << name;
     }
     const std::vector<std::string> problems = textureDifferences(kCommitted, out.path());
-    EXPECT_TRUE(problems.empty()) << "assets/textures differs from what raylab-texgen makes:\n" << joined(problems);
+    EXPECT_TRUE(problems.empty()) << "assets/textures differs from what raylab-texgen makes:\n"
+                                  << joined(problems);
 }
 
 // The comparison above is not vacuous: a changed patch, a missing file and a
@@ -131,21 +146,25 @@ TEST(Texgen, CommittedTexturesAreReproduced) {
 // pixels are not.
 TEST(Texgen, ComparisonCatchesChangedAndMissingFiles) {
     ScratchDir copy;
-    for (const std::string& name : pngNames(kCommitted)) fs::copy_file(kCommitted / name, copy / name);
+    for (const std::string& name : pngNames(kCommitted))
+        fs::copy_file(kCommitted / name, copy / name);
     ASSERT_TRUE(textureDifferences(kCommitted, copy.path()).empty());
 
     Image earth = loadPng(copy / "earth.png");
     std::uint8_t* p = earth.pixel(100, 50);
     p[1] = std::uint8_t(p[1] < 128 ? p[1] + 1 : p[1] - 1);  // within tolerance
     writePngAtomic(earth, copy / "earth.png");
-    EXPECT_TRUE(textureDifferences(kCommitted, copy.path()).empty()) << joined(textureDifferences(kCommitted, copy.path()));
+    EXPECT_TRUE(textureDifferences(kCommitted, copy.path()).empty())
+        << joined(textureDifferences(kCommitted, copy.path()));
 
     p[2] = std::uint8_t(p[2] < 128 ? p[2] + 2 : p[2] - 2);  // beyond it, but one pixel: allowed
     writePngAtomic(earth, copy / "earth.png");
-    EXPECT_TRUE(textureDifferences(kCommitted, copy.path()).empty()) << joined(textureDifferences(kCommitted, copy.path()));
+    EXPECT_TRUE(textureDifferences(kCommitted, copy.path()).empty())
+        << joined(textureDifferences(kCommitted, copy.path()));
 
     for (int y = 50; y < 70; ++y)  // a 20x20 patch: 0.3% of the picture
-        for (int x = 100; x < 120; ++x) earth.pixel(x, y)[2] = std::uint8_t(earth.pixel(x, y)[2] ^ 0x40);
+        for (int x = 100; x < 120; ++x)
+            earth.pixel(x, y)[2] = std::uint8_t(earth.pixel(x, y)[2] ^ 0x40);
     writePngAtomic(earth, copy / "earth.png");
     fs::remove(copy / "moon.png");
     writePngAtomic(Image(4, 4), copy / "stray.png");
@@ -249,13 +268,14 @@ double meanStep(const Image& img, bool columns, int a, int b) {
     }
     return sum / count;
 }
-} // namespace
+}  // namespace
 
 // The step from the last column to the first (u = 1 to u = 0) is no bigger
 // than an ordinary step between neighbouring columns: no seam on the
 // planets' date line, and the patterns also wrap from bottom to top.
 TEST(Texgen, TexturesWrapWithoutSeams) {
-    for (const char* name : {"earth.png", "earth_normal.png", "moon.png", "moon_normal.png", "sun.png", "tiles.png", "marble.png"}) {
+    for (const char* name : {"earth.png", "earth_normal.png", "moon.png", "moon_normal.png",
+                             "sun.png", "tiles.png", "marble.png"}) {
         const Image img = loadPng(kCommitted / name);
         const int w = img.width, h = img.height;
         const double seam = meanStep(img, true, w - 1, 0);
@@ -317,7 +337,8 @@ Texel lookUp(const Dir& d, int size) {
     const int face = 2 * major + (d[std::size_t(major)] < 0 ? 1 : 0);
     const FaceRule& f = kGlTable[face];
     const double ma = std::abs(d[std::size_t(major)]);
-    const double s = (f.sSign * d[std::size_t(f.sAxis)] / ma + 1.0) / 2.0, t = (f.tSign * d[std::size_t(f.tAxis)] / ma + 1.0) / 2.0;
+    const double s = (f.sSign * d[std::size_t(f.sAxis)] / ma + 1.0) / 2.0,
+                 t = (f.tSign * d[std::size_t(f.tAxis)] / ma + 1.0) / 2.0;
     auto texel = [size](double c) { return std::clamp(int(std::floor(c * size)), 0, size - 1); };
     return {face, texel(s), texel(t)};
 }
@@ -336,11 +357,14 @@ EdgeStats compareEdges(const std::array<Image, 6>& faces, int tolerance) {
     EdgeStats stats;
     for (int face = 0; face < 6; ++face)
         for (int i = 0; i < n; ++i) {
-            const int border[4][4] = {{0, i, -1, 0}, {n - 1, i, 1, 0}, {i, 0, 0, -1}, {i, n - 1, 0, 1}};  // x, y, step
+            const int border[4][4] = {
+                {0, i, -1, 0}, {n - 1, i, 1, 0}, {i, 0, 0, -1}, {i, n - 1, 0, 1}};  // x, y, step
             for (const auto& b : border) {
-                const double s = 2.0 * (b[0] + b[2] + 0.5) / n - 1.0, t = 2.0 * (b[1] + b[3] + 0.5) / n - 1.0;
+                const double s = 2.0 * (b[0] + b[2] + 0.5) / n - 1.0,
+                             t = 2.0 * (b[1] + b[3] + 0.5) / n - 1.0;
                 const Texel other = lookUp(faceDirection(face, s, t), n);
-                if (other.face == face) ADD_FAILURE() << "beyond the border of face " << face << " is the same face";
+                if (other.face == face)
+                    ADD_FAILURE() << "beyond the border of face " << face << " is the same face";
                 const std::uint8_t* p = faces[std::size_t(face)].pixel(b[0], b[1]);
                 const std::uint8_t* q = faces[std::size_t(other.face)].pixel(other.x, other.y);
                 int diff = 0;
@@ -355,11 +379,12 @@ EdgeStats compareEdges(const std::array<Image, 6>& faces, int tolerance) {
 std::array<Image, 6> loadSky() {
     std::array<Image, 6> faces;
     const char* names[] = {"px", "nx", "py", "ny", "pz", "nz"};
-    for (std::size_t i = 0; i < 6; ++i) faces[i] = loadPng(kCommitted / (std::string("sky_") + names[i] + ".png"));
+    for (std::size_t i = 0; i < 6; ++i)
+        faces[i] = loadPng(kCommitted / (std::string("sky_") + names[i] + ".png"));
     return faces;
 }
 
-} // namespace
+}  // namespace
 
 TEST(SkyBox, FacesJoinWithoutSeamsInOpenGlOrientation) {
     const std::array<Image, 6> faces = loadSky();
@@ -372,23 +397,31 @@ TEST(SkyBox, FacesJoinWithoutSeamsInOpenGlOrientation) {
         for (int y = 0; y < f.height; ++y)
             for (int x : {f.width / 2, f.width / 4}) {
                 int diff = 0;
-                for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(f.pixel(x, y)[c]) - int(f.pixel(x + 1, y)[c])));
+                for (int c = 0; c < 3; ++c)
+                    diff =
+                        std::max(diff, std::abs(int(f.pixel(x, y)[c]) - int(f.pixel(x + 1, y)[c])));
                 ++inside;
                 insideOff += diff > tolerance;
             }
     const EdgeStats edges = compareEdges(faces, tolerance);
-    const double edgeRate = double(edges.off) / edges.pairs, insideRate = double(insideOff) / inside;
-    EXPECT_LT(edgeRate, 2.0 * insideRate + 0.005) << edges.off << " of " << edges.pairs << " border pixels unlike their neighbour across the edge; inside a face "
-                                               << insideOff << " of " << inside;
+    const double edgeRate = double(edges.off) / edges.pairs,
+                 insideRate = double(insideOff) / inside;
+    EXPECT_LT(edgeRate, 2.0 * insideRate + 0.005)
+        << edges.off << " of " << edges.pairs
+        << " border pixels unlike their neighbour across the edge; inside a face " << insideOff
+        << " of " << inside;
 
     // The check can fail: faces stored bottom row first (as a 2D texture
     // would be) break the joins.
     std::array<Image, 6> flipped = faces;
     for (Image& f : flipped)
         for (int y = 0; y < f.height; ++y)
-            for (int x = 0; x < f.width; ++x) std::copy_n(faces[std::size_t(&f - flipped.data())].pixel(x, f.height - 1 - y), 4, f.pixel(x, y));
+            for (int x = 0; x < f.width; ++x)
+                std::copy_n(faces[std::size_t(&f - flipped.data())].pixel(x, f.height - 1 - y), 4,
+                            f.pixel(x, y));
     const EdgeStats wrong = compareEdges(flipped, tolerance);
-    EXPECT_GT(double(wrong.off) / wrong.pairs, 3.0 * edgeRate + 0.01) << wrong.off << " of " << wrong.pairs;
+    EXPECT_GT(double(wrong.off) / wrong.pairs, 3.0 * edgeRate + 0.01)
+        << wrong.off << " of " << wrong.pairs;
 }
 
 // The generator's pixel -> direction mapping (tools/texgen/cube_map.cpp)
@@ -407,7 +440,8 @@ TEST(SkyBox, FaceMappingAgreesWithOpenGl) {
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
                 std::uint8_t* p = img.pixel(x, y);
-                p[0] = std::uint8_t(x * 16), p[1] = std::uint8_t(y * 16), p[2] = std::uint8_t(face * 40), p[3] = 255;
+                p[0] = std::uint8_t(x * 16), p[1] = std::uint8_t(y * 16),
+                p[2] = std::uint8_t(face * 40), p[3] = 255;
             }
         files[std::size_t(face)] = dir / (std::to_string(face) + ".png");
         writePngAtomic(img, files[std::size_t(face)]);
@@ -447,10 +481,12 @@ TEST(SkyBox, FaceMappingAgreesWithOpenGl) {
         return sh;
     };
     const char* vs = "#version 330 core\n"
-                     "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n";
+                     "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); "
+                     "gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n";
     const char* fs = "#version 330 core\n"
                      "uniform sampler2D uDirs; uniform samplerCube uCube; out vec4 color;\n"
-                     "void main() { color = textureLod(uCube, texelFetch(uDirs, ivec2(gl_FragCoord.xy), 0).xyz, 0.0); }\n";
+                     "void main() { color = textureLod(uCube, texelFetch(uDirs, "
+                     "ivec2(gl_FragCoord.xy), 0).xyz, 0.0); }\n";
     GLuint program = glCreateProgram();
     glAttachShader(program, compile(GL_VERTEX_SHADER, vs));
     glAttachShader(program, compile(GL_FRAGMENT_SHADER, fs));
@@ -472,8 +508,10 @@ TEST(SkyBox, FaceMappingAgreesWithOpenGl) {
                 const std::uint8_t* p = got.pixel(x, 6 * n - 1 - (face * n + y));
                 if (p[0] != x * 16 || p[1] != y * 16 || p[2] != face * 40) {
                     if (++wrong <= 5)
-                        ADD_FAILURE() << "face " << texgen::kCubeFaceNames[std::size_t(face)] << " texel (" << x << ", " << y << "): OpenGL fetched face "
-                                      << int(p[2]) / 40 << " texel (" << int(p[0]) / 16 << ", " << int(p[1]) / 16 << ")";
+                        ADD_FAILURE()
+                            << "face " << texgen::kCubeFaceNames[std::size_t(face)] << " texel ("
+                            << x << ", " << y << "): OpenGL fetched face " << int(p[2]) / 40
+                            << " texel (" << int(p[0]) / 16 << ", " << int(p[1]) / 16 << ")";
                 }
             }
     EXPECT_EQ(wrong, 0);

@@ -30,7 +30,7 @@ std::vector<std::uint8_t> readBack(GLenum target, int w, int h) {
     glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
     return data;
 }
-} // namespace
+}  // namespace
 
 TEST(Texture, TwoDimensionalTextureIsStoredBottomRowFirst) {
     auto context = createEglContext();
@@ -77,7 +77,8 @@ TEST(Texture, BadFilesAreErrorsThatNameTheFile) {
             Texture2D tex(bad);
             ADD_FAILURE() << "no error for " << bad;
         } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find(bad.filename().string()), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(bad.filename().string()), std::string::npos)
+                << e.what();
         }
     }
     CubeFaces faces;

@@ -50,7 +50,8 @@ struct ExactHit {
 };
 
 // The nearest sphere along a ray, in double (the stages' rule: smallest t > T_MIN).
-ExactHit nearestSphere(const std::vector<Sphere>& spheres, const glm::dvec3& o, const glm::dvec3& d) {
+ExactHit nearestSphere(const std::vector<Sphere>& spheres, const glm::dvec3& o,
+                       const glm::dvec3& d) {
     ExactHit best;
     best.t = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < spheres.size(); ++i) {
@@ -83,7 +84,8 @@ double floatUlps(double exact, double got) {
 // up): b = oc.d and c = oc.oc - r^2 lose digits in h = b^2 - c when the ray
 // nearly grazes the sphere, and sqrt(h) divides that loss by sqrt(h).
 constexpr double kU = 1.0 / 16777216.0;
-double sphereDepthErrorBound(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& c, double r, double t) {
+double sphereDepthErrorBound(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& c,
+                             double r, double t) {
     glm::dvec3 oc = o - c;
     double len = glm::length(oc) + kU * (glm::length(o) + glm::length(c));
     double b = std::fabs(glm::dot(oc, d));
@@ -137,7 +139,8 @@ struct Agreement {
     double depthMaxUlps = 0, depthP99Ulps = 0;
     double normalMaxError = 0;        // objects without a normal map
     double normalMaxErrorMapped = 0;  // objects with one (stage 07 on)
-    double worstDepthToBound = 0, worstNormalToBound = 0;  // error / tolerance, where tolerances are given
+    double worstDepthToBound = 0,
+           worstNormalToBound = 0;  // error / tolerance, where tolerances are given
     long compared = 0;
 };
 
@@ -151,7 +154,8 @@ struct Expected {
 // Compares depth/normal/id views with expected ones pixel by pixel: ids
 // everywhere (mismatches counted on and off silhouettes of the expected
 // ids), depth and normal where both name the same object off the silhouettes.
-Agreement compareViews(const FloatImage& depth, const FloatImage& normal, const std::vector<int>& ids, const Expected& e, int w, int h,
+Agreement compareViews(const FloatImage& depth, const FloatImage& normal,
+                       const std::vector<int>& ids, const Expected& e, int w, int h,
                        const std::function<bool(int)>& normalMapped = {}) {
     Agreement a;
     std::vector<double> ulps;
@@ -175,11 +179,15 @@ Agreement compareViews(const FloatImage& depth, const FloatImage& normal, const 
             ulps.push_back(floatUlps(e.depth[i], depth.values[i]));
             glm::dvec3 n(normal.values[3 * i], normal.values[3 * i + 1], normal.values[3 * i + 2]);
             double nErr = glm::length(n - e.normal[i]);
-            double& worst = normalMapped && normalMapped(e.ids[i]) ? a.normalMaxErrorMapped : a.normalMaxError;
+            double& worst =
+                normalMapped && normalMapped(e.ids[i]) ? a.normalMaxErrorMapped : a.normalMaxError;
             worst = std::max(worst, nErr);
             if (!e.depthTolerance.empty())
-                a.worstDepthToBound = std::max(a.worstDepthToBound, std::fabs(double(depth.values[i]) - e.depth[i]) / e.depthTolerance[i]);
-            if (!e.normalTolerance.empty()) a.worstNormalToBound = std::max(a.worstNormalToBound, nErr / e.normalTolerance[i]);
+                a.worstDepthToBound =
+                    std::max(a.worstDepthToBound,
+                             std::fabs(double(depth.values[i]) - e.depth[i]) / e.depthTolerance[i]);
+            if (!e.normalTolerance.empty())
+                a.worstNormalToBound = std::max(a.worstNormalToBound, nErr / e.normalTolerance[i]);
         }
     a.idMismatchShare = double(mismatches) / double(w * h);
     a.idMismatchOffSilhouette = double(offSilhouette);
@@ -188,7 +196,7 @@ Agreement compareViews(const FloatImage& depth, const FloatImage& normal, const 
     return a;
 }
 
-} // namespace
+}  // namespace
 
 // Stage 01 (sphere normal computed in view_main.frag) and stage 04
 // (surfaceAt()): depth, normal and id equal the exact geometry of the GPU's
@@ -202,10 +210,12 @@ TEST(Views, DepthNormalAndIdEqualTheAnalyticSphereHits) {
         SCOPED_TRACE(std::string("stage ") + stage);
         fs::path sub = dir / stage;
         fs::create_directories(sub);
-        std::string args = std::string("--stage ") + stage + " --solution --size 96x72 --scene " + quote(dir / "spheres.json");
+        std::string args = std::string("--stage ") + stage + " --solution --size 96x72 --scene " +
+                           quote(dir / "spheres.json");
         raylabOk("rays " + args, sub / "rays.bin");
         RayDump rays = loadRayDump(sub / "rays.bin");
-        FloatImage depth = renderView(args, "depth", sub), normal = renderView(args, "normal", sub), id = renderView(args, "id", sub);
+        FloatImage depth = renderView(args, "depth", sub), normal = renderView(args, "normal", sub),
+                   id = renderView(args, "id", sub);
         ASSERT_EQ(depth.channels, 1);
         ASSERT_EQ(normal.channels, 3);
         ASSERT_EQ(id.channels, 1);
@@ -224,23 +234,32 @@ TEST(Views, DepthNormalAndIdEqualTheAnalyticSphereHits) {
                 double tol = 1.0, ntol = 1.0;
                 if (e.id >= 0) {
                     const Sphere& s = scene.spheres[std::size_t(e.id)];
-                    tol = sphereDepthErrorBound(origin, glm::dvec3(d[0], d[1], d[2]), glm::dvec3(s.center), s.radius, e.t);
+                    tol = sphereDepthErrorBound(origin, glm::dvec3(d[0], d[1], d[2]),
+                                                glm::dvec3(s.center), s.radius, e.t);
                     // p = o + t d carries t's error; |p - c| = r; then normalize.
-                    ntol = (tol + 8.0 * kU * (glm::length(origin) + glm::length(glm::dvec3(s.center)) + e.t)) / s.radius + 8.0 * kU;
+                    ntol = (tol +
+                            8.0 * kU *
+                                (glm::length(origin) + glm::length(glm::dvec3(s.center)) + e.t)) /
+                               s.radius +
+                           8.0 * kU;
                 }
                 exp.depthTolerance.push_back(tol);
                 exp.normalTolerance.push_back(ntol);
             }
         std::vector<int> ids = idsOf(id);
         std::set<int> seen(ids.begin(), ids.end());
-        EXPECT_EQ(seen, (std::set<int>{-1, 0, 1, 2})) << "the id view names the three spheres and the background";
+        EXPECT_EQ(seen, (std::set<int>{-1, 0, 1, 2}))
+            << "the id view names the three spheres and the background";
 
         Agreement a = compareViews(depth, normal, ids, exp, w, h);
-        std::printf("[views] stage %s, %dx%d, GPU views vs double geometry of the GPU's rays: %ld pixels compared; depth error "
-                    "max %.2f / p99 %.2f float ulps (at most %.2f of the float formula's error bound); normal error max %.2e "
+        std::printf("[views] stage %s, %dx%d, GPU views vs double geometry of the GPU's rays: %ld "
+                    "pixels compared; depth error "
+                    "max %.2f / p99 %.2f float ulps (at most %.2f of the float formula's error "
+                    "bound); normal error max %.2e "
                     "(%.2f of its bound); id mismatches %.3f%% (%g off silhouettes)\n",
-                    stage, w, h, a.compared, a.depthMaxUlps, a.depthP99Ulps, a.worstDepthToBound, a.normalMaxError,
-                    a.worstNormalToBound, 100.0 * a.idMismatchShare, a.idMismatchOffSilhouette);
+                    stage, w, h, a.compared, a.depthMaxUlps, a.depthP99Ulps, a.worstDepthToBound,
+                    a.normalMaxError, a.worstNormalToBound, 100.0 * a.idMismatchShare,
+                    a.idMismatchOffSilhouette);
         EXPECT_GT(a.compared, 1000);
         EXPECT_EQ(a.idMismatchOffSilhouette, 0);
         EXPECT_LE(a.idMismatchShare, 0.01);
@@ -273,14 +292,17 @@ TEST(Views, RayDumpHoldsTheGpusPrimaryRays) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const float *o = rays.origin(x, y), *d = rays.dir(x, y);
-            for (int c = 0; c < 3; ++c) ASSERT_EQ(o[c], cam.pose().position[c]) << "the origin is the eye";
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(o[c], cam.pose().position[c]) << "the origin is the eye";
             glm::dvec3 dir3(d[0], d[1], d[2]);
             maxLengthError = std::max(maxLengthError, std::fabs(glm::length(dir3) - 1.0));
             PrimaryRay ref = primaryRay(cam, w, h, x, y);
-            for (int c = 0; c < 3; ++c) maxUlps = std::max(maxUlps, std::fabs(dir3[c] - ref.dir[c]) / std::ldexp(1.0, -24));
+            for (int c = 0; c < 3; ++c)
+                maxUlps = std::max(maxUlps, std::fabs(dir3[c] - ref.dir[c]) / std::ldexp(1.0, -24));
         }
-    std::printf("[views] ray dump %dx%d: | |dir| - 1 | max %.2e; direction vs primaryRay() (double) max %.2f ulps of 1 (2^-24)\n", w, h,
-                maxLengthError, maxUlps);
+    std::printf("[views] ray dump %dx%d: | |dir| - 1 | max %.2e; direction vs primaryRay() "
+                "(double) max %.2f ulps of 1 (2^-24)\n",
+                w, h, maxLengthError, maxUlps);
     EXPECT_LE(maxLengthError, 1e-6);
     EXPECT_LE(maxUlps, 8.0);
 
@@ -291,7 +313,9 @@ TEST(Views, RayDumpHoldsTheGpusPrimaryRays) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const float *o = rays.origin(x, y), *d = rays.dir(x, y);
-            exact.push_back(nearestSphere(scene.spheres, glm::dvec3(o[0], o[1], o[2]), glm::dvec3(d[0], d[1], d[2])).id);
+            exact.push_back(nearestSphere(scene.spheres, glm::dvec3(o[0], o[1], o[2]),
+                                          glm::dvec3(d[0], d[1], d[2]))
+                                .id);
         }
     long differ = 0, differOff = 0, spheresSeen = 0;
     for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
@@ -308,7 +332,8 @@ TEST(Views, RayDumpHoldsTheGpusPrimaryRays) {
             }
         spheresSeen += pixels > 0;
     }
-    std::printf("[views] sphere masks of the dumped rays (double) vs the GPU id view: %ld pixels differ, %ld off silhouettes, %ld spheres seen\n",
+    std::printf("[views] sphere masks of the dumped rays (double) vs the GPU id view: %ld pixels "
+                "differ, %ld off silhouettes, %ld spheres seen\n",
                 differ, differOff, spheresSeen);
     EXPECT_GE(spheresSeen, 3);
     EXPECT_EQ(differOff, 0);
@@ -323,15 +348,18 @@ TEST(Views, GpuViewsAgreeWithTheReferenceOnStage08Lite) {
     fs::path gpuDir = dir / "gpu", refDir = dir / "ref";
     fs::create_directories(gpuDir);
     fs::create_directories(refDir);
-    FloatImage depth = renderView(args, "depth", gpuDir), normal = renderView(args, "normal", gpuDir), id = renderView(args, "id", gpuDir);
-    FloatImage rDepth = renderView(args + " --reference", "depth", refDir), rNormal = renderView(args + " --reference", "normal", refDir),
+    FloatImage depth = renderView(args, "depth", gpuDir),
+               normal = renderView(args, "normal", gpuDir), id = renderView(args, "id", gpuDir);
+    FloatImage rDepth = renderView(args + " --reference", "depth", refDir),
+               rNormal = renderView(args + " --reference", "normal", refDir),
                rId = renderView(args + " --reference", "id", refDir);
     ASSERT_EQ(depth.width, w);
     ASSERT_EQ(rDepth.width, w);
     Expected exp;
     exp.depth.assign(rDepth.values.begin(), rDepth.values.end());
     for (std::size_t i = 0; i < std::size_t(w * h); ++i)
-        exp.normal.emplace_back(rNormal.values[3 * i], rNormal.values[3 * i + 1], rNormal.values[3 * i + 2]);
+        exp.normal.emplace_back(rNormal.values[3 * i], rNormal.values[3 * i + 1],
+                                rNormal.values[3 * i + 2]);
     exp.ids = idsOf(rId);
     std::vector<int> ids = idsOf(id);
     std::set<int> kinds;
@@ -343,14 +371,18 @@ TEST(Views, GpuViewsAgreeWithTheReferenceOnStage08Lite) {
     // texels with less precision than the reference's doubles.
     Scene lite = loadScene(sourceDir() / "assets/scenes/lite.json");
     auto normalMapped = [&](int objectId) {
-        return objectId >= 0 && objectId < raylab::shader::kObjectKindStride && std::size_t(objectId) < lite.spheres.size() &&
-               lite.materials[std::size_t(lite.spheres[std::size_t(objectId)].material)].normalMap >= 0;
+        return objectId >= 0 && objectId < raylab::shader::kObjectKindStride &&
+               std::size_t(objectId) < lite.spheres.size() &&
+               lite.materials[std::size_t(lite.spheres[std::size_t(objectId)].material)]
+                       .normalMap >= 0;
     };
     Agreement a = compareViews(depth, normal, ids, exp, w, h, normalMapped);
-    std::printf("[views] stage 08 lite %dx%d, GPU vs reference: %ld pixels compared; depth error max %.2f / p99 %.2f float ulps; "
-                "normal error max %.2e (normal-mapped spheres %.2e); id mismatches %.3f%% of the pixels (%g off silhouettes)\n",
-                w, h, a.compared, a.depthMaxUlps, a.depthP99Ulps, a.normalMaxError, a.normalMaxErrorMapped, 100.0 * a.idMismatchShare,
-                a.idMismatchOffSilhouette);
+    std::printf("[views] stage 08 lite %dx%d, GPU vs reference: %ld pixels compared; depth error "
+                "max %.2f / p99 %.2f float ulps; "
+                "normal error max %.2e (normal-mapped spheres %.2e); id mismatches %.3f%% of the "
+                "pixels (%g off silhouettes)\n",
+                w, h, a.compared, a.depthMaxUlps, a.depthP99Ulps, a.normalMaxError,
+                a.normalMaxErrorMapped, 100.0 * a.idMismatchShare, a.idMismatchOffSilhouette);
     EXPECT_GT(a.compared, 1000);
     EXPECT_EQ(a.idMismatchOffSilhouette, 0);
     EXPECT_LE(a.idMismatchShare, 0.01);
@@ -359,15 +391,18 @@ TEST(Views, GpuViewsAgreeWithTheReferenceOnStage08Lite) {
     EXPECT_LE(a.normalMaxErrorMapped, 0.05);
 
     // Bounces and stack exist with the reference only: PNG and PFM.
-    std::string out = raylabOk("render " + args + " --reference --view bounces", dir / "bounces.png");
+    std::string out =
+        raylabOk("render " + args + " --reference --view bounces", dir / "bounces.png");
     EXPECT_NE(out.find("rays per pixel"), std::string::npos) << out;
     EXPECT_NE(out.find("mapped to blue..yellow"), std::string::npos) << out;
-    FloatImage bounces = renderView(args + " --reference", "bounces", dir.path()), stack = renderView(args + " --reference", "stack", dir.path());
+    FloatImage bounces = renderView(args + " --reference", "bounces", dir.path()),
+               stack = renderView(args + " --reference", "stack", dir.path());
     ASSERT_EQ(bounces.channels, 1);
     float minRays = *std::min_element(bounces.values.begin(), bounces.values.end());
     float maxRays = *std::max_element(bounces.values.begin(), bounces.values.end());
     float maxStack = *std::max_element(stack.values.begin(), stack.values.end());
-    std::printf("[views] stage 08 lite reference: rays per pixel %g..%g, stack depth up to %g\n", minRays, maxRays, maxStack);
+    std::printf("[views] stage 08 lite reference: rays per pixel %g..%g, stack depth up to %g\n",
+                minRays, maxRays, maxStack);
     EXPECT_GE(minRays, 1.0f);
     EXPECT_GT(maxRays, 1.0f) << "lite has mirrors and glass";
     EXPECT_GE(maxStack, 1.0f) << "lite has glass";
@@ -377,7 +412,8 @@ TEST(Views, PfmRoundTrip) {
     FloatImage grey(3, 2, 1), rgb(2, 3, 3);
     for (std::size_t i = 0; i < grey.values.size(); ++i) grey.values[i] = float(i) * 1.5f - 2.0f;
     grey.values[4] = std::numeric_limits<float>::infinity();
-    for (std::size_t i = 0; i < rgb.values.size(); ++i) rgb.values[i] = std::ldexp(float(i) + 0.25f, int(i) - 8);
+    for (std::size_t i = 0; i < rgb.values.size(); ++i)
+        rgb.values[i] = std::ldexp(float(i) + 0.25f, int(i) - 8);
     std::string bytes = encodePfm(grey);
     EXPECT_EQ(bytes.substr(0, 12), "Pf\n3 2\n-1.0\n");
     EXPECT_EQ(bytes.size(), 12u + 6u * 4u);
@@ -404,7 +440,8 @@ TEST(Views, PfmRoundTrip) {
 TEST(Views, FileNameChoosesPngOrPfm) {
     ScratchDir dir;
     writeFile(dir / "spheres.json", kSpheresScene);
-    std::string args = "render --stage 01 --solution --size 64x48 --scene " + quote(dir / "spheres.json");
+    std::string args =
+        "render --stage 01 --solution --size 64x48 --scene " + quote(dir / "spheres.json");
     std::string line = raylabOk(args + " --view depth", dir / "depth.png");
     EXPECT_NE(line.find("mapped to white..grey"), std::string::npos) << line;
     EXPECT_EQ(std::count(line.begin(), line.end(), '\n'), 1) << line;
@@ -444,12 +481,25 @@ TEST(Views, BadInputIsOneLineExitTwoAndNoFile) {
         const char* expected;
     };
     const Case cases[] = {
-        {"unknown-view", "render --stage 01 --solution --size 32x24 --view heat --out " + quote(dir / "a.png"), "unknown view 'heat'"},
-        {"bounces-gpu", "render --stage 04 --solution --size 32x24 --view bounces --out " + quote(dir / "b.png"), "needs --reference"},
-        {"stack-gpu", "render --stage 04 --solution --size 32x24 --view stack --out " + quote(dir / "c.pfm"), "needs --reference"},
-        {"jpg", "render --stage 01 --solution --size 32x24 --view depth --out " + quote(dir / "d.jpg"), "must end in .png"},
-        {"no-extension", "render --stage 01 --solution --size 32x24 --view id --reference --out " + quote(dir / "e"), ".pfm"},
-        {"rays-folder", "rays --stage 01 --solution --size 32x24 --out " + quote(dir / "no/such/rays.bin"), "does not exist"},
+        {"unknown-view",
+         "render --stage 01 --solution --size 32x24 --view heat --out " + quote(dir / "a.png"),
+         "unknown view 'heat'"},
+        {"bounces-gpu",
+         "render --stage 04 --solution --size 32x24 --view bounces --out " + quote(dir / "b.png"),
+         "needs --reference"},
+        {"stack-gpu",
+         "render --stage 04 --solution --size 32x24 --view stack --out " + quote(dir / "c.pfm"),
+         "needs --reference"},
+        {"jpg",
+         "render --stage 01 --solution --size 32x24 --view depth --out " + quote(dir / "d.jpg"),
+         "must end in .png"},
+        {"no-extension",
+         "render --stage 01 --solution --size 32x24 --view id --reference --out " +
+             quote(dir / "e"),
+         ".pfm"},
+        {"rays-folder",
+         "rays --stage 01 --solution --size 32x24 --out " + quote(dir / "no/such/rays.bin"),
+         "does not exist"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -471,8 +521,6 @@ TEST(Views, EveryStageDrawsItsGpuViewsFromTheLab) {
         SCOPED_TRACE(stage.id);
         fs::path out = dir / (stage.number() + "-normal.pfm");
         raylabOk("render --stage " + stage.number() + " --view normal --size 16x12", out);
-        if (fs::exists(out)) {
-            EXPECT_EQ(loadPfm(out).channels, 3);
-        }
+        if (fs::exists(out)) { EXPECT_EQ(loadPfm(out).channels, 3); }
     }
 }

@@ -58,11 +58,14 @@ double exactConductor(double cosI, double n, double k) {
     const double a2b2 = std::sqrt(a2b2Minus * a2b2Minus + 4.0 * n * n * k * k);  // a^2 + b^2
     const double a = std::sqrt(std::max(0.0, 0.5 * (a2b2 + a2b2Minus)));
     const double rs = (a2b2 - 2.0 * a * cosI + c2) / (a2b2 + 2.0 * a * cosI + c2);
-    const double rp = rs * (a2b2 * c2 - 2.0 * a * cosI * s2 + s2 * s2) / (a2b2 * c2 + 2.0 * a * cosI * s2 + s2 * s2);
+    const double rp = rs * (a2b2 * c2 - 2.0 * a * cosI * s2 + s2 * s2) /
+                      (a2b2 * c2 + 2.0 * a * cosI * s2 + s2 * s2);
     return 0.5 * (rs + rp);
 }
 
-double schlick(double cosine, double f0) { return f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5.0); }
+double schlick(double cosine, double f0) {
+    return f0 + (1.0 - f0) * std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5.0);
+}
 
 struct GlassFigures {
     double maxBelow = 0, maxAbove = 0, worstBelowDeg = 0;
@@ -105,9 +108,11 @@ GlassFigures glassFromInside(bool naive) {
             const dvec3 p = eye + (-b + std::sqrt(b * b - c)) * d;  // leaving the unit sphere
             const double cosI = glm::dot(d, glm::normalize(p));
             const double sinI = std::sqrt(std::max(0.0, 1.0 - cosI * cosI));
-            if (std::fabs(sinI / sinCritical - 1.0) < 1e-5) continue;  // on the critical angle: float cannot tell
+            if (std::fabs(sinI / sinCritical - 1.0) < 1e-5)
+                continue;  // on the critical angle: float cannot tell
             const double want = exactDielectric(cosI, kIor, 1.0);
-            const double got = double(rgba[(std::size_t(y) * w + std::size_t(x)) * 4]) / kAmbient - 1.0;
+            const double got =
+                double(rgba[(std::size_t(y) * w + std::size_t(x)) * 4]) / kAmbient - 1.0;
             const double error = std::isfinite(got) ? std::fabs(got - want) : 1e9;
             if (sinI < sinCritical) {
                 ++f.below;
@@ -124,11 +129,12 @@ GlassFigures glassFromInside(bool naive) {
 }
 
 void print(const char* method, const GlassFigures& f) {
-    std::printf("[ figure   ] glass, leaving, %-27s max |F - exact| below the critical angle %.4f (worst at %.2f deg, %d pixels), above %.2e (%d pixels)\n",
+    std::printf("[ figure   ] glass, leaving, %-27s max |F - exact| below the critical angle %.4f "
+                "(worst at %.2f deg, %d pixels), above %.2e (%d pixels)\n",
                 method, f.maxBelow, f.worstBelowDeg, f.below, f.maxAbove, f.above);
 }
 
-} // namespace
+}  // namespace
 
 TEST(FresnelNumerics, LeavingGlassTheAirSideCosineIsRightNearTheCriticalAngleAndTheInsideOneIsNot) {
     const GlassFigures robust = glassFromInside(false);
@@ -151,8 +157,11 @@ TEST(FresnelNumerics, LeavingGlassTheAirSideCosineIsRightNearTheCriticalAngleAnd
     }
     const std::vector<glm::vec4> got = runSolution(spec, "04-recursion");
     double worst = 0;
-    for (std::size_t i = 0; i < got.size(); ++i) worst = std::max(worst, std::fabs(double(got[i].x) - 1.0));
-    std::printf("[ figure   ] glass, leaving, Schlick with the incident cosine under total internal reflection would be off by up to %.4f\n", worst);
+    for (std::size_t i = 0; i < got.size(); ++i)
+        worst = std::max(worst, std::fabs(double(got[i].x) - 1.0));
+    std::printf("[ figure   ] glass, leaving, Schlick with the incident cosine under total "
+                "internal reflection would be off by up to %.4f\n",
+                worst);
 
     EXPECT_GT(robust.below, 1000) << "the frame must sweep the angles below the critical one";
     EXPECT_GT(robust.above, 1000) << "and above it";
@@ -162,7 +171,8 @@ TEST(FresnelNumerics, LeavingGlassTheAirSideCosineIsRightNearTheCriticalAngleAnd
     EXPECT_GT(naive.maxBelow, 0.5);
 }
 
-TEST(FresnelNumerics, GoldConductorSchlickInFloatMatchesDoubleAndItsDistanceFromTheExactFresnelIsPrinted) {
+TEST(FresnelNumerics,
+     GoldConductorSchlickInFloatMatchesDoubleAndItsDistanceFromTheExactFresnelIsPrinted) {
     const dvec3 n(0.143, 0.375, 1.442), k(3.983, 2.386, 1.603);
     FunctionSpec spec;
     spec.name = "fresnelConductor";
@@ -173,7 +183,8 @@ TEST(FresnelNumerics, GoldConductorSchlickInFloatMatchesDoubleAndItsDistanceFrom
     for (int i = 0; i <= kSteps; ++i) {
         cosines.push_back(f32(double(i) / kSteps));
         FunctionCase c;
-        c.in = {glm::dvec4(cosines.back(), 0, 0, 0), glm::dvec4(dvec3(glm::vec3(n)), 0), glm::dvec4(dvec3(glm::vec3(k)), 0), glm::dvec4(0.0)};
+        c.in = {glm::dvec4(cosines.back(), 0, 0, 0), glm::dvec4(dvec3(glm::vec3(n)), 0),
+                glm::dvec4(dvec3(glm::vec3(k)), 0), glm::dvec4(0.0)};
         spec.cases.push_back(c);
     }
     const std::vector<glm::vec4> got = runSolution(spec, "04-recursion");
@@ -182,18 +193,24 @@ TEST(FresnelNumerics, GoldConductorSchlickInFloatMatchesDoubleAndItsDistanceFrom
     dvec3 schlickError(0.0), worstDeg(0.0);
     for (std::size_t i = 0; i < got.size(); ++i)
         for (int ch = 0; ch < 3; ++ch) {
-            const double f0 = ((nf[ch] - 1) * (nf[ch] - 1) + kf[ch] * kf[ch]) / ((nf[ch] + 1) * (nf[ch] + 1) + kf[ch] * kf[ch]);
+            const double f0 = ((nf[ch] - 1) * (nf[ch] - 1) + kf[ch] * kf[ch]) /
+                              ((nf[ch] + 1) * (nf[ch] + 1) + kf[ch] * kf[ch]);
             const double sameFormula = schlick(cosines[i], f0);
-            floatError = std::max(floatError, std::isfinite(got[i][ch]) ? std::fabs(double(got[i][ch]) - sameFormula) : 1e9);
-            const double deviation = std::fabs(sameFormula - exactConductor(cosines[i], nf[ch], kf[ch]));
+            floatError = std::max(floatError, std::isfinite(got[i][ch])
+                                                  ? std::fabs(double(got[i][ch]) - sameFormula)
+                                                  : 1e9);
+            const double deviation =
+                std::fabs(sameFormula - exactConductor(cosines[i], nf[ch], kf[ch]));
             if (deviation > schlickError[ch]) {
                 schlickError[ch] = deviation;
                 worstDeg[ch] = std::acos(cosines[i]) * 180.0 / M_PI;
             }
         }
-    std::printf("[ figure   ] gold, fresnelConductor in float vs the same formula in double: max |difference| %.2e over %d angles\n", floatError,
-                int(got.size()));
-    std::printf("[ figure   ] gold, Schlick vs the exact conductor Fresnel: max |difference| red %.4f (at %.1f deg), green %.4f (at %.1f deg), blue %.4f (at %.1f deg)\n",
+    std::printf("[ figure   ] gold, fresnelConductor in float vs the same formula in double: max "
+                "|difference| %.2e over %d angles\n",
+                floatError, int(got.size()));
+    std::printf("[ figure   ] gold, Schlick vs the exact conductor Fresnel: max |difference| red "
+                "%.4f (at %.1f deg), green %.4f (at %.1f deg), blue %.4f (at %.1f deg)\n",
                 schlickError.r, worstDeg.r, schlickError.g, worstDeg.g, schlickError.b, worstDeg.b);
     EXPECT_LE(floatError, 1e-5);
     // Schlick is an approximation: a sanity bound, not a target.

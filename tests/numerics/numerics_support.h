@@ -22,8 +22,9 @@ double percentile(std::vector<double> values, double p);
 // Runs SPEC's cases through stage ID's solution with EXTRADEFINES. The
 // harness finds tests/numerics/glsl/ (the tests' GLSL helpers) first, and
 // any number of cases is run in pieces.
-std::vector<glm::vec4> runSolution(const FunctionSpec& spec, const std::string& stageId, const std::vector<std::string>& extraDefines = {});
+std::vector<glm::vec4> runSolution(const FunctionSpec& spec, const std::string& stageId,
+                                   const std::vector<std::string>& extraDefines = {});
 
 inline float f32(double x) { return float(x); }
 
-} // namespace raylab::numerics
+}  // namespace raylab::numerics

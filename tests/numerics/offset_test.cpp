@@ -41,12 +41,17 @@ dvec3 rounded(dvec3 v) { return dvec3(f32(v.x), f32(v.y), f32(v.z)); }
 
 enum class Surface { Sphere, Plane, Torus, FloorFromAfar };
 const char* name(Surface s) {
-    return s == Surface::Sphere ? "sphere" : s == Surface::Plane ? "plane" : s == Surface::Torus ? "torus" : "floor";
+    return s == Surface::Sphere  ? "sphere"
+           : s == Surface::Plane ? "plane"
+           : s == Surface::Torus ? "torus"
+                                 : "floor";
 }
 
 struct Figures {
     int shadowRays = 0, shadowAcne = 0, reflectedRays = 0, reflectedAcne = 0, primaryMissed = 0;
-    double share() const { return double(shadowAcne + reflectedAcne) / double(std::max(shadowRays + reflectedRays, 1)); }
+    double share() const {
+        return double(shadowAcne + reflectedAcne) / double(std::max(shadowRays + reflectedRays, 1));
+    }
 };
 
 // The eye near the world origin, as in every scene; the surfaces and the
@@ -59,21 +64,29 @@ const dvec3 kEye(0.5, 1.5, 1.0);
 Figures measure(Surface surface, double scale, bool naive) {
     const bool plane = surface == Surface::Plane || surface == Surface::FloorFromAfar;
     const bool torus = surface == Surface::Torus;
-    const dvec3 eye = rounded(surface == Surface::FloorFromAfar ? scale * kEye : torus ? scale * dvec3(0.9, -2.2, 1.4) : kEye);
+    const dvec3 eye = rounded(surface == Surface::FloorFromAfar ? scale * kEye
+                              : torus                           ? scale * dvec3(0.9, -2.2, 1.4)
+                                                                : kEye);
     const dvec3 center = rounded(scale * dvec3(0.6, -0.2, -2.4));
     const double radius = f32(scale);
     const double R = f32(kTorusR * scale), r = f32(kTorusr * scale);
-    const dvec3 planeNormal = surface == Surface::FloorFromAfar ? dvec3(0.0, 1.0, 0.0) : rounded(glm::normalize(dvec3(0.2, 1.0, 0.3)));
-    const double planeOffset = surface == Surface::FloorFromAfar ? 0.0 : f32(glm::dot(planeNormal, scale * dvec3(0.0, -1.0, 0.0)));
-    const dvec3 light = rounded(scale * (plane ? dvec3(-2.0, 4.0, -3.0) : torus ? dvec3(2.0, -1.0, 3.0) : dvec3(3.0, 5.0, 2.0)));
+    const dvec3 planeNormal = surface == Surface::FloorFromAfar
+                                  ? dvec3(0.0, 1.0, 0.0)
+                                  : rounded(glm::normalize(dvec3(0.2, 1.0, 0.3)));
+    const double planeOffset = surface == Surface::FloorFromAfar
+                                   ? 0.0
+                                   : f32(glm::dot(planeNormal, scale * dvec3(0.0, -1.0, 0.0)));
+    const dvec3 light = rounded(scale * (plane   ? dvec3(-2.0, 4.0, -3.0)
+                                         : torus ? dvec3(2.0, -1.0, 3.0)
+                                                 : dvec3(3.0, 5.0, 2.0)));
 
     FunctionSpec spec;
     spec.name = "acne";
-    spec.includes = {"scene_objects.glsl", "intersect_sphere.glsl", "intersect_plane.glsl", "intersect_torus.glsl", "ray_offset.glsl",
-                     "numerics_acne.glsl"};
-    spec.call = plane ? "planeAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)"
-              : torus ? "torusAcne(a0.xyz, a1.xyz, a2.x, a2.y, a3.xyz)"
-                      : "sphereAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)";
+    spec.includes = {"scene_objects.glsl",   "intersect_sphere.glsl", "intersect_plane.glsl",
+                     "intersect_torus.glsl", "ray_offset.glsl",       "numerics_acne.glsl"};
+    spec.call = plane   ? "planeAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)"
+                : torus ? "torusAcne(a0.xyz, a1.xyz, a2.x, a2.y, a3.xyz)"
+                        : "sphereAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)";
     // Primary rays at a grid of points: over the sphere's disc (within 0.95
     // of its radius: no grazing hits), over a square of the plane 3 S wide
     // around the point below the sphere, over the torus's square 1.8 S wide.
@@ -84,13 +97,15 @@ Figures measure(Surface surface, double scale, bool naive) {
     const dvec3 u = glm::normalize(glm::cross(planeNormal, dvec3(1, 0, 0)));
     const dvec3 v = glm::cross(planeNormal, u);
     const dvec3 below = scale * dvec3(0.6, 0.0, -2.4);
-    const dvec3 planeCenter = below - planeNormal * (glm::dot(planeNormal, below) - planeOffset);  // on the plane
+    const dvec3 planeCenter =
+        below - planeNormal * (glm::dot(planeNormal, below) - planeOffset);  // on the plane
     for (int y = 0; y < kGrid; ++y)
         for (int x = 0; x < kGrid; ++x) {
             const double sx = -1.0 + 2.0 * (x + 0.5) / kGrid, sy = -1.0 + 2.0 * (y + 0.5) / kGrid;
             if (plane) targets.push_back(planeCenter + 1.5 * scale * (sx * u + sy * v));
             else if (torus) targets.push_back(0.9 * scale * dvec3(sx, sy, 0.0));
-            else if (sx * sx + sy * sy <= 0.95 * 0.95) targets.push_back(center + radius * (sx * right + sy * up));
+            else if (sx * sx + sy * sy <= 0.95 * 0.95)
+                targets.push_back(center + radius * (sx * right + sy * up));
         }
     std::vector<dvec3> dirs;
     for (const dvec3& target : targets) {
@@ -98,7 +113,9 @@ Figures measure(Surface surface, double scale, bool naive) {
         dirs.push_back(d);
         FunctionCase c;
         c.in = {glm::dvec4(eye, 0.0), glm::dvec4(d, 0.0),
-                plane ? glm::dvec4(planeNormal, planeOffset) : torus ? glm::dvec4(R, r, 0.0, 0.0) : glm::dvec4(center, radius),
+                plane   ? glm::dvec4(planeNormal, planeOffset)
+                : torus ? glm::dvec4(R, r, 0.0, 0.0)
+                        : glm::dvec4(center, radius),
                 glm::dvec4(light, 0.0)};
         spec.cases.push_back(c);
     }
@@ -107,7 +124,8 @@ Figures measure(Surface surface, double scale, bool naive) {
     const std::vector<glm::vec4> got = runSolution(spec, "08-full", defines);
 
     Figures f;
-    const double acneBelow = torus ? 0.01 * r : 1e30;  // the torus may shade and mirror itself farther away
+    const double acneBelow =
+        torus ? 0.01 * r : 1e30;  // the torus may shade and mirror itself farther away
     for (std::size_t i = 0; i < dirs.size(); ++i) {
         if (!(got[i].x > 0.0f)) {
             if (!torus) ++f.primaryMissed;  // the torus's grid has holes and sky around it
@@ -116,7 +134,8 @@ Figures measure(Surface surface, double scale, bool naive) {
         // Which rays count is decided in double, on the hit point.
         const dvec3 p = eye + double(got[i].x) * dirs[i];
         dvec3 normal = plane   ? planeNormal
-                       : torus ? glm::normalize((glm::dot(p, p) + R * R - r * r) * p - 2.0 * R * R * dvec3(p.x, p.y, 0.0))
+                       : torus ? glm::normalize((glm::dot(p, p) + R * R - r * r) * p -
+                                                2.0 * R * R * dvec3(p.x, p.y, 0.0))
                                : glm::normalize(p - center);
         if (glm::dot(normal, dirs[i]) > 0.0) normal = -normal;  // faces the eye
         const double cosIncident = -glm::dot(normal, dirs[i]);
@@ -133,12 +152,15 @@ Figures measure(Surface surface, double scale, bool naive) {
     return f;
 }
 
-void print(Surface surface, double scale, const char* method, const Figures& f, const char* tag = "figure") {
-    std::printf("[ %-8s ] %-6s scale %7.0e, %-12s acne %7.3f%%: shadow rays %4d of %4d, reflected rays %4d of %4d (primary misses %d)\n", tag,
-                name(surface), scale, method, f.share() * 100.0, f.shadowAcne, f.shadowRays, f.reflectedAcne, f.reflectedRays, f.primaryMissed);
+void print(Surface surface, double scale, const char* method, const Figures& f,
+           const char* tag = "figure") {
+    std::printf("[ %-8s ] %-6s scale %7.0e, %-12s acne %7.3f%%: shadow rays %4d of %4d, reflected "
+                "rays %4d of %4d (primary misses %d)\n",
+                tag, name(surface), scale, method, f.share() * 100.0, f.shadowAcne, f.shadowRays,
+                f.reflectedAcne, f.reflectedRays, f.primaryMissed);
 }
 
-} // namespace
+}  // namespace
 
 TEST(OffsetNumerics, ScaleAwareOffsetHasNoAcneAtAnyScaleAndTheFixedOneFailsLarge) {
     double fixedAt1 = 0, fixedFrom1e4 = 1, fixedAt1e6 = 1;
@@ -154,7 +176,8 @@ TEST(OffsetNumerics, ScaleAwareOffsetHasNoAcneAtAnyScaleAndTheFixedOneFailsLarge
             const Figures fixed = measure(surface, scale, true);
             print(surface, scale, "default", robust);
             print(surface, scale, "fixed 1e-3", fixed);
-            EXPECT_GT(robust.shadowRays, kGrid * kGrid / 8) << "the light must reach much of the surface";
+            EXPECT_GT(robust.shadowRays, kGrid * kGrid / 8)
+                << "the light must reach much of the surface";
             EXPECT_GT(robust.reflectedRays, kGrid * kGrid / 4);
             EXPECT_EQ(robust.primaryMissed, 0);
             EXPECT_EQ(robust.shadowAcne, 0);
@@ -180,7 +203,9 @@ TEST(OffsetNumerics, ScaleAwareOffsetHasNoAcneAtAnyScaleAndTheFixedOneFailsLarge
     // the eye near the origin. The cure would be to put such points back onto
     // the surface before offsetting them (pbrt does).
     for (double scale : {1.0, 1e2, 1e4, 1e6}) {
-        print(Surface::FloorFromAfar, scale, "default", measure(Surface::FloorFromAfar, scale, false), "limit");
-        print(Surface::FloorFromAfar, scale, "fixed 1e-3", measure(Surface::FloorFromAfar, scale, true), "limit");
+        print(Surface::FloorFromAfar, scale, "default",
+              measure(Surface::FloorFromAfar, scale, false), "limit");
+        print(Surface::FloorFromAfar, scale, "fixed 1e-3",
+              measure(Surface::FloorFromAfar, scale, true), "limit");
     }
 }

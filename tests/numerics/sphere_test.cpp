@@ -44,7 +44,8 @@ Reference reference(dvec3 o, dvec3 d, dvec3 center, double radius, double band) 
     const double miss = glm::length(closest) - radius;  // > 0: passes outside
     ref.ambiguous = std::fabs(miss) < band;
     if (miss <= 0.0) {
-        const double halfChord = std::sqrt(std::max(radius * radius - glm::dot(closest, closest), 0.0) / dd);
+        const double halfChord =
+            std::sqrt(std::max(radius * radius - glm::dot(closest, closest), 0.0) / dd);
         ref.t = along - halfChord;
     }
     return ref;
@@ -77,11 +78,13 @@ Figures measure(double ratio, bool naive) {
     std::vector<Reference> refs;
     for (int y = 0; y < kGrid; ++y)
         for (int x = 0; x < kGrid; ++x) {
-            const dvec3 target = center + kRadius * (right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid));
+            const dvec3 target = center + kRadius * (right * (-1.4 + 2.8 * (x + 0.5) / kGrid) +
+                                                     up * (-1.4 + 2.8 * (y + 0.5) / kGrid));
             dvec3 dir = glm::normalize(target - o);
             dir = dvec3(f32(dir.x), f32(dir.y), f32(dir.z));
             FunctionCase k;
-            k.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(center, kRadius), glm::dvec4(0.0)};
+            k.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(center, kRadius),
+                    glm::dvec4(0.0)};
             spec.cases.push_back(k);
             refs.push_back(reference(o, dir, center, kRadius, band));
         }
@@ -100,10 +103,11 @@ Figures measure(double ratio, bool naive) {
             ++decided;
             f.wrong += gotHit != refHit;
             if (gotHit != refHit && !naive && f.wrong <= 5)
-                std::printf("[ wrong    ] ray %zu: reference %s, solution %s t = %.9g\n", i, refHit ? "hit" : "miss",
-                            gotHit ? "hit at" : "miss,", double(got[i].x));
+                std::printf("[ wrong    ] ray %zu: reference %s, solution %s t = %.9g\n", i,
+                            refHit ? "hit" : "miss", gotHit ? "hit at" : "miss,", double(got[i].x));
         }
-        if (gotHit && refHit) ulps.push_back(std::fabs(double(got[i].x) - refs[i].t) / floatUlp(refs[i].t));
+        if (gotHit && refHit)
+            ulps.push_back(std::fabs(double(got[i].x) - refs[i].t) / floatUlp(refs[i].t));
     }
     f.rays = int(refs.size());
     f.wrongShare = double(f.wrong) / double(std::max(decided, 1));
@@ -114,11 +118,13 @@ Figures measure(double ratio, bool naive) {
 }
 
 void print(const char* method, double ratio, const Figures& f) {
-    std::printf("[ figure   ] sphere at %6.0f radii, %-9s wrong hit/miss %7.3f%% (%5d rays), |t error| p50 %10.1f ulp, p99 %10.1f ulp, max %10.1f ulp (%d rays, %d hits)\n",
-                ratio, method, f.wrongShare * 100.0, f.wrong, f.p50, f.p99, f.maxUlps, f.rays, f.hits);
+    std::printf("[ figure   ] sphere at %6.0f radii, %-9s wrong hit/miss %7.3f%% (%5d rays), |t "
+                "error| p50 %10.1f ulp, p99 %10.1f ulp, max %10.1f ulp (%d rays, %d hits)\n",
+                ratio, method, f.wrongShare * 100.0, f.wrong, f.p50, f.p99, f.maxUlps, f.rays,
+                f.hits);
 }
 
-} // namespace
+}  // namespace
 
 TEST(SphereNumerics, StableDiscriminantIsRightFarAwayAndTheTextbookOneIsNot) {
     double naiveWrongFar = 0;

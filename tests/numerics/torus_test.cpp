@@ -50,12 +50,14 @@ Reference traceReference(dvec3 o, dvec3 d) {
         if (s < 1e-12) {
             ref.t = t;
             double deepest = 0.0;  // how far the chord dips inside the tube
-            for (double u = t; u < t + 2.0 * kr; u += kr / 2000.0) deepest = std::min(deepest, torusSdf(o + u * d));
+            for (double u = t; u < t + 2.0 * kr; u += kr / 2000.0)
+                deepest = std::min(deepest, torusSdf(o + u * d));
             ref.margin = -deepest;
             ref.ambiguous = -deepest < band;
             return ref;
         }
-        if (t > 0 && s > 2.0 * (kR + kr) && glm::dot(o + t * d, d) > 0) break;  // past the torus, moving away
+        if (t > 0 && s > 2.0 * (kR + kr) && glm::dot(o + t * d, d) > 0)
+            break;  // past the torus, moving away
         t += s;
     }
     ref.margin = closest;
@@ -82,13 +84,15 @@ Figures measure(double distance, bool closedForm) {
     std::vector<Reference> refs;
     for (int y = 0; y < kGrid; ++y)
         for (int x = 0; x < kGrid; ++x) {
-            dvec3 target = right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid);
+            dvec3 target =
+                right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid);
             // The GPU sees float32 inputs: the reference takes the same numbers.
             dvec3 o(f32(eye.x), f32(eye.y), f32(eye.z));
             dvec3 dir = glm::normalize(target - o);
             dir = dvec3(f32(dir.x), f32(dir.y), f32(dir.z));
             FunctionCase c;
-            c.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(kR, kr, 0, 0), glm::dvec4(0.0)};
+            c.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(kR, kr, 0, 0),
+                    glm::dvec4(0.0)};
             spec.cases.push_back(c);
             refs.push_back(traceReference(o, dir));
         }
@@ -107,11 +111,13 @@ Figures measure(double distance, bool closedForm) {
             ++decided;
             wrong += gotHit != refHit;
             if (gotHit != refHit && !closedForm && wrong <= 5)
-                std::printf("[ wrong    ] ray %zu: reference %s (margin %.3g), solver %s t = %.9g\n", i, refHit ? "hit" : "miss",
-                            refs[i].margin, gotHit ? "hit at" : "miss,", double(got[i].x));
-
+                std::printf(
+                    "[ wrong    ] ray %zu: reference %s (margin %.3g), solver %s t = %.9g\n", i,
+                    refHit ? "hit" : "miss", refs[i].margin, gotHit ? "hit at" : "miss,",
+                    double(got[i].x));
         }
-        if (gotHit && refHit) ulps.push_back(std::fabs(double(got[i].x) - refs[i].t) / floatUlp(refs[i].t));
+        if (gotHit && refHit)
+            ulps.push_back(std::fabs(double(got[i].x) - refs[i].t) / floatUlp(refs[i].t));
     }
     f.rays = int(refs.size());
     f.wrongShare = double(wrong) / double(std::max(decided, 1));
@@ -122,11 +128,12 @@ Figures measure(double distance, bool closedForm) {
 }
 
 void print(const char* solver, double distance, const Figures& f) {
-    std::printf("[ figure   ] torus at %6.0f R, %-12s wrong hit/miss %7.3f%%, |t error| p50 %9.1f ulp, p99 %9.1f ulp, max %9.1f ulp (%d rays, %d hits)\n",
+    std::printf("[ figure   ] torus at %6.0f R, %-12s wrong hit/miss %7.3f%%, |t error| p50 %9.1f "
+                "ulp, p99 %9.1f ulp, max %9.1f ulp (%d rays, %d hits)\n",
                 distance, solver, f.wrongShare * 100.0, f.p50, f.p99, f.maxUlps, f.rays, f.hits);
 }
 
-} // namespace
+}  // namespace
 
 TEST(TorusNumerics, DefaultSolverIsRightAtEveryDistanceAndTheClosedFormIsNot) {
     double closedFormWrongFar = 0;

@@ -52,12 +52,14 @@ Mesh heightField() {
     constexpr int n = 16;
     auto corner = [](int i, int j) {
         const double x = -2.0 + 4.0 * i / (n - 1), z = -2.0 + 4.0 * j / (n - 1);
-        const double y = 0.25 * std::sin(1.7 * x + 0.3) * std::cos(1.3 * z - 0.2) + 0.1 * std::sin(3.1 * x * z);
+        const double y =
+            0.25 * std::sin(1.7 * x + 0.3) * std::cos(1.3 * z - 0.2) + 0.1 * std::sin(3.1 * x * z);
         return vec3(float(x), float(y), float(z));
     };
     for (int i = 0; i + 1 < n; ++i)
         for (int j = 0; j + 1 < n; ++j) {
-            const vec3 a = corner(i, j), b = corner(i + 1, j), c = corner(i + 1, j + 1), d = corner(i, j + 1);
+            const vec3 a = corner(i, j), b = corner(i + 1, j), c = corner(i + 1, j + 1),
+                       d = corner(i, j + 1);
             if ((i + j) % 2 == 0) {
                 m.triangles.push_back({a, c, b});
                 m.triangles.push_back({a, d, c});
@@ -85,18 +87,23 @@ Mesh glassCube() {
     Scene pro = loadScene(projectRoot() / "assets" / "scenes" / "pro.json");
     Mesh m;
     m.name = "glass cube";
-    for (std::size_t i = pro.triangles.size() - 12; i < pro.triangles.size(); ++i) m.triangles.push_back(pro.triangles[i].vertices);
+    for (std::size_t i = pro.triangles.size() - 12; i < pro.triangles.size(); ++i)
+        m.triangles.push_back(pro.triangles[i].vertices);
     dvec3 center(0.0);
     for (const Tri& t : m.triangles)
         for (const vec3& v : t) center += toD(v) / 36.0;
-    m.eyes = {center, center + dvec3(0.3, -0.2, 0.25), {0.0, 6.5, 16.5}, {0.2, 3.0, 2.6}, center + dvec3(-30.0, 25.0, 40.0)};
+    m.eyes = {center,
+              center + dvec3(0.3, -0.2, 0.25),
+              {0.0, 6.5, 16.5},
+              {0.2, 3.0, 2.6},
+              center + dvec3(-30.0, 25.0, 40.0)};
     return m;
 }
 
 // A ray and the triangles around the point it is aimed at.
 struct AimedRay {
-    dvec3 origin, dir;      // float numbers
-    double distance = 0;    // to the aimed-at point
+    dvec3 origin, dir;    // float numbers
+    double distance = 0;  // to the aimed-at point
     std::vector<int> around;
     bool atCorner = false;
 };
@@ -128,7 +135,8 @@ std::vector<AimedRay> aimedRays(const Mesh& mesh) {
     std::map<VertexKey, std::vector<int>> corners;
     for (int i = 0; i < int(mesh.triangles.size()); ++i)
         for (int e = 0; e < 3; ++e) {
-            VertexKey p = key(mesh.triangles[std::size_t(i)][std::size_t(e)]), q = key(mesh.triangles[std::size_t(i)][std::size_t((e + 1) % 3)]);
+            VertexKey p = key(mesh.triangles[std::size_t(i)][std::size_t(e)]),
+                      q = key(mesh.triangles[std::size_t(i)][std::size_t((e + 1) % 3)]);
             edges[std::minmax(p, q)].push_back(i);
             corners[p].push_back(i);
         }
@@ -144,9 +152,13 @@ std::vector<AimedRay> aimedRays(const Mesh& mesh) {
         for (const auto& [edge, tris] : edges) {
             if (tris.size() != 2) continue;
             const dvec3 a = toVec(edge.first), b = toVec(edge.second);
-            if (!crossesEdge(eye, a, b, third(tris[0], edge.first, edge.second), third(tris[1], edge.first, edge.second))) continue;
+            if (!crossesEdge(eye, a, b, third(tris[0], edge.first, edge.second),
+                             third(tris[1], edge.first, edge.second)))
+                continue;
             for (int k = 0; k < kSamples; ++k) {
-                const double s = k % 2 == 0 ? (k / 2 + 1.0) / (kSamples / 2 + 1.0) : (k + 0.3183) / kSamples;  // exact fractions and others
+                const double s = k % 2 == 0
+                                     ? (k / 2 + 1.0) / (kSamples / 2 + 1.0)
+                                     : (k + 0.3183) / kSamples;  // exact fractions and others
                 rays.push_back(aim(eye, a + s * (b - a), tris, false));
             }
         }
@@ -156,7 +168,8 @@ std::vector<AimedRay> aimedRays(const Mesh& mesh) {
             bool surrounded = true;
             for (const auto& [edge, owners] : edges)
                 if ((edge.first == corner || edge.second == corner) &&
-                    (owners.size() != 2 || !crossesEdge(eye, toVec(edge.first), toVec(edge.second), third(owners[0], edge.first, edge.second),
+                    (owners.size() != 2 || !crossesEdge(eye, toVec(edge.first), toVec(edge.second),
+                                                        third(owners[0], edge.first, edge.second),
                                                         third(owners[1], edge.first, edge.second))))
                     surrounded = false;
             if (surrounded) rays.push_back(aim(eye, toVec(corner), tris, true));
@@ -177,13 +190,15 @@ std::vector<AimedRay> plainRays(const Mesh& mesh, std::vector<bool>* outside) {
             const dvec3 a = toD(t[0]), b = toD(t[1]), c = toD(t[2]);
             const dvec3 centroid = (a + b + c) / 3.0;
             const dvec3 normal = glm::normalize(glm::cross(b - a, c - a));
-            if (std::fabs(glm::dot(normal, glm::normalize(centroid - eye))) < 0.05) continue;  // grazing
+            if (std::fabs(glm::dot(normal, glm::normalize(centroid - eye))) < 0.05)
+                continue;  // grazing
             rays.push_back(aim(eye, centroid, {i}, false));
             outside->push_back(false);
             const dvec3 corners[3] = {a, b, c};
             for (int e = 0; e < 3; ++e) {
                 const dvec3 middle = (corners[e] + corners[(e + 1) % 3]) / 2.0;
-                rays.push_back(aim(eye, middle + 1e-3 * (middle - corners[(e + 2) % 3]), {i}, false));
+                rays.push_back(
+                    aim(eye, middle + 1e-3 * (middle - corners[(e + 2) % 3]), {i}, false));
                 outside->push_back(true);
             }
         }
@@ -195,16 +210,19 @@ struct Figures {
     int plainRays = 0, plainWrong = 0;  // centroid missed or a point outside hit
 };
 
-std::vector<glm::vec4> runTriangles(const Mesh& mesh, const std::vector<AimedRay>& rays, bool naive) {
+std::vector<glm::vec4> runTriangles(const Mesh& mesh, const std::vector<AimedRay>& rays,
+                                    bool naive) {
     FunctionSpec spec;
     spec.name = "intersectTriangle";
     spec.includes = {"intersect_triangle.glsl"};
-    spec.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, a3.xyz), 0.0, 0.0, 1.0)";
+    spec.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, "
+                "a3.xyz), 0.0, 0.0, 1.0)";
     for (const AimedRay& r : rays)
         for (int tri : r.around) {
             const Tri& t = mesh.triangles[std::size_t(tri)];
             FunctionCase c;
-            c.in = {glm::dvec4(r.origin, t[0].x), glm::dvec4(r.dir, t[0].y), glm::dvec4(toD(t[1]), t[0].z), glm::dvec4(toD(t[2]), 0.0)};
+            c.in = {glm::dvec4(r.origin, t[0].x), glm::dvec4(r.dir, t[0].y),
+                    glm::dvec4(toD(t[1]), t[0].z), glm::dvec4(toD(t[2]), 0.0)};
             spec.cases.push_back(c);
         }
     std::vector<std::string> defines;
@@ -223,7 +241,9 @@ Figures measure(const Mesh& mesh, const std::vector<AimedRay>& rays, bool naive)
         const bool hit = t > 0.0f && std::isfinite(t);
         if (!std::isfinite(t)) ++f.nonFinite;
         ++f.plainRays;
-        if (hit == outside[i] || (hit && std::fabs(double(t) - plain[i].distance) > 1e-4 * plain[i].distance)) ++f.plainWrong;
+        if (hit == outside[i] ||
+            (hit && std::fabs(double(t) - plain[i].distance) > 1e-4 * plain[i].distance))
+            ++f.plainWrong;
     }
     std::size_t next = 0;
     for (const AimedRay& r : rays) {
@@ -243,12 +263,15 @@ Figures measure(const Mesh& mesh, const std::vector<AimedRay>& rays, bool naive)
 }
 
 void print(const std::string& mesh, const char* method, const Figures& f) {
-    std::printf("[ figure   ] %-12s %-16s fell through: %4d of %5d rays at shared edges, %3d of %4d at shared corners "
-                "(hits with a wrong t: %d; plain centroid/outside rays wrong: %d of %d; NaN/Inf: %d)\n",
-                mesh.c_str(), method, f.edgeCracks, f.edgeRays, f.cornerCracks, f.cornerRays, f.wrongT, f.plainWrong, f.plainRays, f.nonFinite);
+    std::printf(
+        "[ figure   ] %-12s %-16s fell through: %4d of %5d rays at shared edges, %3d of %4d at "
+        "shared corners "
+        "(hits with a wrong t: %d; plain centroid/outside rays wrong: %d of %d; NaN/Inf: %d)\n",
+        mesh.c_str(), method, f.edgeCracks, f.edgeRays, f.cornerCracks, f.cornerRays, f.wrongT,
+        f.plainWrong, f.plainRays, f.nonFinite);
 }
 
-} // namespace
+}  // namespace
 
 TEST(TriangleNumerics, WatertightTestHasNoCracksAndMollerTrumboreHas) {
     ensureGlContext();

@@ -43,15 +43,20 @@ CommandResult runCommand(const std::string& command) {
     return r;
 }
 
-CommandResult runRaylab(const std::string& args) { return runCommand(quote(RAYLAB_EXE) + " " + args); }
-CommandResult runLabgen(const std::string& args) { return runCommand(quote(RAYLAB_LABGEN_EXE) + " " + args); }
+CommandResult runRaylab(const std::string& args) {
+    return runCommand(quote(RAYLAB_EXE) + " " + args);
+}
+CommandResult runLabgen(const std::string& args) {
+    return runCommand(quote(RAYLAB_LABGEN_EXE) + " " + args);
+}
 
 fs::path sourceDir() { return RAYLAB_SOURCE_DIR; }
 fs::path raylabExe() { return RAYLAB_EXE; }
 
 ScratchDir::ScratchDir() {
     std::random_device rd;
-    path_ = fs::temp_directory_path() / ("raylab-test-" + std::to_string(rd()) + std::to_string(rd()));
+    path_ =
+        fs::temp_directory_path() / ("raylab-test-" + std::to_string(rd()) + std::to_string(rd()));
     fs::create_directories(path_);
 }
 
@@ -68,7 +73,8 @@ void writeSolvedLabs(const fs::path& dir) {
 void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
     std::string text = readFile(file);
     auto at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << "'" << from << "' not found in " << file << " - did the solution change?";
+    ASSERT_NE(at, std::string::npos)
+        << "'" << from << "' not found in " << file << " - did the solution change?";
     text.replace(at, from.size(), to);
     writeFile(file, text);
 }
@@ -90,4 +96,4 @@ void ensureGlContext() {
     static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
 }
 
-} // namespace raylab::test
+}  // namespace raylab::test

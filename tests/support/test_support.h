@@ -59,4 +59,4 @@ void writeFile(const fs::path& file, const std::string& text);
 // Names of the views reported as FAIL by `raylab check` output.
 std::vector<std::string> failedViews(const std::string& checkOutput);
 
-} // namespace raylab::test
+}  // namespace raylab::test

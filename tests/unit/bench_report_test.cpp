@@ -42,7 +42,8 @@ BenchRow row(const std::string& scene, double frameMs, double rmse) {
 // Two scenes with several settings each, one exact (RMSE 0), like a real run.
 std::vector<BenchRow> sampleRows() {
     std::vector<BenchRow> rows;
-    const double lite[][2] = {{42.0, 0.0012}, {18.5, 0.0020}, {9.1, 0.0060}, {30.0, 0.0030}, {61.0, 0.0}};
+    const double lite[][2] = {
+        {42.0, 0.0012}, {18.5, 0.0020}, {9.1, 0.0060}, {30.0, 0.0030}, {61.0, 0.0}};
     for (int i = 0; i < 5; ++i) {
         BenchRow r = row("lite", lite[i][0], lite[i][1]);
         r.bvh = i % 2 == 1;
@@ -76,9 +77,7 @@ std::vector<std::string> lines(const std::string& text) {
 std::string errorOf(const std::function<void()>& f) {
     try {
         f();
-    } catch (const Error& e) {
-        return e.what();
-    }
+    } catch (const Error& e) { return e.what(); }
     return "(no error)";
 }
 
@@ -101,7 +100,7 @@ private:
 
 const std::string kGnuplotMissing = "gnuplot not found: install gnuplot-nox (install.sh does)";
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------- Pareto
 
@@ -121,7 +120,8 @@ TEST(BenchPareto, DominatedRowsAreOutFasterButWorseRowsStayPerScene) {
 }
 
 TEST(BenchPareto, UnmeasuredRowsAreNeverOnItAndBeatNothing) {
-    std::vector<BenchRow> rows = {row("a", 1, NAN), row("a", 100, 0.5), row("a", INFINITY, 0.0), row("a", NAN, 0.1)};
+    std::vector<BenchRow> rows = {row("a", 1, NAN), row("a", 100, 0.5), row("a", INFINITY, 0.0),
+                                  row("a", NAN, 0.1)};
     EXPECT_EQ(paretoFront(rows), (std::vector<std::size_t>{1}));
     EXPECT_TRUE(paretoFront({}).empty());
 }
@@ -152,11 +152,12 @@ TEST(BenchCsv, HeaderRowsAndNumbers) {
     std::vector<BenchRow> rows = sampleRows();
     const std::vector<std::string> out = lines(benchCsv(rows));
     ASSERT_EQ(out.size(), rows.size() + 1);
-    EXPECT_EQ(out[0],
-              "scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,frame_ms,compile_ms,rmse,psnr,max_err,"
-              "bad_px_share,depth_err_p99_ulp,pareto\r");
+    EXPECT_EQ(out[0], "scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,"
+                      "frame_ms,compile_ms,rmse,psnr,max_err,"
+                      "bad_px_share,depth_err_p99_ulp,pareto\r");
     // Row 1 of the sample: lite, bvh, 18.5 ms - on the front; row 3 is not.
-    EXPECT_EQ(out[2].rfind("lite,800,600,8,1,robust,1,0,robust,18.5,120.4,0.002,", 0), 0u) << out[2];
+    EXPECT_EQ(out[2].rfind("lite,800,600,8,1,robust,1,0,robust,18.5,120.4,0.002,", 0), 0u)
+        << out[2];
     EXPECT_EQ(out[2].substr(out[2].size() - 3), ",1\r");
     EXPECT_EQ(out[4].substr(out[4].size() - 3), ",0\r");
     // Every line ends CRLF and has 17 fields (none of these need quotes).
@@ -187,7 +188,8 @@ TEST(BenchCsv, ExactValuesBooleansAndPareto) {
 }
 
 TEST(BenchCsv, QuotesAndDefusesSceneNames) {
-    std::vector<BenchRow> rows = {row("lite, \"big\"", 10, 0.01), row("=HYPERLINK(\"x\")", 10, 0.01)};
+    std::vector<BenchRow> rows = {row("lite, \"big\"", 10, 0.01),
+                                  row("=HYPERLINK(\"x\")", 10, 0.01)};
     const std::vector<std::string> out = lines(benchCsv(rows));
     ASSERT_EQ(out.size(), 3u);
     EXPECT_EQ(out[1].rfind("\"lite, \"\"big\"\"\",800,600,8,", 0), 0u) << out[1];
@@ -203,10 +205,12 @@ TEST(BenchCsv, EmptyIsTheHeaderOnly) { EXPECT_EQ(lines(benchCsv({})).size(), 1u)
 
 TEST(BenchMarkdown, EveryRowGroupedByScene) {
     std::vector<BenchRow> rows = sampleRows();
-    const std::string md = benchMarkdown(rows, "Bench on llvmpipe", "raylab bench --scenes lite,pro", "bench.png");
+    const std::string md =
+        benchMarkdown(rows, "Bench on llvmpipe", "raylab bench --scenes lite,pro", "bench.png");
     EXPECT_EQ(md.rfind("# Bench on llvmpipe\n", 0), 0u);
     EXPECT_NE(md.find("`raylab bench --scenes lite,pro`"), std::string::npos);
-    EXPECT_NE(md.find("![frame time against RMSE, one colour per scene](bench.png)"), std::string::npos);
+    EXPECT_NE(md.find("![frame time against RMSE, one colour per scene](bench.png)"),
+              std::string::npos);
     const std::size_t lite = md.find("\n## lite\n"), pro = md.find("\n## pro\n");
     ASSERT_NE(lite, std::string::npos);
     ASSERT_NE(pro, std::string::npos);
@@ -215,23 +219,31 @@ TEST(BenchMarkdown, EveryRowGroupedByScene) {
     // One table line per row, under its scene's heading, readable units.
     std::size_t tableRows = 0;
     for (const std::string& l : lines(md))
-        if (l.rfind("| ", 0) == 0 && l.rfind("| :", 0) != 0 && l.find(" | Setting |") == std::string::npos) ++tableRows;
+        if (l.rfind("| ", 0) == 0 && l.rfind("| :", 0) != 0 &&
+            l.find(" | Setting |") == std::string::npos)
+            ++tableRows;
     EXPECT_EQ(tableRows, rows.size());
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        const std::size_t at = std::min(md.find("| " + benchSettingName(rows[i]) + " |"), md.find("| **" + benchSettingName(rows[i]) + "** |"));
+        const std::size_t at = std::min(md.find("| " + benchSettingName(rows[i]) + " |"),
+                                        md.find("| **" + benchSettingName(rows[i]) + "** |"));
         ASSERT_NE(at, std::string::npos) << benchSettingName(rows[i]);
         EXPECT_EQ(at > pro, rows[i].scene == "pro") << i;
     }
-    EXPECT_NE(md.find("| 18.5 | 120.4 | 0.51 | 0.002 | 54.0 | 5.1 | 0.40 % | 3.0 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 18.5 | 120.4 | 0.51 | 0.002 | 54.0 | 5.1 | 0.40 % | 3.0 |"),
+              std::string::npos)
+        << md;
     EXPECT_NE(md.find("| 0.00 | 0 | inf |"), std::string::npos) << md;  // the exact row
 
     // Pareto rows are marked: lite 9.1 / 18.5 / 42.0 / 61.0 (exact), pro 70 / 95 / 210.
     std::size_t marked = 0;
-    for (std::size_t p = md.find("| **yes** |"); p != std::string::npos; p = md.find("| **yes** |", p + 1)) ++marked;
+    for (std::size_t p = md.find("| **yes** |"); p != std::string::npos;
+         p = md.find("| **yes** |", p + 1))
+        ++marked;
     EXPECT_EQ(marked, paretoFront(rows).size());
     EXPECT_EQ(marked, 7u);
     EXPECT_NE(md.find("| **yes** | **linear+spec 800x600 d8** |"), std::string::npos);
-    EXPECT_NE(md.find("|  | spec+naive 800x600 d8 |"), std::string::npos);  // 30 ms, beaten by 18.5 ms
+    EXPECT_NE(md.find("|  | spec+naive 800x600 d8 |"),
+              std::string::npos);  // 30 ms, beaten by 18.5 ms
 }
 
 TEST(BenchMarkdown, EscapesTableBreakers) {
@@ -272,7 +284,8 @@ TEST(BenchPlot, IsAReadablePng) {
 
     // Written atomically; gnuplot's private folder is gone.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir / "out"), fs::directory_iterator()), 1);
-    for (const auto& e : fs::directory_iterator(dir.path())) EXPECT_EQ(e.path().filename(), "out") << e.path();
+    for (const auto& e : fs::directory_iterator(dir.path()))
+        EXPECT_EQ(e.path().filename(), "out") << e.path();
 }
 
 TEST(BenchPlot, OneRowAndOnlyExactRowsStillPlot) {
@@ -285,7 +298,9 @@ TEST(BenchPlot, OneRowAndOnlyExactRowsStillPlot) {
 
 TEST(BenchPlot, NothingToPlotIsAnError) {
     ScratchDir dir;
-    const std::string e = errorOf([&] { writeBenchPlot({row("lite", NAN, 0.1), row("lite", 0, 0.1)}, dir / "x.png"); });
+    const std::string e = errorOf([&] {
+        writeBenchPlot({row("lite", NAN, 0.1), row("lite", 0, 0.1)}, dir / "x.png");
+    });
     EXPECT_NE(e.find("no row has a measured frame time and RMSE"), std::string::npos) << e;
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
@@ -293,8 +308,10 @@ TEST(BenchPlot, NothingToPlotIsAnError) {
 TEST(BenchPlot, MissingGnuplotIsNamed) {
     ScratchDir dir;
     const fs::path png = dir / "bench.png";
-    EXPECT_EQ(errorOf([&] { writeBenchPlot(sampleRows(), png, "t", "raylab-no-such-gnuplot"); }), kGnuplotMissing);
-    EXPECT_EQ(errorOf([&] { writeBenchPlot(sampleRows(), png, "t", (dir / "gnuplot").string()); }), kGnuplotMissing);
+    EXPECT_EQ(errorOf([&] { writeBenchPlot(sampleRows(), png, "t", "raylab-no-such-gnuplot"); }),
+              kGnuplotMissing);
+    EXPECT_EQ(errorOf([&] { writeBenchPlot(sampleRows(), png, "t", (dir / "gnuplot").string()); }),
+              kGnuplotMissing);
     {
         ScopedEnv path("PATH", "");
         EXPECT_EQ(errorOf([&] { writeBenchPlot(sampleRows(), png); }), kGnuplotMissing);
@@ -322,7 +339,8 @@ TEST(BenchFiles, WritesCsvMarkdownAndPlot) {
     const std::vector<BenchRow> rows = sampleRows();
     writeBenchFiles(rows, out, "Bench", "raylab bench --out runs/today");
     EXPECT_EQ(readFile(out / "bench.csv"), benchCsv(rows));
-    EXPECT_EQ(readFile(out / "bench.md"), benchMarkdown(rows, "Bench", "raylab bench --out runs/today", "bench.png"));
+    EXPECT_EQ(readFile(out / "bench.md"),
+              benchMarkdown(rows, "Bench", "raylab bench --out runs/today", "bench.png"));
     EXPECT_EQ(loadPng(out / "bench.png").width, 1280);
     EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 3);
 }

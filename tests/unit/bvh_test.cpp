@@ -35,7 +35,7 @@ void walk(const Bvh& bvh, const std::function<void(const BvhNode&, int)>& fn) {
     go(0, 1);
 }
 
-} // namespace
+}  // namespace
 
 TEST(Bvh, EverySphereSitsInExactlyOneLeaf) {
     Scene scene = proScene();
@@ -47,7 +47,8 @@ TEST(Bvh, EverySphereSitsInExactlyOneLeaf) {
     std::vector<int> expected = sphereIndices(scene);
     std::sort(seen.begin(), seen.end());
     std::sort(expected.begin(), expected.end());
-    EXPECT_EQ(seen, expected) << "leaves hold " << seen.size() << " items, the scene has " << expected.size() << " spheres";
+    EXPECT_EQ(seen, expected) << "leaves hold " << seen.size() << " items, the scene has "
+                              << expected.size() << " spheres";
 }
 
 TEST(Bvh, EveryBoxHoldsItsChildrenAndObjects) {
@@ -60,7 +61,8 @@ TEST(Bvh, EveryBoxHoldsItsChildrenAndObjects) {
                 if (!n.box.contains(bvh.nodes[std::size_t(n.first + c)].box)) ++failures;
         } else {
             for (int k = 0; k < n.count; ++k)
-                if (!n.box.contains(sphereBounds(scene, bvh.items[std::size_t(n.first + k)]))) ++failures;
+                if (!n.box.contains(sphereBounds(scene, bvh.items[std::size_t(n.first + k)])))
+                    ++failures;
         }
     });
     EXPECT_EQ(failures, 0) << "boxes that do not hold what is under them";

@@ -1,8 +1,8 @@
 // The camera maths: basis, pitch clamping, and the ray through a pixel centre.
 #include "camera.h"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/epsilon.hpp>
+#include <gtest/gtest.h>
 
 using raylab::Camera;
 using raylab::CameraPose;
@@ -10,10 +10,10 @@ using raylab::CameraPose;
 namespace {
 void expectNear(glm::vec3 actual, glm::vec3 expected, const char* what) {
     EXPECT_TRUE(glm::all(glm::epsilonEqual(actual, expected, 1e-5f)))
-        << what << ": expected (" << expected.x << ", " << expected.y << ", " << expected.z << "), actual (" << actual.x << ", "
-        << actual.y << ", " << actual.z << ")";
+        << what << ": expected (" << expected.x << ", " << expected.y << ", " << expected.z
+        << "), actual (" << actual.x << ", " << actual.y << ", " << actual.z << ")";
 }
-} // namespace
+}  // namespace
 
 TEST(Camera, DefaultLooksDownNegativeZWithYUp) {
     Camera cam(CameraPose{}, 40.0f);
@@ -42,7 +42,8 @@ TEST(Camera, PitchIsClampedSoTheViewNeverFlips) {
     cam.turn(0.0f, 500.0f);
     EXPECT_FLOAT_EQ(cam.pose().pitchDeg, Camera::kMaxPitchDeg);
     EXPECT_GT(cam.up().y, 0.0f);
-    EXPECT_FALSE(glm::any(glm::isnan(cam.right()))) << "right must stay defined looking (almost) straight up";
+    EXPECT_FALSE(glm::any(glm::isnan(cam.right())))
+        << "right must stay defined looking (almost) straight up";
     cam.turn(0.0f, -1000.0f);
     EXPECT_FLOAT_EQ(cam.pose().pitchDeg, -Camera::kMaxPitchDeg);
     Camera constructed(CameraPose{{0, 0, 0}, 0.0f, 120.0f}, 40.0f);
@@ -57,7 +58,8 @@ TEST(Camera, FocalLengthGivesTheFieldOfView) {
 
 TEST(Camera, RayThroughCentrePixelIsTheViewDirection) {
     Camera cam(CameraPose{{0, 1, 5}, 30.0f, -10.0f}, 40.0f);
-    glm::vec3 d = cam.rayDirection(50, 25, 101, 51);  // odd sizes: pixel (50, 25) is the exact centre
+    glm::vec3 d =
+        cam.rayDirection(50, 25, 101, 51);  // odd sizes: pixel (50, 25) is the exact centre
     expectNear(glm::normalize(d), cam.forward(), "centre ray");
 }
 

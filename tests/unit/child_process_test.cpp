@@ -20,7 +20,7 @@ ChildOutcome runToEnd(const std::string& script, const fs::path& log, double tim
     return child.wait();
 }
 
-} // namespace
+}  // namespace
 
 TEST(ChildProcess, ExitCodeAndOutputGoToTheLog) {
     ScratchDir dir;
@@ -43,13 +43,16 @@ TEST(ChildProcess, ATimeoutKillsTheWholeProcessGroup) {
     ScratchDir dir;
     auto start = std::chrono::steady_clock::now();
     // The grandchild writes a file after 2 s unless it is killed with its parent.
-    ChildOutcome o = runToEnd("(sleep 2; touch '" + (dir / "survived").string() + "') & sleep 30", dir / "log.txt", 0.5);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ChildOutcome o = runToEnd("(sleep 2; touch '" + (dir / "survived").string() + "') & sleep 30",
+                              dir / "log.txt", 0.5);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_TRUE(o.timedOut);
     EXPECT_LT(seconds, 5.0);
     EXPECT_NE(o.describe().find("timed out"), std::string::npos);
     std::this_thread::sleep_for(std::chrono::milliseconds(2500));
-    EXPECT_FALSE(fs::exists(dir / "survived")) << "a process the child started outlived the timeout";
+    EXPECT_FALSE(fs::exists(dir / "survived"))
+        << "a process the child started outlived the timeout";
 }
 
 TEST(ChildProcess, TheMemoryLimitApplies) {

@@ -11,7 +11,8 @@ TEST(CliParse, Size) {
     EXPECT_EQ(s.width, 800);
     EXPECT_EQ(s.height, 600);
     EXPECT_EQ(parseSize("1X1").width, 1);
-    for (const char* bad : {"", "800", "800x", "x600", "0x600", "800x0", "-1x5", "800x600x3", "99999x10", "8193x8193", "abcxdef", "1e3x2"})
+    for (const char* bad : {"", "800", "800x", "x600", "0x600", "800x0", "-1x5", "800x600x3",
+                            "99999x10", "8193x8193", "abcxdef", "1e3x2"})
         EXPECT_THROW(parseSize(bad), Error) << "'" << bad << "' should be rejected";
 }
 
@@ -22,6 +23,7 @@ TEST(CliParse, Camera) {
     EXPECT_FLOAT_EQ(p.position.z, -3.0f);
     EXPECT_FLOAT_EQ(p.yawDeg, 90.0f);
     EXPECT_FLOAT_EQ(p.pitchDeg, -10.0f);
-    for (const char* bad : {"", "1,2,3,4", "1,2,3,4,5,6", "1,2,3,4,", "a,2,3,4,5", "1,,3,4,5", "1,2,3,4,95", "nan,0,0,0,0", "inf,0,0,0,0", "1e9,0,0,0,0"})
+    for (const char* bad : {"", "1,2,3,4", "1,2,3,4,5,6", "1,2,3,4,", "a,2,3,4,5", "1,,3,4,5",
+                            "1,2,3,4,95", "nan,0,0,0,0", "inf,0,0,0,0", "1e9,0,0,0,0"})
         EXPECT_THROW(parseCamera(bad), Error) << "'" << bad << "' should be rejected";
 }

@@ -22,11 +22,13 @@ namespace {
 
 const std::string kQuoted = "Doe, \"Jo\"";
 const std::string kHostile = "<script>x</script>";
-const std::string kLog = "04-recursion/trace.glsl:12: error: 'depth' : undeclared identifier\n"
-                         "04-recursion/trace.glsl:13: error: '<' : wrong operand types (vec3 & float)\n"
-                         "\x01 2 compilation errors";
+const std::string kLog =
+    "04-recursion/trace.glsl:12: error: 'depth' : undeclared identifier\n"
+    "04-recursion/trace.glsl:13: error: '<' : wrong operand types (vec3 & float)\n"
+    "\x01 2 compilation errors";
 
-CheckResult check(const std::string& name, const std::string& kind, double score, double maxScore, const std::string& output) {
+CheckResult check(const std::string& name, const std::string& kind, double score, double maxScore,
+                  const std::string& output) {
     CheckResult c;
     c.name = name;
     c.kind = kind;
@@ -37,7 +39,8 @@ CheckResult check(const std::string& name, const std::string& kind, double score
     return c;
 }
 
-StageResult stage(const std::string& id, const std::string& status, double score, std::vector<CheckResult> checks = {}) {
+StageResult stage(const std::string& id, const std::string& status, double score,
+                  std::vector<CheckResult> checks = {}) {
     StageResult s;
     s.stage = id;
     s.status = status;
@@ -65,8 +68,9 @@ ClassResult sampleClass() {
     front.diffImage = "students/0/01-raycast/front-diff.png";
     CheckResult side = check("side", "image", 10, 40, "no image written");
     side.referenceImage = "reference/01-raycast/side.png";
-    a.stages.push_back(stage("01-raycast", "graded", 70,
-                             {front, side, check("intersectSphere", "function", 20, 20, "12/12 rays agree")}));
+    a.stages.push_back(
+        stage("01-raycast", "graded", 70,
+              {front, side, check("intersectSphere", "function", 20, 20, "12/12 rays agree")}));
     StageResult broken = stage("04-recursion", "compile error", 0);
     broken.message = kLog;
     a.stages.push_back(broken);
@@ -74,21 +78,24 @@ ClassResult sampleClass() {
     StudentResult b;
     b.name = kHostile;
     b.stages.push_back(stage("01-raycast", "not submitted", 0));
-    b.stages.push_back(stage("04-recursion", "graded", 83.3333,
-                             {check("reflect", "image", 33.3333, 50, "3.1% of pixels differ (max 255/255)"),
-                              check("bounce", "function", 50, 50, "ok")}));
+    b.stages.push_back(
+        stage("04-recursion", "graded", 83.3333,
+              {check("reflect", "image", 33.3333, 50, "3.1% of pixels differ (max 255/255)"),
+               check("bounce", "function", 50, 50, "ok")}));
     r.students = {a, b};
     return r;
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
     return n;
 }
 
 std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return s;
 }
 
@@ -99,18 +106,22 @@ void expectEscapedMarkup(const std::string& text) {
         if (text[i] == '<') {
             ASSERT_LT(i + 1, text.size());
             char n = text[i + 1];
-            EXPECT_TRUE(std::isalpha(static_cast<unsigned char>(n)) || n == '/' || n == '?' || n == '!') << "raw '<' at " << text.substr(i, 40);
+            EXPECT_TRUE(std::isalpha(static_cast<unsigned char>(n)) || n == '/' || n == '?' ||
+                        n == '!')
+                << "raw '<' at " << text.substr(i, 40);
         } else if (text[i] == '&') {
             std::size_t semi = text.find(';', i);
             ASSERT_NE(semi, std::string::npos) << text.substr(i, 40);
             std::string entity = text.substr(i + 1, semi - i - 1);
-            bool known = entity == "amp" || entity == "lt" || entity == "gt" || entity == "quot" || entity == "#39" || entity == "#10" ||
-                         entity == "#13" || entity == "#9" || entity == "ndash" || entity == "ge" || entity == "#10003" ||
+            bool known = entity == "amp" || entity == "lt" || entity == "gt" || entity == "quot" ||
+                         entity == "#39" || entity == "#10" || entity == "#13" || entity == "#9" ||
+                         entity == "ndash" || entity == "ge" || entity == "#10003" ||
                          entity == "#10007" || entity == "#8593";
             EXPECT_TRUE(known) << "raw '&' at " << text.substr(i, 40);
         } else {
             unsigned char c = static_cast<unsigned char>(text[i]);
-            EXPECT_FALSE(c < 0x20 && c != '\n' && c != '\r' && c != '\t') << "control character " << int(c) << " at " << i;
+            EXPECT_FALSE(c < 0x20 && c != '\n' && c != '\r' && c != '\t')
+                << "control character " << int(c) << " at " << i;
         }
     }
 }
@@ -121,7 +132,7 @@ std::set<std::string> entries(const fs::path& dir) {
     return names;
 }
 
-} // namespace
+}  // namespace
 
 TEST(GradeResult, StudentScoresSumOverStages) {
     ClassResult r = sampleClass();
@@ -140,7 +151,8 @@ TEST(GradeReport, GradescopeJsonHasOneTestPerCheckAndPerUngradedStage) {
         ASSERT_TRUE(j.contains("tests"));
         for (const auto& t : j["tests"]) {
             maxScoreSum += t["max_score"].get<double>();
-            for (const char* key : {"name", "score", "max_score", "output", "status"}) EXPECT_TRUE(t.contains(key)) << key << " in " << t;
+            for (const char* key : {"name", "score", "max_score", "output", "status"})
+                EXPECT_TRUE(t.contains(key)) << key << " in " << t;
             EXPECT_TRUE(t["status"] == "passed" || t["status"] == "failed") << t;
         }
         EXPECT_TRUE(j["output"].is_string());
@@ -191,10 +203,9 @@ TEST(GradeReport, WriteGradescopeResultsWritesTheJson) {
 
 TEST(GradeReport, SummaryCsvHasHeaderNumbersNotesAndRfc4180Quoting) {
     std::string csv = summaryCsv(sampleClass());
-    EXPECT_EQ(csv,
-              "student,01-raycast,04-recursion,total,max,notes\r\n"
-              "\"Doe, \"\"Jo\"\"\",70,0,70,200,04-recursion: compile error\r\n"
-              "<script>x</script>,0,83.33,83.33,200,01-raycast: not submitted\r\n");
+    EXPECT_EQ(csv, "student,01-raycast,04-recursion,total,max,notes\r\n"
+                   "\"Doe, \"\"Jo\"\"\",70,0,70,200,04-recursion: compile error\r\n"
+                   "<script>x</script>,0,83.33,83.33,200,01-raycast: not submitted\r\n");
 }
 
 TEST(GradeReport, SummaryCsvDefusesFormulasAndMarksMissingStages) {
@@ -202,28 +213,44 @@ TEST(GradeReport, SummaryCsvDefusesFormulasAndMarksMissingStages) {
     r.students[1].name = "=HYPERLINK(\"http://x\",\"y\")";
     r.students[1].stages.pop_back();  // no result for 04-recursion
     std::string csv = summaryCsv(r);
-    EXPECT_NE(csv.find("\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\",0,,0,100,01-raycast: not submitted; 04-recursion: no result\r\n"),
+    EXPECT_NE(csv.find("\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\",0,,0,100,01-raycast: not "
+                       "submitted; 04-recursion: no result\r\n"),
               std::string::npos)
         << csv;
 }
 
 TEST(GradeReport, JunitXmlCountsFailuresAndErrors) {
     std::string xml = junitXml(sampleClass());
-    EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"raylab grade\" tests=\"7\" failures=\"3\" errors=\"1\"", 0),
+    EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"raylab "
+                        "grade\" tests=\"7\" failures=\"3\" errors=\"1\"",
+                        0),
               0u)
         << xml;
     EXPECT_EQ(count(xml, "<testsuite "), 2u);
     EXPECT_EQ(count(xml, "<testcase "), 7u);
     EXPECT_EQ(count(xml, "<failure "), 3u);  // side, not submitted, reflect
     EXPECT_EQ(count(xml, "<error "), 1u);    // compile error
-    EXPECT_NE(xml.find("<testsuite name=\"Doe, &quot;Jo&quot;\" tests=\"4\" failures=\"1\" errors=\"1\""), std::string::npos) << xml;
-    EXPECT_NE(xml.find("<testsuite name=\"&lt;script&gt;x&lt;/script&gt;\" tests=\"3\" failures=\"2\" errors=\"0\""), std::string::npos) << xml;
-    EXPECT_NE(xml.find("<testcase classname=\"Doe, &quot;Jo&quot;.01-raycast\" name=\"front\"/>"), std::string::npos) << xml;
-    EXPECT_NE(xml.find("<failure message=\"not submitted\" type=\"not submitted\">"), std::string::npos) << xml;
-    EXPECT_NE(xml.find("<error message=\"compile error: 04-recursion/trace.glsl:12: error: &#39;depth&#39; : undeclared identifier\""),
+    EXPECT_NE(
+        xml.find("<testsuite name=\"Doe, &quot;Jo&quot;\" tests=\"4\" failures=\"1\" errors=\"1\""),
+        std::string::npos)
+        << xml;
+    EXPECT_NE(xml.find("<testsuite name=\"&lt;script&gt;x&lt;/script&gt;\" tests=\"3\" "
+                       "failures=\"2\" errors=\"0\""),
               std::string::npos)
         << xml;
-    EXPECT_NE(xml.find("error: &#39;&lt;&#39; : wrong operand types (vec3 &amp; float)\n"), std::string::npos) << xml;
+    EXPECT_NE(xml.find("<testcase classname=\"Doe, &quot;Jo&quot;.01-raycast\" name=\"front\"/>"),
+              std::string::npos)
+        << xml;
+    EXPECT_NE(xml.find("<failure message=\"not submitted\" type=\"not submitted\">"),
+              std::string::npos)
+        << xml;
+    EXPECT_NE(xml.find("<error message=\"compile error: 04-recursion/trace.glsl:12: error: "
+                       "&#39;depth&#39; : undeclared identifier\""),
+              std::string::npos)
+        << xml;
+    EXPECT_NE(xml.find("error: &#39;&lt;&#39; : wrong operand types (vec3 &amp; float)\n"),
+              std::string::npos)
+        << xml;
     EXPECT_EQ(xml.find("<script"), std::string::npos);
     expectEscapedMarkup(xml);
 }
@@ -235,8 +262,10 @@ TEST(GradeReport, HtmlReportEscapesStudentTextAndShowsImages) {
     EXPECT_EQ(lower(html).find("<script"), std::string::npos);
     EXPECT_NE(html.find("Doe, &quot;Jo&quot;"), std::string::npos);
     // The compile log, escaped, lines kept, in a <pre>.
-    EXPECT_NE(html.find("<pre class=\"log\">04-recursion/trace.glsl:12: error: &#39;depth&#39; : undeclared identifier\n"
-                        "04-recursion/trace.glsl:13: error: &#39;&lt;&#39; : wrong operand types (vec3 &amp; float)\n"),
+    EXPECT_NE(html.find("<pre class=\"log\">04-recursion/trace.glsl:12: error: &#39;depth&#39; : "
+                        "undeclared identifier\n"
+                        "04-recursion/trace.glsl:13: error: &#39;&lt;&#39; : wrong operand types "
+                        "(vec3 &amp; float)\n"),
               std::string::npos);
     // Image check: the three pictures where available, "no image" where not.
     EXPECT_NE(html.find("<img src=\"students/0/01-raycast/front.png\""), std::string::npos);
@@ -284,7 +313,8 @@ TEST(GradeReport, SameInputGivesByteIdenticalOutput) {
         EXPECT_FALSE(one.empty()) << file;
         EXPECT_EQ(one, readFile(dir / "two" / file)) << file;
     }
-    EXPECT_EQ(entries(dir / "one"), (std::set<std::string>{"report.html", "summary.csv", "junit.xml", "results.json"}));
+    EXPECT_EQ(entries(dir / "one"),
+              (std::set<std::string>{"report.html", "summary.csv", "junit.xml", "results.json"}));
 }
 
 TEST(AtomicFile, ReplacesAnExistingFileAndLeavesNoTemporaryFile) {
@@ -314,7 +344,8 @@ TEST(AtomicFile, MissingFolderThrowsAndWritesNothing) {
 
 TEST(AtomicFile, FailedRenameRemovesTheTemporaryFile) {
     ScratchDir dir;
-    fs::create_directories(dir / "taken" / "inside");  // a non-empty folder cannot be replaced by a file
+    fs::create_directories(dir / "taken" /
+                           "inside");  // a non-empty folder cannot be replaced by a file
     EXPECT_THROW(writeTextFileAtomic(dir / "taken", "text"), Error);
     EXPECT_EQ(entries(dir.path()), std::set<std::string>{"taken"});
     EXPECT_TRUE(fs::is_directory(dir / "taken" / "inside"));

@@ -21,7 +21,7 @@ Image disc(int w, int h, float cx, float cy, float r, std::uint8_t red) {
     return img;
 }
 const CompareTolerance kTol;
-} // namespace
+}  // namespace
 
 TEST(ImageCompare, IdenticalImagesAgree) {
     Image a = disc(64, 48, 30, 20, 10, 200);
@@ -32,12 +32,15 @@ TEST(ImageCompare, IdenticalImagesAgree) {
 }
 
 TEST(ImageCompare, OnePixelEdgeShiftIsNotADifference) {
-    ImageDiff d = compareImages(disc(64, 48, 30, 20, 10, 200), disc(64, 48, 31, 20, 10, 200), kTol.channel);
+    ImageDiff d =
+        compareImages(disc(64, 48, 30, 20, 10, 200), disc(64, 48, 31, 20, 10, 200), kTol.channel);
     EXPECT_EQ(d.badPixels, 0) << describe(d);
 }
 
 TEST(ImageCompare, SmallColourNoiseWithinToleranceAgrees) {
-    ImageDiff d = compareImages(disc(64, 48, 30, 20, 10, 200), disc(64, 48, 30, 20, 10, std::uint8_t(200 - kTol.channel)), kTol.channel);
+    ImageDiff d =
+        compareImages(disc(64, 48, 30, 20, 10, 200),
+                      disc(64, 48, 30, 20, 10, std::uint8_t(200 - kTol.channel)), kTol.channel);
     EXPECT_TRUE(imagesAgree(d, kTol)) << describe(d);
 }
 

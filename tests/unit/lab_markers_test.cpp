@@ -7,28 +7,29 @@
 using namespace raylab;
 
 namespace {
-const std::string kMarked =
-    "float f()\n"
-    "{\n"
-    "    // TODO(1.a): compute f\n"
-    "    //     (a second line of explanation)\n"
-    "    //@solution\n"
-    "    return 42.0;\n"
-    "    //@stub\n"
-    "    //@ labTodo();\n"
-    "    //@ return 0.0;\n"
-    "    //@end\n"
-    "}\n";
+const std::string kMarked = "float f()\n"
+                            "{\n"
+                            "    // TODO(1.a): compute f\n"
+                            "    //     (a second line of explanation)\n"
+                            "    //@solution\n"
+                            "    return 42.0;\n"
+                            "    //@stub\n"
+                            "    //@ labTodo();\n"
+                            "    //@ return 0.0;\n"
+                            "    //@end\n"
+                            "}\n";
 }
 
 TEST(LabMarkers, LabFormKeepsTheTodoAndPutsTheStubInPlaceOfTheSolution) {
-    EXPECT_EQ(transformMarkedSource(kMarked, MarkedForm::Lab, "f.glsl"),
-              "float f()\n{\n    // TODO(1.a): compute f\n    //     (a second line of explanation)\n"
-              "    labTodo();\n    return 0.0;\n}\n");
+    EXPECT_EQ(
+        transformMarkedSource(kMarked, MarkedForm::Lab, "f.glsl"),
+        "float f()\n{\n    // TODO(1.a): compute f\n    //     (a second line of explanation)\n"
+        "    labTodo();\n    return 0.0;\n}\n");
 }
 
 TEST(LabMarkers, SolvedFormKeepsOnlyTheSolution) {
-    EXPECT_EQ(transformMarkedSource(kMarked, MarkedForm::Solved, "f.glsl"), "float f()\n{\n    return 42.0;\n}\n");
+    EXPECT_EQ(transformMarkedSource(kMarked, MarkedForm::Solved, "f.glsl"),
+              "float f()\n{\n    return 42.0;\n}\n");
 }
 
 TEST(LabMarkers, TextWithoutMarkersIsUnchanged) {
@@ -41,7 +42,8 @@ TEST(LabMarkers, MalformedRegionsAreErrorsWithFileAndLine) {
     const std::pair<std::string, std::string> cases[] = {
         {"int x;\n//@solution\nx;\n//@stub\n//@end\n", "f.glsl:2: //@solution needs"},
         {"// TODO(1): t\n//@solution\nx;\n//@stub\n//@ y;\n", "f.glsl:2: region not closed"},
-        {"// TODO(1): t\n//@solution\nx;\n//@stub\ny;\n//@end\n", "f.glsl:5: stub lines must start"},
+        {"// TODO(1): t\n//@solution\nx;\n//@stub\ny;\n//@end\n",
+         "f.glsl:5: stub lines must start"},
         {"int x;\n//@end\n", "f.glsl:2: marker '//@end' outside"},
         {"// TODO(1): t\n//@solution\nx;\n//@end\n", "f.glsl:4: expected //@stub"},
     };
@@ -50,7 +52,8 @@ TEST(LabMarkers, MalformedRegionsAreErrorsWithFileAndLine) {
             transformMarkedSource(text, MarkedForm::Lab, "f.glsl");
             ADD_FAILURE() << "no error for:\n" << text;
         } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << "expected '" << expected << "', got '" << e.what() << "'";
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos)
+                << "expected '" << expected << "', got '" << e.what() << "'";
         }
     }
 }

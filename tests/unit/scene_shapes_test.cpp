@@ -4,8 +4,8 @@
 #include "scene.h"
 #include "test_support.h"
 
-#include <gtest/gtest.h>
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 using namespace raylab;
 using raylab::test::ScratchDir;
@@ -42,11 +42,14 @@ glm::vec3 normalOf(const Triangle& t) {
     return glm::normalize(glm::cross(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0]));
 }
 
-} // namespace
+}  // namespace
 
 TEST(SceneShapes, PlanesAndDiscsHaveUnitNormals) {
     ScratchDir dir;
-    Scene s = load(dir, sceneWith(R"("planes": [{"point": [0, -1, 0], "normal": [0, 2, 0], "material": "m", "tile_size": 3}],
+    Scene s = load(
+        dir,
+        sceneWith(
+            R"("planes": [{"point": [0, -1, 0], "normal": [0, 2, 0], "material": "m", "tile_size": 3}],
                                     "discs": [{"center": [1, 2, 3], "normal": [0, 0, -5], "radius": 0.5, "material": "m"}])"));
     ASSERT_EQ(s.planes.size(), 1u);
     EXPECT_FLOAT_EQ(s.planes[0].normal.y, 1.0f);
@@ -57,14 +60,21 @@ TEST(SceneShapes, PlanesAndDiscsHaveUnitNormals) {
 
 TEST(SceneShapes, ARectangleIsTwoTrianglesFacingCrossOfItsEdges) {
     ScratchDir dir;
-    Scene s = load(dir, sceneWith(R"("rectangles": [{"corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 3, 0], "material": "m"}])"));
+    Scene s = load(
+        dir,
+        sceneWith(
+            R"("rectangles": [{"corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 3, 0], "material": "m"}])"));
     ASSERT_EQ(s.triangles.size(), 2u);
-    for (const Triangle& t : s.triangles) EXPECT_NEAR(normalOf(t).z, 1.0f, 1e-6f);  // cross(x, y) = +z
+    for (const Triangle& t : s.triangles)
+        EXPECT_NEAR(normalOf(t).z, 1.0f, 1e-6f);  // cross(x, y) = +z
 }
 
 TEST(SceneShapes, ABoxIsTwelveTrianglesAllFacingOutward) {
     ScratchDir dir;
-    Scene s = load(dir, sceneWith(R"("boxes": [{"center": [1, 2, 3], "size": [2, 4, 6], "rotation_y": 30, "material": "m"}])"));
+    Scene s = load(
+        dir,
+        sceneWith(
+            R"("boxes": [{"center": [1, 2, 3], "size": [2, 4, 6], "rotation_y": 30, "material": "m"}])"));
     ASSERT_EQ(s.triangles.size(), 12u);
     const glm::vec3 center(1, 2, 3);
     for (const Triangle& t : s.triangles) {
@@ -75,7 +85,10 @@ TEST(SceneShapes, ABoxIsTwelveTrianglesAllFacingOutward) {
 
 TEST(SceneShapes, ATorusSpinsItsAxisAboutTheSpinAxis) {
     ScratchDir dir;
-    Scene s = load(dir, sceneWith(R"("tori": [{"center": [0, 0, 0], "axis": [1, 0, 0], "major_radius": 1, "minor_radius": 0.3,
+    Scene s = load(
+        dir,
+        sceneWith(
+            R"("tori": [{"center": [0, 0, 0], "axis": [1, 0, 0], "major_radius": 1, "minor_radius": 0.3,
                                                "material": "m", "spin": {"axis": [0, 1, 0], "period": 4}}])"));
     ASSERT_EQ(s.tori.size(), 1u);
     glm::vec3 quarter = s.tori[0].axisAt(1.0f);  // a quarter turn about +y takes +x to -z
@@ -86,9 +99,11 @@ TEST(SceneShapes, ATorusSpinsItsAxisAboutTheSpinAxis) {
 
 TEST(SceneShapes, TexturesAreLayersSharedBetweenMaterials) {
     ScratchDir dir;
-    writeFile(dir / "a.png", "not really a png: only its existence is checked when the scene loads");
+    writeFile(dir / "a.png",
+              "not really a png: only its existence is checked when the scene loads");
     writeFile(dir / "b.png", "x");
-    Scene s = load(dir, R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
+    Scene s = load(
+        dir, R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
         "materials": {
           "one": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "texture": "a.png", "normal_map": "b.png"},
           "two": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "texture": "a.png"}},
@@ -100,24 +115,54 @@ TEST(SceneShapes, TexturesAreLayersSharedBetweenMaterials) {
 }
 
 TEST(SceneShapes, BadShapesAndMissingFilesAreOneLineErrorsThatSayWhere) {
-    EXPECT_NE(errorFor(sceneWith(R"("planes": [{"point": [0, 0, 0], "normal": [0, 0, 0], "material": "m"}])"))
-                  .find("planes[0].normal: expected a direction"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("discs": [{"center": [0, 0, 0], "normal": [0, 1, 0], "radius": -1, "material": "m"}])"))
-                  .find("discs[0].radius: expected a positive number"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "material": "m"}])"))
-                  .find("triangles[0]: degenerate"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1]], "material": "m"}])"))
-                  .find("triangles[0].vertices: expected three"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("boxes": [{"center": [0, 0, 0], "size": [1, 0, 1], "material": "m"}])"))
-                  .find("boxes[0].size: every side must be positive"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 2, "material": "m"}])"))
-                  .find("tori[0]: minor_radius must be smaller"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("planes": {"point": [0, 0, 0]})")).find("planes: expected a list"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("sky_box": ["a.png"])")).find("sky_box: expected six image files"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("sky_box": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"])"))
-                  .find("sky_box[0]: file"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("glow": {"sphere": 7})")).find("glow.sphere: expected the index of a sphere"), std::string::npos);
-    std::string missing = errorFor(R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
+    EXPECT_NE(
+        errorFor(
+            sceneWith(R"("planes": [{"point": [0, 0, 0], "normal": [0, 0, 0], "material": "m"}])"))
+            .find("planes[0].normal: expected a direction"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(
+                R"("discs": [{"center": [0, 0, 0], "normal": [0, 1, 0], "radius": -1, "material": "m"}])"))
+            .find("discs[0].radius: expected a positive number"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(
+                R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "material": "m"}])"))
+            .find("triangles[0]: degenerate"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1]], "material": "m"}])"))
+            .find("triangles[0].vertices: expected three"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(R"("boxes": [{"center": [0, 0, 0], "size": [1, 0, 1], "material": "m"}])"))
+            .find("boxes[0].size: every side must be positive"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(
+                R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 2, "material": "m"}])"))
+            .find("tori[0]: minor_radius must be smaller"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(sceneWith(R"("planes": {"point": [0, 0, 0]})")).find("planes: expected a list"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(sceneWith(R"("sky_box": ["a.png"])")).find("sky_box: expected six image files"),
+        std::string::npos);
+    EXPECT_NE(
+        errorFor(sceneWith(R"("sky_box": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"])"))
+            .find("sky_box[0]: file"),
+        std::string::npos);
+    EXPECT_NE(errorFor(sceneWith(R"("glow": {"sphere": 7})"))
+                  .find("glow.sphere: expected the index of a sphere"),
+              std::string::npos);
+    std::string missing = errorFor(
+        R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
         "materials": {"earth": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "texture": "nowhere.png"}},
         "spheres": []})");
     EXPECT_NE(missing.find("materials.earth.texture: file"), std::string::npos) << missing;
@@ -125,13 +170,19 @@ TEST(SceneShapes, BadShapesAndMissingFilesAreOneLineErrorsThatSayWhere) {
 }
 
 TEST(SceneShapes, UnknownKeysAndTexturesWhereTheyCannotGoAreErrors) {
-    EXPECT_NE(errorFor(sceneWith(R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "m", "tile_szie": 2}])"))
-                  .find("planes[0].tile_szie: unknown key"), std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("glwo": {"sphere": 0})")).find("glwo: unknown key"), std::string::npos);
+    EXPECT_NE(
+        errorFor(
+            sceneWith(
+                R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "m", "tile_szie": 2}])"))
+            .find("planes[0].tile_szie: unknown key"),
+        std::string::npos);
+    EXPECT_NE(errorFor(sceneWith(R"("glwo": {"sphere": 0})")).find("glwo: unknown key"),
+              std::string::npos);
     EXPECT_EQ(errorFor(sceneWith(R"("comment": "comments are fine anywhere")")), "(no error)");
     ScratchDir dir;
     writeFile(dir / "n.png", "x");
-    const std::string bumpy = R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
+    const std::string bumpy =
+        R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
         "materials": {"bumpy": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "normal_map": "n.png",
                                 "texture": "n.png"}},
         "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "bumpy"}], )";
@@ -139,14 +190,19 @@ TEST(SceneShapes, UnknownKeysAndTexturesWhereTheyCannotGoAreErrors) {
         writeFile(dir / "scene.json", text);
         try {
             loadScene(dir / "scene.json");
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
+        } catch (const Error& e) { return std::string(e.what()); }
         return std::string("(no error)");
     };
-    EXPECT_NE(errorIn(bumpy + R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "bumpy"}]})")
-                  .find("planes[0].material: material \"bumpy\" has a normal map, but only spheres take normal maps"),
-              std::string::npos);
-    EXPECT_NE(errorIn(bumpy + R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 0.2, "material": "bumpy"}]})")
-                  .find("tori have no texture coordinates"), std::string::npos);
+    EXPECT_NE(
+        errorIn(bumpy +
+                R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "bumpy"}]})")
+            .find("planes[0].material: material \"bumpy\" has a normal map, but only spheres take "
+                  "normal maps"),
+        std::string::npos);
+    EXPECT_NE(
+        errorIn(
+            bumpy +
+            R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 0.2, "material": "bumpy"}]})")
+            .find("tori have no texture coordinates"),
+        std::string::npos);
 }

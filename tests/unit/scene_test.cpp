@@ -41,7 +41,7 @@ std::string replaced(const std::string& from, const std::string& to) {
     s.replace(s.find(from), from.size(), to);
     return s;
 }
-} // namespace
+}  // namespace
 
 TEST(Scene, LoadsAGoodFile) {
     ScratchDir dir;
@@ -51,7 +51,8 @@ TEST(Scene, LoadsAGoodFile) {
     EXPECT_FLOAT_EQ(s.spheres[1].radius, 0.5f);
     EXPECT_FLOAT_EQ(s.fovYDeg, 50.0f);
     EXPECT_FLOAT_EQ(s.camera.yawDeg, 10.0f);
-    EXPECT_NEAR(s.spheres[1].motion.offsetAt(1.0f).y, 2.0f, 1e-5f);  // a quarter period: full amplitude
+    EXPECT_NEAR(s.spheres[1].motion.offsetAt(1.0f).y, 2.0f,
+                1e-5f);  // a quarter period: full amplitude
 }
 
 TEST(Scene, TheShippedScenesLoad) {
@@ -62,20 +63,34 @@ TEST(Scene, TheShippedScenesLoad) {
 }
 
 TEST(Scene, BadFilesGiveOneLineErrorsThatSayWhere) {
-    EXPECT_NE(errorFor("{ \"background\": [0, 0, 0],\n  oops }").find("scene.json: line 2, column 3: JSON syntax error"), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"radius\": 0.5", "\"radius\": -0.5")).find("spheres[1].radius: expected a positive number"), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"color\": [1, 0, 0]", "\"color\": [1, 0]")).find("spheres[0].color: expected [x, y, z]"), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"color\": [1, 0, 0]", "\"color\": [3, 0, 0]")).find("spheres[0].color: colour components"), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"yaw\": 10,", "")).find("camera: missing \"yaw\""), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"center\": [0, 1, 0]", "\"center\": [0, \"1\", 0]")).find("spheres[0].center[1]: expected a number"), std::string::npos);
-    EXPECT_NE(errorFor(replaced("\"period\": 4", "\"period\": 0")).find("spheres[1].motion.period"), std::string::npos);
+    EXPECT_NE(errorFor("{ \"background\": [0, 0, 0],\n  oops }")
+                  .find("scene.json: line 2, column 3: JSON syntax error"),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"radius\": 0.5", "\"radius\": -0.5"))
+                  .find("spheres[1].radius: expected a positive number"),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"color\": [1, 0, 0]", "\"color\": [1, 0]"))
+                  .find("spheres[0].color: expected [x, y, z]"),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"color\": [1, 0, 0]", "\"color\": [3, 0, 0]"))
+                  .find("spheres[0].color: colour components"),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"yaw\": 10,", "")).find("camera: missing \"yaw\""),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"center\": [0, 1, 0]", "\"center\": [0, \"1\", 0]"))
+                  .find("spheres[0].center[1]: expected a number"),
+              std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"period\": 4", "\"period\": 0")).find("spheres[1].motion.period"),
+              std::string::npos);
     EXPECT_NE(errorFor("[]").find("expected an object"), std::string::npos);
 }
 
 // Found by tests/fuzz/fuzz_scene: the JSON library throws out_of_range, not
 // parse_error, for a number beyond a double; it must still be an Error.
 TEST(Scene, HugeNumberIsAnErrorNotACrash) {
-    EXPECT_NE(errorFor(replaced("\"yaw\": 10", "\"yaw\": 1e500")).find("scene.json: JSON number out of range"), std::string::npos);
+    EXPECT_NE(errorFor(replaced("\"yaw\": 10", "\"yaw\": 1e500"))
+                  .find("scene.json: JSON number out of range"),
+              std::string::npos);
     EXPECT_NE(errorFor("[-1e99999]").find("JSON number out of range"), std::string::npos);
 }
 
@@ -97,15 +112,18 @@ TEST(Scene, MaterialsAreATableAndSpheresNameTheirEntry) {
     Scene s = loadScene(dir / "scene.json");
     ASSERT_EQ(s.lights.size(), 2u);
     EXPECT_FLOAT_EQ(s.lights[1].color.r, 0.5f);
-    ASSERT_EQ(s.materials.size(), 3u) << "two named materials plus one for the flat-coloured sphere";
+    ASSERT_EQ(s.materials.size(), 3u)
+        << "two named materials plus one for the flat-coloured sphere";
     EXPECT_EQ(s.materials[std::size_t(s.spheres[0].material)].name, "matte");
     EXPECT_EQ(s.materials[std::size_t(s.spheres[1].material)].name, "shiny");
     EXPECT_FLOAT_EQ(s.materials[std::size_t(s.spheres[1].material)].shininess, 80.0f);
-    EXPECT_FLOAT_EQ(s.materials[std::size_t(s.spheres[2].material)].diffuse.b, 1.0f) << "a flat colour is a diffuse colour";
+    EXPECT_FLOAT_EQ(s.materials[std::size_t(s.spheres[2].material)].diffuse.b, 1.0f)
+        << "a flat colour is a diffuse colour";
 }
 
 TEST(Scene, UnknownOrMalformedMaterialsAreErrors) {
-    const std::string base = R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+    const std::string base =
+        R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
       "materials": {"m": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 30}},
       "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "m"}]})";
     auto with = [&](const std::string& from, const std::string& to) {
@@ -113,16 +131,27 @@ TEST(Scene, UnknownOrMalformedMaterialsAreErrors) {
         t.replace(t.find(from), from.size(), to);
         return t;
     };
-    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": \"gold\"")).find("spheres[0].material: unknown material \"gold\""), std::string::npos);
-    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": 3")).find("spheres[0].material: expected the name"), std::string::npos);
-    EXPECT_NE(errorFor(with("\"shininess\": 30", "\"shininess\": 0")).find("materials.m.shininess: expected a positive number"), std::string::npos);
-    EXPECT_NE(errorFor(with("\"specular\": [0, 0, 0], ", "")).find("materials.m: missing \"specular\""), std::string::npos);
-    EXPECT_NE(errorFor(with("\"spheres\"", "\"lights\": [{\"position\": [0, 0]}], \"spheres\"")).find("lights[0].position: expected [x, y, z]"), std::string::npos);
+    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": \"gold\""))
+                  .find("spheres[0].material: unknown material \"gold\""),
+              std::string::npos);
+    EXPECT_NE(errorFor(with("\"material\": \"m\"", "\"material\": 3"))
+                  .find("spheres[0].material: expected the name"),
+              std::string::npos);
+    EXPECT_NE(errorFor(with("\"shininess\": 30", "\"shininess\": 0"))
+                  .find("materials.m.shininess: expected a positive number"),
+              std::string::npos);
+    EXPECT_NE(
+        errorFor(with("\"specular\": [0, 0, 0], ", "")).find("materials.m: missing \"specular\""),
+        std::string::npos);
+    EXPECT_NE(errorFor(with("\"spheres\"", "\"lights\": [{\"position\": [0, 0]}], \"spheres\""))
+                  .find("lights[0].position: expected [x, y, z]"),
+              std::string::npos);
 }
 
 TEST(Scene, MaterialTypesForReflectionAndRefraction) {
     ScratchDir dir;
-    writeFile(dir / "scene.json", R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+    writeFile(dir / "scene.json",
+              R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
       "materials": {
         "glass": {"type": "glass", "ior": 1.5, "ambient": [0, 0, 0], "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 100},
         "gold": {"type": "metal", "n": [0.143, 0.375, 1.442], "k": [3.983, 2.386, 1.603], "ambient": [0, 0, 0], "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 50},
@@ -131,14 +160,18 @@ TEST(Scene, MaterialTypesForReflectionAndRefraction) {
       "spheres": []})");
     Scene s = loadScene(dir / "scene.json");
     ASSERT_EQ(s.materials.size(), 3u);
-    auto byName = [&](const std::string& n) { return *std::find_if(s.materials.begin(), s.materials.end(), [&](const Material& m) { return m.name == n; }); };
+    auto byName = [&](const std::string& n) {
+        return *std::find_if(s.materials.begin(), s.materials.end(),
+                             [&](const Material& m) { return m.name == n; });
+    };
     EXPECT_EQ(byName("glass").type, Material::Type::Glass);
     EXPECT_FLOAT_EQ(byName("glass").ior, 1.5f);
     EXPECT_EQ(byName("gold").type, Material::Type::Metal);
     EXPECT_FLOAT_EQ(byName("gold").k.r, 3.983f);
     EXPECT_EQ(byName("plain").type, Material::Type::Plastic) << "plastic is the default";
 
-    const std::string bad = R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
+    const std::string bad =
+        R"({"background": [0, 0, 0], "camera": {"position": [0, 0, 5], "yaw": 0, "pitch": 0},
       "materials": {"m": {"type": "TYPE", "ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 30 EXTRA}},
       "spheres": []})";
     auto with = [&](const std::string& type, const std::string& extra) {
@@ -147,12 +180,14 @@ TEST(Scene, MaterialTypesForReflectionAndRefraction) {
         t.replace(t.find("EXTRA"), 5, extra);
         return t;
     };
-    EXPECT_NE(errorFor(with("wood", "")).find("materials.m.type: unknown type \"wood\""), std::string::npos);
+    EXPECT_NE(errorFor(with("wood", "")).find("materials.m.type: unknown type \"wood\""),
+              std::string::npos);
     EXPECT_NE(errorFor(with("glass", "")).find("materials.m: missing \"ior\""), std::string::npos);
-    EXPECT_NE(errorFor(with("glass", ", \"ior\": 0.5")).find("index of refraction must lie in [1, 4]"), std::string::npos);
-    EXPECT_NE(errorFor(with("metal", ", \"n\": [1, 1, 1]")).find("materials.m: missing \"k\""), std::string::npos);
+    EXPECT_NE(
+        errorFor(with("glass", ", \"ior\": 0.5")).find("index of refraction must lie in [1, 4]"),
+        std::string::npos);
+    EXPECT_NE(errorFor(with("metal", ", \"n\": [1, 1, 1]")).find("materials.m: missing \"k\""),
+              std::string::npos);
 }
 
-TEST(Scene, MissingFileIsAnError) {
-    EXPECT_THROW(loadScene("/nonexistent/scene.json"), Error);
-}
+TEST(Scene, MissingFileIsAnError) { EXPECT_THROW(loadScene("/nonexistent/scene.json"), Error); }

@@ -29,7 +29,8 @@ TEST(SettingsKeys, DepthStaysBetweenOneAndEight) {
 TEST(SettingsKeys, UpAndDownCycleTheSeedsColourModesInOrder) {
     RenderSettings s;
     for (const char* expected : {"BRB", "BRR", "RBB", "GGR", "RGB"})
-        EXPECT_EQ(applySettingsKey(s, SDLK_UP).value_or(""), std::string("colour mode ") + expected);
+        EXPECT_EQ(applySettingsKey(s, SDLK_UP).value_or(""),
+                  std::string("colour mode ") + expected);
     EXPECT_EQ(applySettingsKey(s, SDLK_DOWN).value_or(""), "colour mode GGR");
     EXPECT_EQ(s.colorMode, 4);
 }

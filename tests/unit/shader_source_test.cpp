@@ -27,19 +27,21 @@ int lineOf(const ShaderSource& s, const std::string& needle) {
 struct Tree {
     ScratchDir dir;
     Tree() {
-        writeFile(dir / "stage/main.frag", "// main\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() { int m; }\n");
+        writeFile(dir / "stage/main.frag",
+                  "// main\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() { int m; }\n");
         writeFile(dir / "stage/a.glsl", "#include \"b.glsl\"\nint a;\n");
         writeFile(dir / "shared/b.glsl", "// b line 1\nint b;  // b line 2\n");
     }
     std::vector<fs::path> search() const { return {dir / "stage", dir / "shared"}; }
 };
 
-} // namespace
+}  // namespace
 
 TEST(ShaderSource, VersionAndDefinesComeFirst) {
     Tree t;
     ShaderSource s = assembleShader("main.frag", t.search(), {"MAX_SPHERES 16", "SHADOWS"});
-    EXPECT_EQ(s.text.rfind("#version 330 core\n#define MAX_SPHERES 16\n#define SHADOWS\n", 0), 0u) << s.text;
+    EXPECT_EQ(s.text.rfind("#version 330 core\n#define MAX_SPHERES 16\n#define SHADOWS\n", 0), 0u)
+        << s.text;
 }
 
 TEST(ShaderSource, IncludesAreResolvedOnceThroughTheSearchPath) {
@@ -80,7 +82,9 @@ TEST(ShaderSource, MissingIncludeNamesTheIncludingFileAndLine) {
         FAIL() << "expected an error";
     } catch (const Error& e) {
         std::string msg = e.what();
-        EXPECT_NE(msg.find("stage/a.glsl:2: cannot find shader file \"nope.glsl\""), std::string::npos) << msg;
+        EXPECT_NE(msg.find("stage/a.glsl:2: cannot find shader file \"nope.glsl\""),
+                  std::string::npos)
+            << msg;
     }
 }
 
@@ -96,26 +100,27 @@ TEST(ShaderSource, MapsMesaNvidiaAndGlslangLogs) {
     Tree t;
     ShaderSource s = assembleShader("main.frag", t.search(), {});
     int n = lineOf(s, "int b;");
-    std::string log = "0:" + std::to_string(n) + "(5): error: syntax error\n" +           // Mesa
-                      "0(" + std::to_string(n) + ") : error C0000: syntax error\n" +        // NVIDIA
-                      "ERROR: 0:" + std::to_string(n) + ": 'x' : undeclared identifier\n" +  // glslang
+    std::string log = "0:" + std::to_string(n) + "(5): error: syntax error\n" +       // Mesa
+                      "0(" + std::to_string(n) + ") : error C0000: syntax error\n" +  // NVIDIA
+                      "ERROR: 0:" + std::to_string(n) +
+                      ": 'x' : undeclared identifier\n" +  // glslang
                       "something else\n";
     std::string mapped = mapCompilerLog(log, s);
     std::string file = s.where(n).file;
     EXPECT_NE(mapped.find(file + ":2:5: error: syntax error"), std::string::npos) << mapped;
     EXPECT_NE(mapped.find(file + ":2: error C0000: syntax error"), std::string::npos) << mapped;
-    EXPECT_NE(mapped.find(file + ":2: error: 'x' : undeclared identifier"), std::string::npos) << mapped;
+    EXPECT_NE(mapped.find(file + ":2: error: 'x' : undeclared identifier"), std::string::npos)
+        << mapped;
     EXPECT_NE(mapped.find("something else"), std::string::npos) << mapped;
 }
 
 TEST(ShaderSource, FindsOpenTodosOutsideComments) {
     ScratchDir dir;
-    writeFile(dir / "s/main.frag",
-              "// TODO(9.a): do the thing\n"
-              "//     more words\n"
-              "labTodo();\n"
-              "// labTodo(); in a comment does not count\n"
-              "    x = 1; // TODO(9.b): done already, no stub call\n");
+    writeFile(dir / "s/main.frag", "// TODO(9.a): do the thing\n"
+                                   "//     more words\n"
+                                   "labTodo();\n"
+                                   "// labTodo(); in a comment does not count\n"
+                                   "    x = 1; // TODO(9.b): done already, no stub call\n");
     ShaderSource s = assembleShader("main.frag", {dir / "s"}, {});
     auto todos = findOpenTodos(s);
     ASSERT_EQ(todos.size(), 1u);
@@ -149,7 +154,10 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
     EXPECT_EQ(intOf("KIND_TORUS"), kTorus);
     EXPECT_EQ(intOf("OBJECT_KIND_STRIDE"), kObjectKindStride);
     // Generated lines, not the student's: errors never point into them.
-    const int line = int(std::count(s.text.begin(), s.text.begin() + long(s.text.find("const float T_MIN")), '\n')) + 1;
+    const int line =
+        int(std::count(s.text.begin(), s.text.begin() + long(s.text.find("const float T_MIN")),
+                       '\n')) +
+        1;
     EXPECT_EQ(s.where(line).file, "<raylab>");
 }
 
@@ -161,11 +169,11 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
 TEST(ShaderSource, VeryLongLinesDoNotOverflowTheStack) {
     const std::size_t n = 2000000;
     ScratchDir dir;
-    writeFile(dir / "s/main.frag", "#version 330 core // " + std::string(n, 'v') + "\n" +
-                                       "#include \"a.glsl\" // " + std::string(n, 'c') + "\n" +
-                                       std::string(n, ' ') + "#include \"b.glsl\"\n" +
-                                       "// TODO(9.a): " + std::string(n, 't') + "\n" +
-                                       "float x[] = float[](" + std::string(n, '1') + "); labTodo();\n");
+    writeFile(dir / "s/main.frag",
+              "#version 330 core // " + std::string(n, 'v') + "\n" + "#include \"a.glsl\" // " +
+                  std::string(n, 'c') + "\n" + std::string(n, ' ') + "#include \"b.glsl\"\n" +
+                  "// TODO(9.a): " + std::string(n, 't') + "\n" + "float x[] = float[](" +
+                  std::string(n, '1') + "); labTodo();\n");
     writeFile(dir / "s/a.glsl", "int a;\n");
     writeFile(dir / "s/b.glsl", "int b;\n");
     ShaderSource s = assembleShader("main.frag", {dir / "s"}, {});
@@ -185,6 +193,7 @@ TEST(ShaderSource, VeryLongLinesDoNotOverflowTheStack) {
 TEST(ShaderSource, HugeLineNumbersInALogAreKeptAsTheyAre) {
     Tree t;
     ShaderSource s = assembleShader("main.frag", t.search(), {});
-    std::string log = "0:99999999999(1): error: x\n0(99999999999) : error C0000: y\nERROR: 0:99999999999: z\n";
+    std::string log =
+        "0:99999999999(1): error: x\n0(99999999999) : error C0000: y\nERROR: 0:99999999999: z\n";
     EXPECT_EQ(mapCompilerLog(log, s), log);
 }

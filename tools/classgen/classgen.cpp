@@ -39,7 +39,8 @@ void apply(const fs::path& labRoot, const Change& c) {
     for (const auto& pair : c.replace) {
         const std::string from = pair[0], to = pair[1];
         auto at = text.find(from);
-        if (at == std::string::npos) throw Error(c.source + ": text not found in " + displayPath(file) + ": " + from);
+        if (at == std::string::npos)
+            throw Error(c.source + ": text not found in " + displayPath(file) + ": " + from);
         text.replace(at, from.size(), to);
     }
     std::ofstream(file) << text;
@@ -48,19 +49,24 @@ void apply(const fs::path& labRoot, const Change& c) {
 std::vector<std::pair<fs::path, json>> specs(const fs::path& dir) {
     std::vector<std::pair<fs::path, json>> out;
     for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.path().extension() == ".json") out.emplace_back(e.path(), json::parse(readTextFile(e.path())));
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        if (e.path().extension() == ".json")
+            out.emplace_back(e.path(), json::parse(readTextFile(e.path())));
+    std::sort(out.begin(), out.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     return out;
 }
 
 // The stages after the first N, in course order.
 std::vector<std::string> laterThan(const std::vector<std::string>& stages, std::size_t n) {
-    return stages.size() > n ? std::vector<std::string>(stages.begin() + long(n), stages.end()) : std::vector<std::string>{};
+    return stages.size() > n ? std::vector<std::string>(stages.begin() + long(n), stages.end())
+                             : std::vector<std::string>{};
 }
 
-void copyTree(const fs::path& from, const fs::path& to) { fs::copy(from, to, fs::copy_options::recursive); }
+void copyTree(const fs::path& from, const fs::path& to) {
+    fs::copy(from, to, fs::copy_options::recursive);
+}
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
     try {
@@ -72,9 +78,12 @@ int main(int argc, char** argv) {
         const fs::path solved = out / "solved";
         fs::remove_all(solved);
         // execv, not a shell: any folder name works.
-        Child labgen({(executablePath().parent_path() / "raylab-labgen").string(), "--solved", solved.string()}, out / "labgen.log",
-                     ChildLimits{600.0, 0});
-        if (labgen.wait().exitCode != 0) throw Error("raylab-labgen --solved failed (" + labgen.outcome().describe() + "); see " + (out / "labgen.log").string());
+        Child labgen({(executablePath().parent_path() / "raylab-labgen").string(), "--solved",
+                      solved.string()},
+                     out / "labgen.log", ChildLimits{600.0, 0});
+        if (labgen.wait().exitCode != 0)
+            throw Error("raylab-labgen --solved failed (" + labgen.outcome().describe() +
+                        "); see " + (out / "labgen.log").string());
         fs::remove(out / "labgen.log");
 
         std::vector<std::string> stages;
@@ -113,7 +122,8 @@ int main(int argc, char** argv) {
             solvedStudent(name);
             apply(subs / name, {spec["stage"], spec["file"], spec["replace"], displayPath(file)});
             std::string status = spec["expect_status"];
-            expected[name][spec["stage"].get<std::string>()] = status == "graded" ? "<100" : "status:" + status;
+            expected[name][spec["stage"].get<std::string>()] =
+                status == "graded" ? "<100" : "status:" + status;
         }
 
         // Mistakes: 16 students, each mistake once, never two in one stage of a student.
@@ -127,10 +137,15 @@ int main(int argc, char** argv) {
             Change c{spec["stage"], spec["file"], spec["replace"], displayPath(file)};
             std::size_t best = assigned.size();
             for (std::size_t k = 0; k < assigned.size(); ++k) {
-                bool stageFree = std::none_of(assigned[k].begin(), assigned[k].end(), [&](const Change& x) { return x.stage == c.stage; });
-                if (stageFree && (best == assigned.size() || assigned[k].size() < assigned[best].size())) best = k;
+                bool stageFree = std::none_of(assigned[k].begin(), assigned[k].end(),
+                                              [&](const Change& x) { return x.stage == c.stage; });
+                if (stageFree &&
+                    (best == assigned.size() || assigned[k].size() < assigned[best].size()))
+                    best = k;
             }
-            if (best == assigned.size()) throw Error("too many mistakes in stage " + c.stage + " for " + std::to_string(assigned.size()) + " students");
+            if (best == assigned.size())
+                throw Error("too many mistakes in stage " + c.stage + " for " +
+                            std::to_string(assigned.size()) + " students");
             assigned[best].push_back(c);
         }
         for (std::size_t k = 0; k < assigned.size(); ++k) {
@@ -145,8 +160,8 @@ int main(int argc, char** argv) {
         }
         fs::remove_all(solved);
         std::ofstream(out / "expected.json") << expected.dump(1) << "\n";
-        std::printf("raylab-classgen: %zu submissions in %s, expectations in %s\n", expected.size(), subs.c_str(),
-                    (out / "expected.json").c_str());
+        std::printf("raylab-classgen: %zu submissions in %s, expectations in %s\n", expected.size(),
+                    subs.c_str(), (out / "expected.json").c_str());
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "raylab-classgen: error: %s\n", e.what());

@@ -34,12 +34,14 @@ bool isShaderFile(const fs::path& p) {
 }
 
 // File name -> generated text for one stage.
-std::map<std::string, std::string> generateStage(const StageInfo& stage, MarkedForm formOfOwnFiles) {
+std::map<std::string, std::string> generateStage(const StageInfo& stage,
+                                                 MarkedForm formOfOwnFiles) {
     StageSources sources = solutionSources(stage);
     const fs::path own = projectRoot() / "solution" / stage.id;
     const fs::path framework = projectRoot() / "framework";
     std::map<std::string, std::string> files;
-    for (const std::string& entry : {stage.program.vertex, stage.program.geometry, stage.program.fragment}) {
+    for (const std::string& entry :
+         {stage.program.vertex, stage.program.geometry, stage.program.fragment}) {
         if (entry.empty()) continue;
         ShaderSource src = assembleShader(entry, sources.search, stage.defines());
         for (const fs::path& f : src.files) {
@@ -47,7 +49,8 @@ std::map<std::string, std::string> generateStage(const StageInfo& stage, MarkedF
             if (canonical.lexically_relative(framework).begin()->string() != "..") continue;
             bool isOwn = canonical.parent_path() == fs::weakly_canonical(own);
             MarkedForm form = isOwn ? formOfOwnFiles : MarkedForm::Solved;
-            files[f.filename().string()] = transformMarkedSource(readTextFile(f), form, displayPath(f));
+            files[f.filename().string()] =
+                transformMarkedSource(readTextFile(f), form, displayPath(f));
         }
     }
     return files;
@@ -70,16 +73,18 @@ std::string readIfExists(const fs::path& file) {
     return fs::is_regular_file(file, ec) ? readTextFile(file) : std::string("\x01missing");
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"Derives labs/ from solution/ (the //@solution ... //@end markers)."};
     bool check = false;
     std::string labsDir = (projectRoot() / "labs").string();
     std::string solvedDir;
-    app.add_flag("--check", check, "do not write; exit 1 when labs/ differs from what solution/ gives");
+    app.add_flag("--check", check,
+                 "do not write; exit 1 when labs/ differs from what solution/ gives");
     app.add_option("--labs", labsDir, "the labs folder to write or check")->capture_default_str();
-    app.add_option("--solved", solvedDir, "write a fully solved copy of the labs to this folder instead");
+    app.add_option("--solved", solvedDir,
+                   "write a fully solved copy of the labs to this folder instead");
     CLI11_PARSE(app, argc, argv);
 
     try {
@@ -93,11 +98,13 @@ int main(int argc, char** argv) {
             std::error_code ec;
             if (fs::is_directory(dir, ec))
                 for (const auto& e : fs::directory_iterator(dir))
-                    if (isShaderFile(e.path()) && !files.count(e.path().filename().string())) stale.insert(e.path().filename().string());
+                    if (isShaderFile(e.path()) && !files.count(e.path().filename().string()))
+                        stale.insert(e.path().filename().string());
             for (const auto& [name, text] : files) {
                 if (check) {
                     if (readIfExists(dir / name) != text) {
-                        std::printf("differs: %s (regenerate with raylab-labgen)\n", (dir / name).c_str());
+                        std::printf("differs: %s (regenerate with raylab-labgen)\n",
+                                    (dir / name).c_str());
                         ++drift;
                     }
                 } else {
@@ -115,7 +122,9 @@ int main(int argc, char** argv) {
             if (!check) std::printf("labgen: wrote %zu files to %s\n", files.size(), dir.c_str());
         }
         if (check) {
-            std::printf(drift ? "labgen: %d files drifted from solution/\n" : "labgen: labs/ matches solution/\n", drift);
+            std::printf(drift ? "labgen: %d files drifted from solution/\n"
+                              : "labgen: labs/ matches solution/\n",
+                        drift);
             return drift ? 1 : 0;
         }
     } catch (const std::exception& e) {

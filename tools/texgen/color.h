@@ -33,7 +33,9 @@ inline double smoothstep(double e0, double e1, double x) {
 }
 
 // Rounds to nearest so that 0.5 encodes as 128 (the normal maps' "flat").
-inline std::uint8_t toByte(double v) { return static_cast<std::uint8_t>(std::lround(clamp01(v) * 255.0)); }
+inline std::uint8_t toByte(double v) {
+    return static_cast<std::uint8_t>(std::lround(clamp01(v) * 255.0));
+}
 
 // Every texture is opaque: alpha is always 255.
 inline void setPixel(Image& image, int x, int y, Rgb c) {
@@ -44,4 +46,4 @@ inline void setPixel(Image& image, int x, int y, Rgb c) {
     p[3] = 255;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -19,4 +19,4 @@ Vec3 cubeFaceDirection(int face, int x, int y, int size) {
     return glm::normalize(d);
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

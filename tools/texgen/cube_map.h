@@ -24,4 +24,4 @@ constexpr std::array<const char*, 6> kCubeFaceNames = {"px", "nx", "py", "ny", "
 // Unit direction through the centre of pixel (x, y) of face FACE (0..5).
 Vec3 cubeFaceDirection(int face, int x, int y, int size);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]).empty() || argv[1][0] == '-') {
-        std::fprintf(stderr, "usage: raylab-texgen OUTDIR  (writes the textures of assets/textures/ into OUTDIR)\n");
+        std::fprintf(
+            stderr,
+            "usage: raylab-texgen OUTDIR  (writes the textures of assets/textures/ into OUTDIR)\n");
         return 2;
     }
     const fs::path outDir = argv[1];
@@ -25,7 +27,9 @@ int main(int argc, char** argv) {
         // Checked before the (slower) generation, so a bad OUTDIR fails fast.
         std::error_code ec;
         fs::create_directories(outDir, ec);
-        if (ec || !fs::is_directory(outDir)) throw Error("cannot write to " + outDir.string() + ": " + (ec ? ec.message() : "not a folder"));
+        if (ec || !fs::is_directory(outDir))
+            throw Error("cannot write to " + outDir.string() + ": " +
+                        (ec ? ec.message() : "not a folder"));
         for (const texgen::NamedImage& t : texgen::generateAllTextures()) {
             const fs::path file = outDir / t.fileName;
             writePngAtomic(t.image, file);

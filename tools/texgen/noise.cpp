@@ -18,18 +18,25 @@ namespace {
 // multipliers make (1, 2, 0) and (2, 1, 0) differ; the seed is mixed on its
 // own first, so that seeds s and s + 1 do not just shift the lattice.
 std::uint32_t latticeWord(int x, int y, int z, std::uint32_t mixedSeed) {
-    return static_cast<std::uint32_t>(x) * 0x8da6b343U + static_cast<std::uint32_t>(y) * 0xd8163841U +
+    return static_cast<std::uint32_t>(x) * 0x8da6b343U +
+           static_cast<std::uint32_t>(y) * 0xd8163841U +
            static_cast<std::uint32_t>(z) * 0xcb1ab31fU + mixedSeed;
 }
-} // namespace
+}  // namespace
 
-std::uint32_t hashCell(int x, int y, int z, std::uint32_t seed) { return hash32(latticeWord(x, y, z, hash32(seed))); }
+std::uint32_t hashCell(int x, int y, int z, std::uint32_t seed) {
+    return hash32(latticeWord(x, y, z, hash32(seed)));
+}
 
 double unitFloat(std::uint32_t h) { return static_cast<double>(h) / 4294967296.0; }
 
-double hashRandom(std::uint32_t h, int k) { return unitFloat(hash32(h ^ (0x9e3779b9U * static_cast<std::uint32_t>(k + 1)))); }
+double hashRandom(std::uint32_t h, int k) {
+    return unitFloat(hash32(h ^ (0x9e3779b9U * static_cast<std::uint32_t>(k + 1))));
+}
 
-double cellRandom(int x, int y, int z, std::uint32_t seed, int k) { return hashRandom(hashCell(x, y, z, seed), k); }
+double cellRandom(int x, int y, int z, std::uint32_t seed, int k) {
+    return hashRandom(hashCell(x, y, z, seed), k);
+}
 
 namespace {
 
@@ -58,24 +65,29 @@ double gradientDot(std::uint32_t h, double x, double y, double z) {
     return g[0] * x + g[1] * y + g[2] * z;
 }
 
-} // namespace
+}  // namespace
 
 double gradientNoise(const Vec3& p, std::uint32_t seed, Period period) {
     const double fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
     const int ix = static_cast<int>(fx), iy = static_cast<int>(fy), iz = static_cast<int>(fz);
     const double tx = p.x - fx, ty = p.y - fy, tz = p.z - fz;
-    const std::uint32_t mixedSeed = hash32(seed);  // once, not per corner: this loop is the hot spot
+    const std::uint32_t mixedSeed =
+        hash32(seed);  // once, not per corner: this loop is the hot spot
     double corner[2][2][2];
     for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx) {
-                std::uint32_t h = hash32(latticeWord(wrap(ix + dx, period.x), wrap(iy + dy, period.y), wrap(iz + dz, period.z), mixedSeed));
+                std::uint32_t h =
+                    hash32(latticeWord(wrap(ix + dx, period.x), wrap(iy + dy, period.y),
+                                       wrap(iz + dz, period.z), mixedSeed));
                 corner[dz][dy][dx] = gradientDot(h, tx - dx, ty - dy, tz - dz);
             }
     const double u = fade(tx), v = fade(ty), w = fade(tz);
     auto lerp = [](double a, double b, double t) { return a + (b - a) * t; };
-    double y0 = lerp(lerp(corner[0][0][0], corner[0][0][1], u), lerp(corner[0][1][0], corner[0][1][1], u), v);
-    double y1 = lerp(lerp(corner[1][0][0], corner[1][0][1], u), lerp(corner[1][1][0], corner[1][1][1], u), v);
+    double y0 = lerp(lerp(corner[0][0][0], corner[0][0][1], u),
+                     lerp(corner[0][1][0], corner[0][1][1], u), v);
+    double y1 = lerp(lerp(corner[1][0][0], corner[1][0][1], u),
+                     lerp(corner[1][1][0], corner[1][1][1], u), v);
     return lerp(y0, y1, w);
 }
 
@@ -85,7 +97,8 @@ double fbm(const Vec3& p, std::uint32_t seed, FbmShape shape) {
         // A different seed and offset per octave: otherwise every octave is
         // zero at the origin and the layers' features stack up there.
         const Vec3 shift(17.13 * i, -9.71 * i, 5.37 * i);
-        sum += amplitude * gradientNoise(p * frequency + shift, seed + static_cast<std::uint32_t>(i) * 101U);
+        sum += amplitude *
+               gradientNoise(p * frequency + shift, seed + static_cast<std::uint32_t>(i) * 101U);
         norm += amplitude;
         amplitude *= shape.gain;
         frequency *= shape.lacunarity;
@@ -97,7 +110,8 @@ double ridgedFbm(const Vec3& p, std::uint32_t seed, FbmShape shape) {
     double sum = 0, amplitude = 1, norm = 0, frequency = 1, weight = 1;
     for (int i = 0; i < shape.octaves; ++i) {
         const Vec3 shift(-3.31 * i, 11.7 * i, 7.9 * i);
-        double n = 1.0 - std::abs(gradientNoise(p * frequency + shift, seed + static_cast<std::uint32_t>(i) * 131U));
+        double n = 1.0 - std::abs(gradientNoise(p * frequency + shift,
+                                                seed + static_cast<std::uint32_t>(i) * 131U));
         n *= n;
         sum += amplitude * n * weight;
         norm += amplitude;
@@ -114,7 +128,8 @@ double tileableFbm(double u, double v, int base, std::uint32_t seed, int octaves
     for (int i = 0; i < octaves; ++i) {
         // z is fixed off the lattice (gradient noise is zero on whole-number planes).
         const Vec3 p(u * cells + 0.37 * i, v * cells + 0.61 * i, 0.5 + 0.23 * i);
-        sum += amplitude * gradientNoise(p, seed + static_cast<std::uint32_t>(i) * 101U, Period{cells, cells, 0});
+        sum += amplitude * gradientNoise(p, seed + static_cast<std::uint32_t>(i) * 101U,
+                                         Period{cells, cells, 0});
         norm += amplitude;
         amplitude *= gain;
         cells *= 2;
@@ -123,7 +138,8 @@ double tileableFbm(double u, double v, int base, std::uint32_t seed, int octaves
 }
 
 CellDistances cellular(const Vec3& p, std::uint32_t seed) {
-    const int ix = static_cast<int>(std::floor(p.x)), iy = static_cast<int>(std::floor(p.y)), iz = static_cast<int>(std::floor(p.z));
+    const int ix = static_cast<int>(std::floor(p.x)), iy = static_cast<int>(std::floor(p.y)),
+              iz = static_cast<int>(std::floor(p.z));
     CellDistances d{1e9, 1e9};
     // Each cell's point lies inside its cell, so the 3x3x3 block around P's
     // cell almost always holds the two nearest; the rare misses (a point two
@@ -146,4 +162,4 @@ CellDistances cellular(const Vec3& p, std::uint32_t seed) {
     return d;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -52,7 +52,8 @@ double ridgedFbm(const Vec3& p, std::uint32_t seed, FbmShape shape = {});
 // fBm that tiles over [0, 1) x [0, 1): (u, v) are scaled to BASE lattice cells
 // per tile and every octave doubles both the frequency and the period (the
 // lacunarity must be an integer for the tile to wrap).
-double tileableFbm(double u, double v, int base, std::uint32_t seed, int octaves, double gain = 0.5);
+double tileableFbm(double u, double v, int base, std::uint32_t seed, int octaves,
+                   double gain = 0.5);
 
 // Distances from P to the nearest and second nearest of a set of points, one
 // jittered point per lattice cell (Worley / cellular noise). F2 - F1 is small
@@ -62,4 +63,4 @@ struct CellDistances {
 };
 CellDistances cellular(const Vec3& p, std::uint32_t seed);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -38,15 +38,17 @@ Image sphereNormalMap(const HeightField& field, double exaggeration) {
         const double eastArc = dLon * std::max(std::cos(latitude), minCos);
         for (int x = 0; x < w; ++x) {
             const double dEast = (sample(x + 1, y) - sample(x - 1, y)) / (2.0 * eastArc);
-            const double dNorth = (sample(x, y - 1) - sample(x, y + 1)) / (2.0 * dLat);  // row y-1 is further north
+            const double dNorth =
+                (sample(x, y - 1) - sample(x, y + 1)) / (2.0 * dLat);  // row y-1 is further north
             // The surface r = 1 + h tilts against its slope: a height rising
             // eastward turns the normal toward the west.
             double nx = -exaggeration * dEast, ny = -exaggeration * dNorth, nz = 1.0;
             const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-            setPixel(out, x, y, Rgb{nx / len * 0.5 + 0.5, ny / len * 0.5 + 0.5, nz / len * 0.5 + 0.5});
+            setPixel(out, x, y,
+                     Rgb{nx / len * 0.5 + 0.5, ny / len * 0.5 + 0.5, nz / len * 0.5 + 0.5});
         }
     }
     return out;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -21,9 +21,12 @@ struct HeightField {
     int width = 0, height = 0;
     std::vector<double> h;
 
-    HeightField(int w, int hgt) : width(w), height(hgt), h(std::size_t(w) * std::size_t(hgt), 0.0) {}
+    HeightField(int w, int hgt)
+        : width(w), height(hgt), h(std::size_t(w) * std::size_t(hgt), 0.0) {}
     double& at(int x, int y) { return h[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    double at(int x, int y) const { return h[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    double at(int x, int y) const {
+        return h[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
 };
 
 // Slopes are measured on the unit sphere (height per radian of arc along the
@@ -32,4 +35,4 @@ struct HeightField {
 // the pole is half a turn away).
 Image sphereNormalMap(const HeightField& field, double exaggeration);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

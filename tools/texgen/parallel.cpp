@@ -10,7 +10,8 @@
 namespace raylab::texgen {
 
 void forEachRow(int rows, const std::function<void(int)>& row) {
-    const int threads = std::max(1, std::min(rows, static_cast<int>(std::thread::hardware_concurrency())));
+    const int threads =
+        std::max(1, std::min(rows, static_cast<int>(std::thread::hardware_concurrency())));
     // Rows are handed out one at a time: rows near the poles or a face's
     // corner cost more than others, so fixed blocks would leave cores idle.
     std::atomic<int> next{0};
@@ -32,4 +33,4 @@ void forEachRow(int rows, const std::function<void(int)>& row) {
     if (failure) std::rethrow_exception(failure);
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -10,4 +10,4 @@ namespace raylab::texgen {
 // Calls ROW(y) once for every y in [0, rows), spread over the hardware threads.
 void forEachRow(int rows, const std::function<void(int)>& row);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

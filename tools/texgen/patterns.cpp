@@ -1,8 +1,8 @@
 #include "patterns.h"
 
 #include "color.h"
-#include "parallel.h"
 #include "noise.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,8 @@ Image tiles(int size) {
     // the wrap.
     const int tilesPerSide = 4;
     const double tileSize = double(size) / tilesPerSide;
-    const Rgb lightStone = rgb255(206, 194, 170), darkStone = rgb255(74, 80, 84), mortar = rgb255(120, 114, 104);
+    const Rgb lightStone = rgb255(206, 194, 170), darkStone = rgb255(74, 80, 84),
+              mortar = rgb255(120, 114, 104);
     Image out(size, size);
     forEachRow(size, [&](int y) {
         for (int x = 0; x < size; ++x) {
@@ -44,7 +45,8 @@ Image tiles(int size) {
 Image marble(int size) {
     const std::uint32_t seed = 31337U;
     const double pi = 3.14159265358979323846;
-    const Rgb white = rgb255(238, 236, 230), cloudy = rgb255(206, 206, 208), vein = rgb255(84, 92, 96), halo = rgb255(176, 178, 180);
+    const Rgb white = rgb255(238, 236, 230), cloudy = rgb255(206, 206, 208),
+              vein = rgb255(84, 92, 96), halo = rgb255(176, 178, 180);
     Image out(size, size);
     forEachRow(size, [&](int y) {
         for (int x = 0; x < size; ++x) {
@@ -69,4 +71,4 @@ Image marble(int size) {
     return out;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -13,4 +13,4 @@ Image tiles(int size);
 // White marble with dark, turbulent veins.
 Image marble(int size);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

@@ -20,4 +20,4 @@ PlanetTextures moon(int width, int height);
 // Yellow-orange granulation; no normal map (the sun is drawn emissive).
 Image sun(int width, int height);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

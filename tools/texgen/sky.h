@@ -17,4 +17,4 @@ Rgb skyColor(const Vec3& d);
 // The six SIZE x SIZE faces, in GL_TEXTURE_CUBE_MAP_POSITIVE_X + i order.
 std::array<Image, 6> skyBox(int size);
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

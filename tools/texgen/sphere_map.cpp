@@ -18,4 +18,4 @@ SpherePoint equirectPoint(double px, double py, int width, int height) {
     return s;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

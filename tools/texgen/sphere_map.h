@@ -20,9 +20,9 @@ namespace raylab::texgen {
 
 struct SpherePoint {
     double latitude = 0, longitude = 0;  // radians
-    Vec3 normal;  // the unit direction, also the outward surface normal
-    Vec3 east;    // unit tangent toward +u
-    Vec3 north;   // unit tangent toward the top row; east x north = normal
+    Vec3 normal;                         // the unit direction, also the outward surface normal
+    Vec3 east;                           // unit tangent toward +u
+    Vec3 north;                          // unit tangent toward the top row; east x north = normal
 };
 
 // The point at image position (PX, PY), in pixels from the top-left corner of
@@ -30,6 +30,8 @@ struct SpherePoint {
 SpherePoint equirectPoint(double px, double py, int width, int height);
 
 // The centre of pixel (x, y).
-inline SpherePoint equirectPixel(int x, int y, int width, int height) { return equirectPoint(x + 0.5, y + 0.5, width, height); }
+inline SpherePoint equirectPixel(int x, int y, int width, int height) {
+    return equirectPoint(x + 0.5, y + 0.5, width, height);
+}
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

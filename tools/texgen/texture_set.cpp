@@ -21,10 +21,11 @@ std::vector<NamedImage> generateAllTextures() {
     all.push_back({"moon_normal.png", std::move(m.normal)});
     all.push_back({"sun.png", sun(256, 128)});
     std::array<Image, 6> sky = skyBox(256);
-    for (std::size_t i = 0; i < sky.size(); ++i) all.push_back({std::string("sky_") + kCubeFaceNames[i] + ".png", std::move(sky[i])});
+    for (std::size_t i = 0; i < sky.size(); ++i)
+        all.push_back({std::string("sky_") + kCubeFaceNames[i] + ".png", std::move(sky[i])});
     all.push_back({"tiles.png", tiles(256)});
     all.push_back({"marble.png", marble(256)});
     return all;
 }
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

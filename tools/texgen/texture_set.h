@@ -17,4 +17,4 @@ struct NamedImage {
 // Every texture of assets/textures/, computed in memory (deterministic).
 std::vector<NamedImage> generateAllTextures();
 
-} // namespace raylab::texgen
+}  // namespace raylab::texgen

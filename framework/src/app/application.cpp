@@ -19,20 +19,23 @@ bool canShowAWindow() {
     }
     return false;
 }
-} // namespace
+}  // namespace
 
 Application::Application(const Options& options) : options_(options) {
     if (!canShowAWindow())
-        throw Error("cannot open a window: no display (DISPLAY and WAYLAND_DISPLAY are unset); use `raylab render` or "
+        throw Error("cannot open a window: no display (DISPLAY and WAYLAND_DISPLAY are unset); use "
+                    "`raylab render` or "
                     "`raylab demo`, or run under xvfb-run");
     if (SDL_Init(SDL_INIT_VIDEO) != 0)
-        throw Error(std::string("cannot open a window (") + SDL_GetError() + "); without a display use `raylab render` or `raylab demo`");
+        throw Error(std::string("cannot open a window (") + SDL_GetError() +
+                    "); without a display use `raylab render` or `raylab demo`");
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
     SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
-    window_ = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width, options.height,
+    window_ = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED,
+                               SDL_WINDOWPOS_CENTERED, options.width, options.height,
                                SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!window_) {
         std::string why = SDL_GetError();
@@ -59,7 +62,8 @@ Application::~Application() {
 
 void Application::setVsync(bool on) {
     vsync_ = on;
-    if (SDL_GL_SetSwapInterval(on ? 1 : 0) != 0 && on) std::fprintf(stderr, "raylab: vsync is not available here\n");
+    if (SDL_GL_SetSwapInterval(on ? 1 : 0) != 0 && on)
+        std::fprintf(stderr, "raylab: vsync is not available here\n");
 }
 
 int Application::run() {
@@ -84,8 +88,9 @@ int Application::run() {
         double elapsed = double(now - fpsStart) / double(SDL_GetPerformanceFrequency());
         if (elapsed >= 0.5) {
             char title[512];
-            std::snprintf(title, sizeof title, "%s | %.0f FPS%s%s%s", options_.title.c_str(), fpsFrames / elapsed,
-                          vsync_ ? " (vsync)" : "", status_.empty() ? "" : " | ", status_.c_str());
+            std::snprintf(title, sizeof title, "%s | %.0f FPS%s%s%s", options_.title.c_str(),
+                          fpsFrames / elapsed, vsync_ ? " (vsync)" : "",
+                          status_.empty() ? "" : " | ", status_.c_str());
             SDL_SetWindowTitle(window_, title);
             fpsStart = now;
             fpsFrames = 0;
@@ -94,4 +99,4 @@ int Application::run() {
     return 0;
 }
 
-} // namespace raylab
+}  // namespace raylab

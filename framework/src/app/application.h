@@ -37,7 +37,9 @@ protected:
     void setVsync(bool on);
     // Text shown in the title after the frame rate (e.g. a shader error).
     void setStatus(const std::string& status) { status_ = status; }
-    void drawableSize(int* width, int* height) const { SDL_GL_GetDrawableSize(window_, width, height); }
+    void drawableSize(int* width, int* height) const {
+        SDL_GL_GetDrawableSize(window_, width, height);
+    }
 
 private:
     Options options_;
@@ -48,4 +50,4 @@ private:
     std::string status_;
 };
 
-} // namespace raylab
+}  // namespace raylab

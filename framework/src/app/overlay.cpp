@@ -14,20 +14,23 @@ namespace raylab {
 
 namespace {
 
-constexpr float kMargin = 10.0f;    // from the window's top-left corner, in window pixels
-constexpr float kBgAlpha = 0.6f;    // panel background opacity
+constexpr float kMargin = 10.0f;  // from the window's top-left corner, in window pixels
+constexpr float kBgAlpha = 0.6f;  // panel background opacity
 const ImVec4 kLabelColour(0.70f, 0.70f, 0.70f, 1.0f);
 
 // A display-only window: no title bar, no input, never focused, never saved.
-constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
-                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
-                                         ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings |
-                                         ImGuiWindowFlags_AlwaysAutoResize;
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
+    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings |
+    ImGuiWindowFlags_AlwaysAutoResize;
 
 // Makes the overlay's ImGui context current for one call and puts the previous one back.
 class UseContext {
 public:
-    explicit UseContext(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) { ImGui::SetCurrentContext(context); }
+    explicit UseContext(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
+        ImGui::SetCurrentContext(context);
+    }
     ~UseContext() { ImGui::SetCurrentContext(previous_); }
     UseContext(const UseContext&) = delete;
     UseContext& operator=(const UseContext&) = delete;
@@ -36,12 +39,15 @@ private:
     ImGuiContext* previous_;
 };
 
-} // namespace
+}  // namespace
 
 Overlay::Overlay(SDL_Window* window, SDL_GLContext context) {
-    if (!window || !context) throw Error("cannot start the overlay: no window or no OpenGL context");
-    if (SDL_GL_GetCurrentContext() != context) throw Error("cannot start the overlay: its OpenGL context is not current");
-    if (!IMGUI_CHECKVERSION()) throw Error("cannot start the overlay: the Dear ImGui headers and library disagree");
+    if (!window || !context)
+        throw Error("cannot start the overlay: no window or no OpenGL context");
+    if (SDL_GL_GetCurrentContext() != context)
+        throw Error("cannot start the overlay: its OpenGL context is not current");
+    if (!IMGUI_CHECKVERSION())
+        throw Error("cannot start the overlay: the Dear ImGui headers and library disagree");
 
     imgui_ = ImGui::CreateContext();
     UseContext use(imgui_);
@@ -66,7 +72,8 @@ Overlay::Overlay(SDL_Window* window, SDL_GLContext context) {
         if (sdlBackend_) ImGui_ImplSDL2_Shutdown();
         ImGui::DestroyContext(imgui_);
         imgui_ = nullptr;
-        throw Error("cannot start the overlay: Dear ImGui's " + which + " backend failed to initialise");
+        throw Error("cannot start the overlay: Dear ImGui's " + which +
+                    " backend failed to initialise");
     }
 }
 
@@ -82,18 +89,22 @@ Overlay::~Overlay() {
 
 void Overlay::processEvent(const SDL_Event& e) {
     UseContext use(imgui_);
-    ImGui_ImplSDL2_ProcessEvent(&e);  // only records input state; the event still goes to the application
+    ImGui_ImplSDL2_ProcessEvent(
+        &e);  // only records input state; the event still goes to the application
 }
 
-void Overlay::buildPanel(const std::string& title, const std::vector<std::pair<std::string, std::string>>& rows) {
+void Overlay::buildPanel(const std::string& title,
+                         const std::vector<std::pair<std::string, std::string>>& rows) {
     ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(kBgAlpha);
     if (ImGui::Begin("##raylab-overlay", nullptr, kPanelFlags)) {
         ImGui::TextUnformatted(title.c_str());
         if (!rows.empty()) ImGui::Separator();
         float labelWidth = 0.0f;
-        for (const auto& row : rows) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(row.first.c_str()).x);
-        const float valueX = ImGui::GetCursorPosX() + labelWidth + 2.0f * ImGui::GetStyle().ItemSpacing.x;
+        for (const auto& row : rows)
+            labelWidth = std::max(labelWidth, ImGui::CalcTextSize(row.first.c_str()).x);
+        const float valueX =
+            ImGui::GetCursorPosX() + labelWidth + 2.0f * ImGui::GetStyle().ItemSpacing.x;
         for (const auto& row : rows) {
             ImGui::PushStyleColor(ImGuiCol_Text, kLabelColour);
             ImGui::TextUnformatted(row.first.c_str());
@@ -105,7 +116,8 @@ void Overlay::buildPanel(const std::string& title, const std::vector<std::pair<s
     ImGui::End();
 }
 
-void Overlay::draw(const std::string& title, const std::vector<std::pair<std::string, std::string>>& rows) {
+void Overlay::draw(const std::string& title,
+                   const std::vector<std::pair<std::string, std::string>>& rows) {
     UseContext use(imgui_);
     // ImGui hides a new auto-sized window for one frame while it measures it;
     // the first call lays the panel out once without rendering, so that every
@@ -127,4 +139,4 @@ void Overlay::draw(const std::string& title, const std::vector<std::pair<std::st
     drawnBefore_ = true;
 }
 
-} // namespace raylab
+}  // namespace raylab

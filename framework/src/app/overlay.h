@@ -21,7 +21,9 @@ namespace raylab {
 
 class Overlay {
 public:
-    Overlay(SDL_Window* window, SDL_GLContext context);  // throws raylab::Error (framework/src/core/error.h) if ImGui can't initialise
+    Overlay(SDL_Window* window,
+            SDL_GLContext context);  // throws raylab::Error (framework/src/core/error.h) if ImGui
+                                     // can't initialise
     ~Overlay();
     Overlay(const Overlay&) = delete;
     Overlay& operator=(const Overlay&) = delete;
@@ -34,10 +36,12 @@ public:
     // that ImGui changes (program, VAO, textures, buffers, blend, scissor,
     // viewport, ...) is restored before it returns; the framebuffer binding is
     // left untouched.
-    void draw(const std::string& title, const std::vector<std::pair<std::string, std::string>>& rows);
+    void draw(const std::string& title,
+              const std::vector<std::pair<std::string, std::string>>& rows);
 
 private:
-    void buildPanel(const std::string& title, const std::vector<std::pair<std::string, std::string>>& rows);
+    void buildPanel(const std::string& title,
+                    const std::vector<std::pair<std::string, std::string>>& rows);
 
     ImGuiContext* imgui_ = nullptr;
     bool sdlBackend_ = false;
@@ -45,4 +49,4 @@ private:
     bool drawnBefore_ = false;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -17,4 +17,4 @@ const char* onOff(bool on);
 // ("glow off", "colour mode BRB"), or nothing when KEY is not a settings key.
 std::optional<std::string> applySettingsKey(RenderSettings& settings, SDL_Keycode key);
 
-} // namespace raylab
+}  // namespace raylab

@@ -8,7 +8,8 @@ namespace raylab {
 namespace {
 
 std::unique_ptr<TrackRenderer> rayTracer(const StageSetup& setup, int width, int height) {
-    return std::make_unique<StageRenderer>(*setup.stage, setup.sources, setup.scene, width, height, PixelFormat::Rgba8, "",
+    return std::make_unique<StageRenderer>(*setup.stage, setup.sources, setup.scene, width, height,
+                                           PixelFormat::Rgba8, "",
                                            ShaderVariant::fastestFor(setup.scene));
 }
 
@@ -20,12 +21,13 @@ constexpr Track kTracks[] = {
     {"raytrace", rayTracer},
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<TrackRenderer> makeTrackRenderer(const StageSetup& setup, int width, int height) {
     for (const Track& t : kTracks)
         if (setup.stage->track == t.name) return t.make(setup, width, height);
-    throw Error("stage " + setup.stage->id + ": no renderer for track '" + setup.stage->track + "'");
+    throw Error("stage " + setup.stage->id + ": no renderer for track '" + setup.stage->track +
+                "'");
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,4 +13,4 @@ namespace raylab {
 // a track that has no renderer.
 std::unique_ptr<TrackRenderer> makeTrackRenderer(const StageSetup& setup, int width, int height);
 
-} // namespace raylab
+}  // namespace raylab

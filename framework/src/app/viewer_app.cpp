@@ -12,14 +12,15 @@
 namespace raylab {
 
 namespace {
-constexpr float kMoveSpeed = 3.0f;        // units per second
-constexpr float kSlowFactor = 0.2f;       // while Left Shift is held
+constexpr float kMoveSpeed = 3.0f;   // units per second
+constexpr float kSlowFactor = 0.2f;  // while Left Shift is held
 constexpr float kMouseDegPerPixel = 0.2f;
 constexpr float kReloadPollSeconds = 0.3f;
-} // namespace
+}  // namespace
 
 ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync)
-    : Application(Options{"RayLab " + setup.stage->id + " (" + setup.sources.label + ")", setup.size.width, setup.size.height, vsync}),
+    : Application(Options{"RayLab " + setup.stage->id + " (" + setup.sources.label + ")",
+                          setup.size.width, setup.size.height, vsync}),
       setup_(std::move(setup)), automation_(std::move(automation)) {}
 
 void ViewerApp::init() {
@@ -100,7 +101,9 @@ void ViewerApp::onEvent(const SDL_Event& event) {
         if (event.button.button == SDL_BUTTON_LEFT) looking_ = false;
         break;
     case SDL_MOUSEMOTION:
-        if (looking_) setup_.camera.turn(float(event.motion.xrel) * kMouseDegPerPixel, -float(event.motion.yrel) * kMouseDegPerPixel);
+        if (looking_)
+            setup_.camera.turn(float(event.motion.xrel) * kMouseDegPerPixel,
+                               -float(event.motion.yrel) * kMouseDegPerPixel);
         break;
     case SDL_KEYDOWN:
         if (!event.key.repeat) onKey(event.key.keysym.sym);
@@ -135,9 +138,7 @@ void ViewerApp::onKey(SDL_Keycode key) {
         std::strftime(name, sizeof name, "raylab-%Y%m%d-%H%M%S.png", std::localtime(&now));
         try {
             screenshot(name);
-        } catch (const Error& e) {
-            std::fprintf(stderr, "raylab: error: %s\n", e.what());
-        }
+        } catch (const Error& e) { std::fprintf(stderr, "raylab: error: %s\n", e.what()); }
         break;
     }
     default: break;
@@ -149,7 +150,8 @@ void ViewerApp::onKey(SDL_Keycode key) {
 void ViewerApp::drawOverlay() {
     const RenderSettings& s = setup_.settings;
     char frame[64];
-    std::snprintf(frame, sizeof frame, "%.1f ms (%.0f FPS)", frameMs_, frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
+    std::snprintf(frame, sizeof frame, "%.1f ms (%.0f FPS)", frameMs_,
+                  frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
     overlay_->draw("RayLab " + setup_.stage->id + " - " + setup_.scene.file,
                    {{"frame", frame},
                     {"[1] shadows", onOff(s.shadows)},
@@ -162,4 +164,4 @@ void ViewerApp::drawOverlay() {
                     {"[H] hide this panel", ""}});
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -51,4 +51,4 @@ private:
     int frames_ = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

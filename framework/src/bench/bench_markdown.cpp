@@ -62,41 +62,50 @@ std::string mdSignificant(double x) {
 
 const char* yesNo(bool b) { return b ? "yes" : "no"; }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------- Markdown
 
-std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& title, const std::string& commandLine,
-                          const std::string& plotFile) {
+std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& title,
+                          const std::string& commandLine, const std::string& plotFile) {
     std::string out = "# " + mdText(title) + "\n\n";
     out += "Made by " + mdCode(commandLine) + "\n\n";
     if (rows.empty()) return out + "No rows were measured.\n";
-    if (!plotFile.empty()) out += "![frame time against RMSE, one colour per scene](" + plotFile + ")\n\n";
-    out += "Errors are against a double-precision reference: RMSE and max error in 1/255 steps of an 8-bit colour "
-           "(and RMSE as a number in 0..1), bad px = share of pixels that differ visibly. "
-           "**Pareto** rows: no other setting of the same scene is both faster and more accurate.\n";
+    if (!plotFile.empty())
+        out += "![frame time against RMSE, one colour per scene](" + plotFile + ")\n\n";
+    out +=
+        "Errors are against a double-precision reference: RMSE and max error in 1/255 steps of an "
+        "8-bit colour "
+        "(and RMSE as a number in 0..1), bad px = share of pixels that differ visibly. "
+        "**Pareto** rows: no other setting of the same scene is both faster and more accurate.\n";
 
     const std::vector<std::size_t> front = paretoFront(rows);
     for (auto [scene, indices] : byScene(rows)) {
         sortByFrameTime(indices, rows);
         out += "\n## " + mdText(scene) + "\n\n";
-        out += "| Pareto | Setting | Size | Depth | Shadows | Torus solver | BVH | Specialized | Numerics | Frame (ms) | "
-               "Compile (ms) | RMSE (1/255) | RMSE | PSNR (dB) | Max err (1/255) | Bad px | Depth err p99 (ulp) |\n";
-        out += "| :---: | --- | --- | ---: | --- | --- | --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+        out += "| Pareto | Setting | Size | Depth | Shadows | Torus solver | BVH | Specialized | "
+               "Numerics | Frame (ms) | "
+               "Compile (ms) | RMSE (1/255) | RMSE | PSNR (dB) | Max err (1/255) | Bad px | Depth "
+               "err p99 (ulp) |\n";
+        out += "| :---: | --- | --- | ---: | --- | --- | --- | --- | --- | ---: | ---: | ---: | "
+               "---: | ---: | ---: | ---: | ---: |\n";
         for (std::size_t i : indices) {
             const BenchRow& r = rows[i];
             const bool pareto = std::binary_search(front.begin(), front.end(), i);
             const std::string name = mdText(benchSettingName(r));
-            out += std::string("| ") + (pareto ? "**yes**" : "") + " | " + (pareto ? "**" + name + "**" : name) + " | " +
-                   std::to_string(r.width) + "x" + std::to_string(r.height) + " | " + std::to_string(r.depth) + " | " + yesNo(r.shadows) +
-                   " | " + mdText(r.torusSolver) + " | " + yesNo(r.bvh) + " | " + yesNo(r.specialized) + " | " + mdText(r.numerics) +
-                   " | " + mdNumber(r.frameMs, 1) + " | " + mdNumber(r.compileMs, 1) + " | " + mdNumber(r.rmse, 2, 255.0) + " | " +
-                   mdSignificant(r.rmse) + " | " + mdNumber(r.psnr, 1) + " | " + mdNumber(r.maxErr, 1, 255.0) + " | " +
-                   (std::isnan(r.badPxShare) ? "n/a" : mdNumber(r.badPxShare, 2, 100.0) + " %") + " | " + mdNumber(r.depthErrP99Ulp, 1) +
-                   " |\n";
+            out += std::string("| ") + (pareto ? "**yes**" : "") + " | " +
+                   (pareto ? "**" + name + "**" : name) + " | " + std::to_string(r.width) + "x" +
+                   std::to_string(r.height) + " | " + std::to_string(r.depth) + " | " +
+                   yesNo(r.shadows) + " | " + mdText(r.torusSolver) + " | " + yesNo(r.bvh) + " | " +
+                   yesNo(r.specialized) + " | " + mdText(r.numerics) + " | " +
+                   mdNumber(r.frameMs, 1) + " | " + mdNumber(r.compileMs, 1) + " | " +
+                   mdNumber(r.rmse, 2, 255.0) + " | " + mdSignificant(r.rmse) + " | " +
+                   mdNumber(r.psnr, 1) + " | " + mdNumber(r.maxErr, 1, 255.0) + " | " +
+                   (std::isnan(r.badPxShare) ? "n/a" : mdNumber(r.badPxShare, 2, 100.0) + " %") +
+                   " | " + mdNumber(r.depthErrP99Ulp, 1) + " |\n";
         }
     }
     return out;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -90,7 +90,9 @@ public:
         fs::path base = fs::temp_directory_path(ec);
         if (ec) base = "/tmp";
         std::string pattern = (base / "raylab-bench-XXXXXX").string();
-        if (!::mkdtemp(pattern.data())) throw Error("cannot create a temporary folder in " + base.string() + ": " + std::strerror(errno));
+        if (!::mkdtemp(pattern.data()))
+            throw Error("cannot create a temporary folder in " + base.string() + ": " +
+                        std::strerror(errno));
         path_ = pattern;
     }
     ~TempDir() {
@@ -150,22 +152,24 @@ std::string logTics(double lo, double hi) {
         if (tics.size() <= 12) break;
     }
     std::string out;
-    for (double t : tics) out += (out.empty() ? "(" : ", ") + gpString(tidy(t)) + " " + shortestExact(t);
+    for (double t : tics)
+        out += (out.empty() ? "(" : ", ") + gpString(tidy(t)) + " " + shortestExact(t);
     return out.empty() ? "" : out + ")";
 }
 
 // Data file text, "x<TAB>y" or "x<TAB>y<TAB>label" lines, for one scene.
 struct PlotSeries {
-    std::string points;            // all its plotted rows
-    std::string front;             // its Pareto rows by frame time
-    std::string labels[2];         // point labels drawn above / below their point
+    std::string points;     // all its plotted rows
+    std::string front;      // its Pareto rows by frame time
+    std::string labels[2];  // point labels drawn above / below their point
 };
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------- plot
 
-void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, const std::string& title, const std::string& gnuplot) {
+void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath,
+                    const std::string& title, const std::string& gnuplot) {
     const std::string what = "cannot plot " + displayPath(pngPath) + ": ";
 
     // Log axes cannot show a 0 ms frame or a NaN; RMSE 0 (exact) gets a floor
@@ -182,7 +186,8 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, 
         else anyExact = true;
     }
     if (maxMs == 0) throw Error(what + "no row has a measured frame time and RMSE");
-    const double floorRmse = std::isfinite(minRmse) ? std::pow(10.0, std::floor(std::log10(minRmse)) - 1) : 1e-6;
+    const double floorRmse =
+        std::isfinite(minRmse) ? std::pow(10.0, std::floor(std::log10(minRmse)) - 1) : 1e-6;
     const double lowY = anyExact ? floorRmse : minRmse;
     const double highY = std::max(maxRmse, lowY);
 
@@ -197,7 +202,9 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, 
     // plot simply has no plot element (gnuplot fails on empty files).
     std::string plot;
     bool frontTitled = false;
-    auto add = [&](const std::string& element) { plot += (plot.empty() ? "plot " : ", \\\n     ") + element; };
+    auto add = [&](const std::string& element) {
+        plot += (plot.empty() ? "plot " : ", \\\n     ") + element;
+    };
     std::vector<std::string> pointElements, labelElements, ringElements;
     for (std::size_t s = 0; s < groups.size(); ++s) {
         std::vector<std::size_t> indices = groups[s].second;
@@ -213,29 +220,37 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, 
             const std::string label = gpLabel(benchSettingName(r) + (r.rmse > 0 ? "" : " (exact)"));
             series.points += shortestExact(r.frameMs) + "\t" + y + "\n";
             series.labels[n++ % 2] += shortestExact(r.frameMs) + "\t" + y + "\t" + label + "\n";
-            if (std::binary_search(front.begin(), front.end(), i)) series.front += shortestExact(r.frameMs) + "\t" + y + "\n";
+            if (std::binary_search(front.begin(), front.end(), i))
+                series.front += shortestExact(r.frameMs) + "\t" + y + "\n";
         }
         if (series.points.empty()) continue;
         const std::string colour = sceneColour(s);
         const fs::path points = tmp.path() / ("scene" + std::to_string(s) + ".dat");
         writeBytes(points, series.points);
-        pointElements.push_back(gpString(points.string()) + " using 1:2 with points pt 7 ps 1.6 lc rgb '" + colour + "' title " +
-                                gpString(groups[s].first));
+        pointElements.push_back(gpString(points.string()) +
+                                " using 1:2 with points pt 7 ps 1.6 lc rgb '" + colour +
+                                "' title " + gpString(groups[s].first));
         // Separate files rather than a filter: gnuplot 5.4.4 crashes on a
         // "with labels" plot whose points are all NaN.
         for (int half = 0; half < 2; ++half) {
             if (series.labels[half].empty()) continue;
-            const fs::path file = tmp.path() / ("scene" + std::to_string(s) + "-labels" + std::to_string(half) + ".dat");
+            const fs::path file = tmp.path() / ("scene" + std::to_string(s) + "-labels" +
+                                                std::to_string(half) + ".dat");
             writeBytes(file, series.labels[half]);
-            labelElements.push_back(gpString(file.string()) + " using 1:2:3 with labels left offset char 1.2," +
-                                    (half == 0 ? "0.7" : "-0.7") + " tc rgb '" + colour + "' notitle");
+            labelElements.push_back(
+                gpString(file.string()) + " using 1:2:3 with labels left offset char 1.2," +
+                (half == 0 ? "0.7" : "-0.7") + " tc rgb '" + colour + "' notitle");
         }
         if (!series.front.empty()) {
             const fs::path frontFile = tmp.path() / ("scene" + std::to_string(s) + "-front.dat");
             writeBytes(frontFile, series.front);
-            add(gpString(frontFile.string()) + " using 1:2 with steps lw 2 dt 1 lc rgb '" + colour + "' notitle");
-            ringElements.push_back(gpString(frontFile.string()) + " using 1:2 with points pt 6 ps 2.8 lw 2 lc rgb '#333333' " +
-                                   (frontTitled ? std::string("notitle") : std::string("title 'Pareto front (ringed; step line per scene)'")));
+            add(gpString(frontFile.string()) + " using 1:2 with steps lw 2 dt 1 lc rgb '" + colour +
+                "' notitle");
+            ringElements.push_back(
+                gpString(frontFile.string()) +
+                " using 1:2 with points pt 6 ps 2.8 lw 2 lc rgb '#333333' " +
+                (frontTitled ? std::string("notitle")
+                             : std::string("title 'Pareto front (ringed; step line per scene)'")));
             frontTitled = true;
         }
     }
@@ -259,17 +274,20 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, 
     const double x0 = minMs / 1.6, x1 = maxMs * 4.0, y0 = lowY / 3.0, y1 = highY * 3.0;
     script += "set xrange [" + shortestExact(x0) + ":" + shortestExact(x1) + "]\n";
     script += "set yrange [" + shortestExact(y0) + ":" + shortestExact(y1) + "]\n";
-    if (const std::string tics = logTics(x0, x1); !tics.empty()) script += "set xtics " + tics + "\n";
-    if (const std::string tics = logTics(y0, y1); !tics.empty()) script += "set ytics " + tics + "\n";
+    if (const std::string tics = logTics(x0, x1); !tics.empty())
+        script += "set xtics " + tics + "\n";
+    if (const std::string tics = logTics(y0, y1); !tics.empty())
+        script += "set ytics " + tics + "\n";
     script += "set style line 100 lc rgb '#dddddd' lw 1 dt 1\n";
     script += "set grid xtics ytics ls 100\n";
     script += "set key top right box opaque samplen 2 spacing 1.2\n";
     script += "set datafile separator '\\t'\n";
     if (anyExact) {
         const std::string f = shortestExact(floorRmse);
-        script += "set arrow from graph 0, first " + f + " to graph 1, first " + f + " nohead dt 2 lc rgb '#888888'\n";
-        script += "set label 'RMSE = 0 (exact), drawn at " + tidy(floorRmse) + "' at graph 0.01, first " + f +
-                  " offset 0,-0.9 tc rgb '#666666'\n";
+        script += "set arrow from graph 0, first " + f + " to graph 1, first " + f +
+                  " nohead dt 2 lc rgb '#888888'\n";
+        script += "set label 'RMSE = 0 (exact), drawn at " + tidy(floorRmse) +
+                  "' at graph 0.01, first " + f + " offset 0,-0.9 tc rgb '#666666'\n";
     }
     script += plot + "\n";
     const fs::path scriptFile = tmp.path() / "plot.gp";
@@ -283,11 +301,13 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const fs::path& pngPath, 
     const std::string bytes = readBytes(image);
     if (outcome.timedOut || outcome.signal || outcome.exitCode != 0) {
         const std::string message = lastLine(readBytes(log));
-        throw Error(what + "gnuplot " + outcome.describe() + (message.empty() ? "" : ": " + message));
+        throw Error(what + "gnuplot " + outcome.describe() +
+                    (message.empty() ? "" : ": " + message));
     }
-    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) throw Error(what + "gnuplot wrote no PNG file");
+    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+        throw Error(what + "gnuplot wrote no PNG file");
     // writeTextFileAtomic writes bytes as they are: FILE.tmp-PID, fsync, rename.
     writeTextFileAtomic(pngPath, bytes);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -55,8 +55,8 @@ std::string benchCsv(const std::vector<BenchRow>& rows);
 // readable units: ms with 1 decimal, RMSE in 1/255 steps and as a number,
 // PSNR in dB, bad pixels in %. Pareto rows are marked. When PLOTFILE is not
 // empty the page shows that picture (a path relative to the page).
-std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& title, const std::string& commandLine,
-                          const std::string& plotFile = "");
+std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& title,
+                          const std::string& commandLine, const std::string& plotFile = "");
 
 // Draws the speed-vs-error scatter plot into PNGPATH (atomically): x = frame
 // time (ms, log), y = RMSE (log; rows with RMSE 0 at a floor line, labelled
@@ -66,12 +66,13 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
 // a '/' is used as it is. Throws Error("gnuplot not found: ...") when it is
 // not there, and Error when it fails or no row can be plotted.
 void writeBenchPlot(const std::vector<BenchRow>& rows, const std::filesystem::path& pngPath,
-                    const std::string& title = "RayLab bench: speed vs error", const std::string& gnuplot = "gnuplot");
+                    const std::string& title = "RayLab bench: speed vs error",
+                    const std::string& gnuplot = "gnuplot");
 
 // DIR/bench.csv, DIR/bench.md and DIR/bench.png, each atomic; DIR is created
 // when missing. The text files are written first, so they are there even when
 // the plot then fails (its Error is thrown after them).
-void writeBenchFiles(const std::vector<BenchRow>& rows, const std::filesystem::path& dir, const std::string& title,
-                     const std::string& commandLine);
+void writeBenchFiles(const std::vector<BenchRow>& rows, const std::filesystem::path& dir,
+                     const std::string& title, const std::string& commandLine);
 
-} // namespace raylab
+}  // namespace raylab

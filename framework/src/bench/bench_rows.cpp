@@ -1,7 +1,7 @@
 // The rows of `raylab bench`: their Pareto front, their names, and the
 // helpers the writers share (bench_rows.h).
-#include "bench_report.h"
 #include "bench_rows.h"
+#include "bench_report.h"
 
 #include "atomic_file.h"
 #include "error.h"
@@ -23,7 +23,8 @@ bool measured(const BenchRow& r) {
 }
 
 // The scenes in order of first appearance, each with its rows' indices.
-std::vector<std::pair<std::string, std::vector<std::size_t>>> byScene(const std::vector<BenchRow>& rows) {
+std::vector<std::pair<std::string, std::vector<std::size_t>>>
+byScene(const std::vector<BenchRow>& rows) {
     std::vector<std::pair<std::string, std::vector<std::size_t>>> groups;
     std::map<std::string, std::size_t> where;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -53,7 +54,7 @@ std::string oneLine(const std::string& s) {
     return out;
 }
 
-} // namespace bench
+}  // namespace bench
 
 using namespace bench;
 namespace fs = std::filesystem;
@@ -69,7 +70,8 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows) {
         for (std::size_t j = 0; j < rows.size() && !dominated; ++j) {
             const BenchRow& b = rows[j];
             if (j == i || b.scene != a.scene || !measured(b)) continue;
-            dominated = b.frameMs <= a.frameMs && b.rmse <= a.rmse && (b.frameMs < a.frameMs || b.rmse < a.rmse);
+            dominated = b.frameMs <= a.frameMs && b.rmse <= a.rmse &&
+                        (b.frameMs < a.frameMs || b.rmse < a.rmse);
         }
         if (!dominated) front.push_back(i);
     }
@@ -87,12 +89,14 @@ std::string benchSettingName(const BenchRow& r) {
     std::string name;
     for (const std::string& s : on) name += (name.empty() ? "" : "+") + s;
     if (name.empty()) name = "baseline";
-    return name + " " + std::to_string(r.width) + "x" + std::to_string(r.height) + " d" + std::to_string(r.depth);
+    return name + " " + std::to_string(r.width) + "x" + std::to_string(r.height) + " d" +
+           std::to_string(r.depth);
 }
 
 // ---------------------------------------------------------------- all three
 
-void writeBenchFiles(const std::vector<BenchRow>& rows, const fs::path& dir, const std::string& title, const std::string& commandLine) {
+void writeBenchFiles(const std::vector<BenchRow>& rows, const fs::path& dir,
+                     const std::string& title, const std::string& commandLine) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw Error("cannot create folder " + displayPath(dir) + ": " + ec.message());
@@ -101,4 +105,4 @@ void writeBenchFiles(const std::vector<BenchRow>& rows, const fs::path& dir, con
     writeBenchPlot(rows, dir / "bench.png", title);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,7 +13,8 @@ namespace raylab::bench {
 bool measured(const BenchRow& r);
 
 // The scenes in order of first appearance, each with its rows' indices.
-std::vector<std::pair<std::string, std::vector<std::size_t>>> byScene(const std::vector<BenchRow>& rows);
+std::vector<std::pair<std::string, std::vector<std::size_t>>>
+byScene(const std::vector<BenchRow>& rows);
 
 // INDICES sorted by frame time (stable: equal times keep their order; rows
 // without a time go last).
@@ -22,4 +23,4 @@ void sortByFrameTime(std::vector<std::size_t>& indices, const std::vector<BenchR
 // Control characters (a newline in a scene name) would break a line-based
 // format; they become spaces.
 std::string oneLine(const std::string& s);
-} // namespace raylab::bench
+}  // namespace raylab::bench

@@ -19,11 +19,13 @@ struct FrameError {
 // samples; when the sizes differ the GPU frame is scaled to the reference's
 // size bilinearly first (so a lower resolution shows up as error). A
 // non-finite GPU value counts as the largest error (1).
-FrameError frameError(const std::vector<float>& gpu, int width, int height, const std::vector<ReferenceSample>& reference, int rw, int rh);
+FrameError frameError(const std::vector<float>& gpu, int width, int height,
+                      const std::vector<ReferenceSample>& reference, int rw, int rh);
 
 // The 99th percentile of |t_gpu - t_ref| in float32 ulps of t_ref, over the
 // pixels where both hit the same object (DEPTH: one float per pixel, top row
 // first; IDS likewise, as floats; same size as REFERENCE).
-double depthErrorP99Ulp(const std::vector<float>& depth, const std::vector<float>& ids, const std::vector<ReferenceSample>& reference);
+double depthErrorP99Ulp(const std::vector<float>& depth, const std::vector<float>& ids,
+                        const std::vector<ReferenceSample>& reference);
 
-} // namespace raylab
+}  // namespace raylab

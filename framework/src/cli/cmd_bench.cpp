@@ -14,9 +14,9 @@
 // size): a lower resolution is scaled up first, so it shows as error.
 // Compile times are measured with Mesa's shader cache off.
 #include "bench_report.h"
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "debug_views.h"
 #include "error.h"
 #include "frame_error.h"
@@ -56,19 +56,30 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
         with([](BenchSetting& s) { s.depth = 2; }),
     };
     if (quick) return grid;
-    grid.push_back(with([](BenchSetting& s) { s.variant.bvh = false; s.variant.specialized = true; }));
-    grid.push_back(with([](BenchSetting& s) { s.variant.specialized = true; s.shadows = false; }));
+    grid.push_back(with([](BenchSetting& s) {
+        s.variant.bvh = false;
+        s.variant.specialized = true;
+    }));
+    grid.push_back(with([](BenchSetting& s) {
+        s.variant.specialized = true;
+        s.shadows = false;
+    }));
     grid.push_back(with([](BenchSetting& s) { s.shadows = false; }));
     grid.push_back(with([](BenchSetting& s) { s.depth = 4; }));
     grid.push_back(with([](BenchSetting& s) { s.depth = 1; }));
-    grid.push_back(with([&](BenchSetting& s) { s.width = width / 2; s.height = height / 2; }));
+    grid.push_back(with([&](BenchSetting& s) {
+        s.width = width / 2;
+        s.height = height / 2;
+    }));
     grid.push_back(with([](BenchSetting& s) { s.variant.naiveNumerics = true; }));
-    if (!scene.tori.empty()) grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
+    if (!scene.tori.empty())
+        grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
     return grid;
 }
 
 double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 // One setting being measured: its renderer stays alive for the whole run,
@@ -81,11 +92,13 @@ struct Measured {
     std::vector<double> frameMs;
 };
 
-BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInfo& stage, const StageSources& sources, const Measured& m,
+BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInfo& stage,
+                const StageSources& sources, const Measured& m,
                 const std::vector<ReferenceSample>& reference, int rw, int rh) {
     const BenchSetting& s = m.setting;
     FrameTiming timing = summarizeFrameTimes(m.frameMs);
-    FrameError err = frameError(m.renderer->target().readFloats(), s.width, s.height, reference, rw, rh);
+    FrameError err =
+        frameError(m.renderer->target().readFloats(), s.width, s.height, reference, rw, rh);
     BenchRow row;
     row.scene = sceneName;
     row.width = s.width;
@@ -121,8 +134,9 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
 // Builds every setting's program (timing compile + first frame), then times
 // FRAMES frames of each in turns - setting 1, 2, ..., N, 1, 2, ... - so that
 // a slow spell of a shared machine hits every setting alike.
-std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage, const StageSources& sources,
-                                 const std::vector<BenchSetting>& grid, int frames) {
+std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
+                                 const StageSources& sources, const std::vector<BenchSetting>& grid,
+                                 int frames) {
     const Camera camera = cameraFor(std::nullopt, scene);
     std::vector<Measured> all;
     for (const BenchSetting& s : grid) {
@@ -133,25 +147,32 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage, con
         // Compile time: building the program plus the first frame (llvmpipe
         // compiles its code on first use), less one frame's own time.
         auto start = std::chrono::steady_clock::now();
-        m.renderer = std::make_unique<StageRenderer>(stage, sources, scene, s.width, s.height, PixelFormat::Rgba32F, "", s.variant);
+        m.renderer = std::make_unique<StageRenderer>(stage, sources, scene, s.width, s.height,
+                                                     PixelFormat::Rgba32F, "", s.variant);
         timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); });
         m.firstMs = msSince(start);
         all.push_back(std::move(m));
     }
-    for (Measured& m : all) timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); });  // warm-up round, not counted
+    for (Measured& m : all)
+        timeOneFrame(
+            [&] { m.renderer->render(camera, 0.0f, m.settings); });  // warm-up round, not counted
     for (int round = 0; round < frames; ++round)
-        for (Measured& m : all) m.frameMs.push_back(timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); }));
+        for (Measured& m : all)
+            m.frameMs.push_back(
+                timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); }));
     return all;
 }
 
-} // namespace
+}  // namespace
 
 int cmdBench(const BenchOptions& options) {
     if (options.outDir.empty()) throw Error("--out DIR is required");
     const StageInfo& stage = demoStage();
-    std::vector<std::string> scenes = options.quick ? std::vector<std::string>{"lite"} : std::vector<std::string>{"lite", "pro"};
+    std::vector<std::string> scenes =
+        options.quick ? std::vector<std::string>{"lite"} : std::vector<std::string>{"lite", "pro"};
     if (!options.scenes.empty()) scenes = options.scenes;
-    Size size = parseSize(options.size.empty() ? (options.quick ? "160x120" : "800x600") : options.size);
+    Size size =
+        parseSize(options.size.empty() ? (options.quick ? "160x120" : "800x600") : options.size);
     int frames = options.frames > 0 ? options.frames : (options.quick ? 1 : 5);
     if (frames > 1000) throw Error("--frames must be between 1 and 1000");
     // Everything that can fail on bad input fails before any measuring.
@@ -161,7 +182,8 @@ int cmdBench(const BenchOptions& options) {
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))
-        throw Error("--out '" + options.outDir + "': cannot make this folder" + (ec ? ": " + ec.message() : std::string(" (a file is in the way)")));
+        throw Error("--out '" + options.outDir + "': cannot make this folder" +
+                    (ec ? ": " + ec.message() : std::string(" (a file is in the way)")));
 
     // Compile times are only honest without Mesa's on-disk shader cache (a
     // second run would find every program there). Set before the driver loads.
@@ -169,22 +191,28 @@ int cmdBench(const BenchOptions& options) {
     auto context = createHeadlessContext(options.backend);
     const StageSources sources = solutionSources(stage);
     std::vector<BenchRow> rows;
-    std::printf("raylab bench: stage %s, %s backend, %s; %d timed frame%s per setting\n", stage.id.c_str(),
-                context->backendName().c_str(), glDescription().c_str(), frames, frames == 1 ? "" : "s");
+    std::printf("raylab bench: stage %s, %s backend, %s; %d timed frame%s per setting\n",
+                stage.id.c_str(), context->backendName().c_str(), glDescription().c_str(), frames,
+                frames == 1 ? "" : "s");
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Scene& scene = loaded[k];
         const std::string name = std::filesystem::path(scene.file).stem().string();
         auto start = std::chrono::steady_clock::now();
         RenderSettings full;  // the reference: depth 8, shadows on
         ReferenceTracer tracer(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
-        std::vector<ReferenceSample> reference = tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height);
-        std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(), size.width, size.height, msSince(start) / 1000.0);
-        std::vector<Measured> measured = measureAll(scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames);
+        std::vector<ReferenceSample> reference =
+            tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height);
+        std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
+                    size.width, size.height, msSince(start) / 1000.0);
+        std::vector<Measured> measured = measureAll(
+            scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames);
         for (const Measured& m : measured) {
-            BenchRow row = rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
-            std::printf("  %-5s %-28s frame %8.1f ms  compile %7.0f ms  rmse %.5f  psnr %5.1f dB  bad px %5.1f%%  depth p99 %.1f ulp\n",
-                        name.c_str(), benchSettingName(row).c_str(), row.frameMs, row.compileMs, row.rmse, row.psnr,
-                        100.0 * row.badPxShare, row.depthErrP99Ulp);
+            BenchRow row =
+                rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
+            std::printf("  %-5s %-28s frame %8.1f ms  compile %7.0f ms  rmse %.5f  psnr %5.1f dB  "
+                        "bad px %5.1f%%  depth p99 %.1f ulp\n",
+                        name.c_str(), benchSettingName(row).c_str(), row.frameMs, row.compileMs,
+                        row.rmse, row.psnr, 100.0 * row.badPxShare, row.depthErrP99Ulp);
             std::fflush(stdout);
             rows.push_back(row);
         }
@@ -202,11 +230,19 @@ Command benchCommand() {
             "for the lite and pro scenes and a grid of settings (bench.csv, bench.md, bench.png)",
             [](CLI::App& cmd) {
                 auto bench = std::make_shared<BenchOptions>();
-                cmd.add_option("--out", bench->outDir, "folder for bench.csv, bench.md and bench.png (made when missing)")->required();
-                cmd.add_flag("--quick", bench->quick, "a small grid (lite, 160x120, one frame per setting): a smoke test, under a minute");
-                cmd.add_option("--scenes", bench->scenes, "comma-separated: lite, pro or scene files (default: lite,pro)")->delimiter(',');
-                cmd.add_option("--size", bench->size, "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
-                cmd.add_option("--frames", bench->frames, "timed frames per setting (default 5, quick 1)");
+                cmd.add_option("--out", bench->outDir,
+                               "folder for bench.csv, bench.md and bench.png (made when missing)")
+                    ->required();
+                cmd.add_flag("--quick", bench->quick,
+                             "a small grid (lite, 160x120, one frame per setting): a smoke test, "
+                             "under a minute");
+                cmd.add_option("--scenes", bench->scenes,
+                               "comma-separated: lite, pro or scene files (default: lite,pro)")
+                    ->delimiter(',');
+                cmd.add_option("--size", bench->size,
+                               "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
+                cmd.add_option("--frames", bench->frames,
+                               "timed frames per setting (default 5, quick 1)");
                 auto backend = std::make_shared<BackendOption>(cmd);
                 return std::function<int()>([=] {
                     bench->backend = backend->resolve();
@@ -216,4 +252,4 @@ Command benchCommand() {
             }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,6 +1,6 @@
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "error.h"
 #include "function_checks.h"
 #include "image_compare.h"
@@ -29,13 +29,19 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     // Frames read as grading reads them (view_renderers.h).
     ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h);
     std::unique_ptr<ViewRenderers> references;
-    if (against.empty()) references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene, options.scene, w, h);
-    reportOpenTodos(students.forView(stage.checkViews.front()).openTodos());  // a compile error stops here, before any output
+    if (against.empty())
+        references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene,
+                                                     options.scene, w, h);
+    reportOpenTodos(students.forView(stage.checkViews.front())
+                        .openTodos());  // a compile error stops here, before any output
 
     const CompareTolerance tolerance;
-    std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(), setup.sources.label.c_str(),
-                against.empty() ? "the solution rendered here" : displayPath(against).c_str(), w, h, context->backendName().c_str());
-    std::printf("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 from every pixel of the\n"
+    std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(),
+                setup.sources.label.c_str(),
+                against.empty() ? "the solution rendered here" : displayPath(against).c_str(), w, h,
+                context->backendName().c_str());
+    std::printf("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 from "
+                "every pixel of the\n"
                 "  reference's 3x3 neighbourhood\n",
                 tolerance.maxBadShare * 100.0, tolerance.channel);
     int passed = 0;
@@ -48,12 +54,17 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         } else {
             expected = loadPng(against / (view.name + ".png"));
         }
-        if (!check.saveDir.empty()) writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
+        if (!check.saveDir.empty())
+            writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
         ImageDiff diff = compareImages(mine, expected, tolerance.channel);
         bool ok = imagesAgree(diff, tolerance) && nonFinite == 0;
         passed += ok;
-        std::printf("  %s %-14s %s%s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str(),
-                    nonFinite ? ("; " + std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta)").c_str() : "");
+        std::printf(
+            "  %s %-14s %s%s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str(),
+            nonFinite
+                ? ("; " + std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta)")
+                      .c_str()
+                : "");
         if (!ok) {
             std::printf("       this view checks: %s\n", view.why.c_str());
             std::string hint = diagnose(mine, expected, tolerance.channel);
@@ -64,33 +75,36 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
 
     const auto functions = functionSpecsFor(stage);
     if (!functions.empty())
-        std::printf("  function checks: each function on a table of inputs (hard cases included) against double precision\n");
+        std::printf("  function checks: each function on a table of inputs (hard cases included) "
+                    "against double precision\n");
     for (const FunctionSpec* spec : functions) {
         FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
         bool ok = f.passed == f.total;
         (ok ? passed : failed) += 1;
-        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed, f.total, ok ? "" : "; first failure: ",
-                    f.firstFailure.c_str());
+        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
+                    f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
     }
     std::printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;
 }
 
 Command checkCommand() {
-    return {"check", "check a stage against the solution from several camera views", [](CLI::App& cmd) {
-                auto stage = std::make_shared<StageOptions>();
-                auto check = std::make_shared<CheckOptions>();
-                stage->size = "160x120";
-                CLI::Option* lab = addStageOptions(cmd, *stage, false);
-                cmd.add_option("--against", check->againstDir, "compare with DIR/<view>.png instead of the solution rendered now");
-                cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");
-                auto backend = std::make_shared<BackendOption>(cmd);
-                return std::function<int()>([=] {
-                    check->backend = backend->resolve();
-                    stage->labGiven = lab->count() > 0;
-                    return cmdCheck(*stage, *check);
-                });
-            }};
+    return {
+        "check", "check a stage against the solution from several camera views", [](CLI::App& cmd) {
+            auto stage = std::make_shared<StageOptions>();
+            auto check = std::make_shared<CheckOptions>();
+            stage->size = "160x120";
+            CLI::Option* lab = addStageOptions(cmd, *stage, false);
+            cmd.add_option("--against", check->againstDir,
+                           "compare with DIR/<view>.png instead of the solution rendered now");
+            cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");
+            auto backend = std::make_shared<BackendOption>(cmd);
+            return std::function<int()>([=] {
+                check->backend = backend->resolve();
+                stage->labGiven = lab->count() > 0;
+                return cmdCheck(*stage, *check);
+            });
+        }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,9 +1,9 @@
 // `raylab demo`: the full solution. With a display, the interactive window;
 // without one (or with --headless), a short fly-through rendered to PNG files
 // and timed.
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "error.h"
 #include "fly_through.h"
 #include "frame_timer.h"
@@ -31,10 +31,12 @@ std::filesystem::path newOutputFolder(const std::string& sceneName) {
 }
 
 std::filesystem::path prepareOutputFolder(const DemoOptions& demo, const std::string& sceneName) {
-    std::filesystem::path dir = demo.outDir.empty() ? newOutputFolder(sceneName) : std::filesystem::path(demo.outDir);
+    std::filesystem::path dir =
+        demo.outDir.empty() ? newOutputFolder(sceneName) : std::filesystem::path(demo.outDir);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir)) throw Error("--out '" + dir.string() + "': cannot create the folder");
+    if (ec || !std::filesystem::is_directory(dir))
+        throw Error("--out '" + dir.string() + "': cannot create the folder");
     return dir;
 }
 
@@ -44,7 +46,7 @@ std::string frameName(int i) {
     return name;
 }
 
-} // namespace
+}  // namespace
 
 int cmdDemo(const DemoOptions& demo) {
     const StageInfo& stage = demo.stage.empty() ? demoStage() : findStage(demo.stage);
@@ -60,7 +62,8 @@ int cmdDemo(const DemoOptions& demo) {
     const std::string sceneName = std::filesystem::path(setup.scene.file).stem().string();
 
     if (displayAvailable() && !demo.headless) {
-        std::printf("raylab: demo of stage %s, scene %s, in a window (Esc quits; --headless renders to files instead)\n",
+        std::printf("raylab: demo of stage %s, scene %s, in a window (Esc quits; --headless "
+                    "renders to files instead)\n",
                     stage.id.c_str(), setup.scene.file.c_str());
         ViewerApp app(std::move(setup), {}, true);
         return app.run();
@@ -71,8 +74,8 @@ int cmdDemo(const DemoOptions& demo) {
     auto context = createHeadlessContext(demo.backend);
     ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
     if (demo.noBvh) variant.bvh = false;
-    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height, PixelFormat::Rgba8, "",
-                           variant);
+    StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height,
+                           PixelFormat::Rgba8, "", variant);
     const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);
 
     const FlyThrough path;
@@ -88,9 +91,12 @@ int cmdDemo(const DemoOptions& demo) {
         writePngAtomic(renderer.read(), outDir / frameName(i));  // read back outside the timed part
     }
     FrameTiming timing = summarizeFrameTimes(ms);
-    std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised shader, %s backend, %s\n", stage.id.c_str(),
-                setup.scene.file.c_str(), setup.size.width, setup.size.height, setup.settings.maxDepth,
-                setup.settings.shadows ? "on" : "off", variant.bvh ? "BVH" : "linear search", context->backendName().c_str(), glDescription().c_str());
+    std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised "
+                "shader, %s backend, %s\n",
+                stage.id.c_str(), setup.scene.file.c_str(), setup.size.width, setup.size.height,
+                setup.settings.maxDepth, setup.settings.shadows ? "on" : "off",
+                variant.bvh ? "BVH" : "linear search", context->backendName().c_str(),
+                glDescription().c_str());
     std::printf("  frame time: %s\n", timing.summary().c_str());
     std::printf("  %d frame%s written to %s\n", demo.frames, demo.frames == 1 ? "" : "s",
                 std::filesystem::absolute(outDir).lexically_normal().c_str());
@@ -98,24 +104,37 @@ int cmdDemo(const DemoOptions& demo) {
 }
 
 Command demoCommand() {
-    return {"demo", "run the full solution; without a display render it to an image and time it", [](CLI::App& cmd) {
-                auto demo = std::make_shared<DemoOptions>();
-                cmd.add_option("--stage", demo->stage, "show this stage's solution (default: the highest finished stage)");
-                cmd.add_option("--size", demo->size, "image size WIDTHxHEIGHT")->capture_default_str();
-                cmd.add_option("--scene", demo->scene, "lite, pro or a scene file (default: the stage's scene)");
-                cmd.add_option("--out", demo->outDir, "folder for the headless frames (default: a new raylab-demo-SCENE-TIME folder here)");
-                cmd.add_option("--frames", demo->frames, "headless: frames of the fly-through to render and time (after one warm-up frame)")
-                    ->capture_default_str();
-                cmd.add_flag("--no-shadows", demo->noShadows, "shadows off (key 1 in the window)");
-                cmd.add_option("--depth", demo->maxDepth, "rays per path, 1..8 (arrow keys in the window)")->capture_default_str();
-                cmd.add_flag("--headless", demo->headless, "render to a file even when a display is available");
-                cmd.add_flag("--no-bvh", demo->noBvh, "stage 08: test every sphere for every ray instead of walking the BVH (used from 32 spheres on)");
-                auto backend = std::make_shared<BackendOption>(cmd);
-                return std::function<int()>([=] {
-                    demo->backend = backend->resolve();
-                    return cmdDemo(*demo);
-                });
-            }};
+    return {
+        "demo", "run the full solution; without a display render it to an image and time it",
+        [](CLI::App& cmd) {
+            auto demo = std::make_shared<DemoOptions>();
+            cmd.add_option("--stage", demo->stage,
+                           "show this stage's solution (default: the highest finished stage)");
+            cmd.add_option("--size", demo->size, "image size WIDTHxHEIGHT")->capture_default_str();
+            cmd.add_option("--scene", demo->scene,
+                           "lite, pro or a scene file (default: the stage's scene)");
+            cmd.add_option("--out", demo->outDir,
+                           "folder for the headless frames (default: a new raylab-demo-SCENE-TIME "
+                           "folder here)");
+            cmd.add_option("--frames", demo->frames,
+                           "headless: frames of the fly-through to render and time (after one "
+                           "warm-up frame)")
+                ->capture_default_str();
+            cmd.add_flag("--no-shadows", demo->noShadows, "shadows off (key 1 in the window)");
+            cmd.add_option("--depth", demo->maxDepth,
+                           "rays per path, 1..8 (arrow keys in the window)")
+                ->capture_default_str();
+            cmd.add_flag("--headless", demo->headless,
+                         "render to a file even when a display is available");
+            cmd.add_flag("--no-bvh", demo->noBvh,
+                         "stage 08: test every sphere for every ray instead of walking the BVH "
+                         "(used from 32 spheres on)");
+            auto backend = std::make_shared<BackendOption>(cmd);
+            return std::function<int()>([=] {
+                demo->backend = backend->resolve();
+                return cmdDemo(*demo);
+            });
+        }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -5,8 +5,8 @@
 // junit.xml. One bad submission never stops the run or touches another's
 // score.
 #include "child_process.h"
-#include "commands.h"
 #include "command.h"
+#include "commands.h"
 #include "error.h"
 #include "grade_report.h"
 #include "grade_stage.h"
@@ -42,8 +42,7 @@ struct Item {
 std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
     std::vector<const StageInfo*> stages;
     if (list.empty()) {
-        for (const StageInfo& s : allStages())
-            stages.push_back(&s);
+        for (const StageInfo& s : allStages()) stages.push_back(&s);
         return stages;
     }
     std::stringstream in(list);
@@ -58,20 +57,23 @@ std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
 // anywhere, also to the solution) and said so.
 std::vector<std::string> studentFolders(const fs::path& submissions) {
     std::error_code ec;
-    if (!fs::is_directory(submissions, ec)) throw Error("--submissions '" + submissions.string() + "': no such folder");
+    if (!fs::is_directory(submissions, ec))
+        throw Error("--submissions '" + submissions.string() + "': no such folder");
     std::vector<std::string> names;
     for (fs::directory_iterator it(submissions, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
         fs::file_type type = it->symlink_status(ec).type();
         if (name.empty() || name[0] == '.') continue;
         if (type == fs::file_type::symlink) {
-            std::fprintf(stderr, "raylab grade: skipping %s: a symbolic link, not a folder\n", name.c_str());
+            std::fprintf(stderr, "raylab grade: skipping %s: a symbolic link, not a folder\n",
+                         name.c_str());
             continue;
         }
         if (type == fs::file_type::directory) names.push_back(name);
     }
     if (ec) throw Error("--submissions '" + submissions.string() + "': " + ec.message());
-    if (names.empty()) throw Error("--submissions '" + submissions.string() + "': no student folders in it");
+    if (names.empty())
+        throw Error("--submissions '" + submissions.string() + "': no student folders in it");
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -82,9 +84,11 @@ void checkFoldersApart(const fs::path& submissions, const fs::path& out) {
     std::error_code ec;
     fs::path a = fs::weakly_canonical(submissions, ec), b = fs::weakly_canonical(out, ec);
     auto within = [](const fs::path& inner, const fs::path& outer) {
-        return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
+        return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first ==
+               outer.end();
     };
-    if (within(b, a) || within(a, b)) throw Error("--out '" + out.string() + "' and --submissions must be separate folders");
+    if (within(b, a) || within(a, b))
+        throw Error("--out '" + out.string() + "' and --submissions must be separate folders");
 }
 
 // A stage folder that is a real folder (not a link).
@@ -98,8 +102,10 @@ bool stageFolderExists(const fs::path& dir) {
 // finished already). DONE(i, outcome) runs when child i has ended. Returns
 // false when INTERRUPTED() says so; the running children are then killed
 // (~Child).
-bool runPool(std::size_t count, int jobs, const std::function<std::unique_ptr<Child>(std::size_t)>& start,
-             const std::function<void(std::size_t, const ChildOutcome&)>& done, const std::function<bool()>& interrupted) {
+bool runPool(std::size_t count, int jobs,
+             const std::function<std::unique_ptr<Child>(std::size_t)>& start,
+             const std::function<void(std::size_t, const ChildOutcome&)>& done,
+             const std::function<bool()>& interrupted) {
     std::vector<std::pair<std::size_t, std::unique_ptr<Child>>> running;
     std::size_t next = 0;
     while (next < count || !running.empty()) {
@@ -132,28 +138,34 @@ std::string lastLines(const fs::path& log, int count) {
     for (std::string line; std::getline(in, line);)
         if (!line.empty()) lines.push_back(line);
     std::string out;
-    for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - std::size_t(count) : 0; i < lines.size(); ++i)
+    for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - std::size_t(count) : 0;
+         i < lines.size(); ++i)
         out += lines[i] + "\n";
     return out;
 }
 
 // What a child that left no result means.
-StageResult failedItem(const StageInfo& stage, const ChildOutcome& o, const fs::path& log, const GradeOptions& g) {
+StageResult failedItem(const StageInfo& stage, const ChildOutcome& o, const fs::path& log,
+                       const GradeOptions& g) {
     StageResult r;
     r.stage = stage.id;
     r.seconds = o.seconds;
     char limit[160];
     if (o.timedOut) {
         r.status = "timed out";
-        std::snprintf(limit, sizeof limit, "stopped after %.0f s (--timeout): an endless loop, or a shader that takes minutes to compile?",
+        std::snprintf(limit, sizeof limit,
+                      "stopped after %.0f s (--timeout): an endless loop, or a shader that takes "
+                      "minutes to compile?",
                       g.timeoutSeconds);
         r.message = limit;
     } else if (o.exitCode == 3) {
         r.status = "out of memory";
-        r.message = "ran out of memory (--memory-mb " + std::to_string(g.memoryMb) + "): a huge array?";
+        r.message =
+            "ran out of memory (--memory-mb " + std::to_string(g.memoryMb) + "): a huge array?";
     } else if (o.signal) {
         r.status = "crashed";
-        r.message = o.describe() + " (a crash in the shader compiler or driver, or memory beyond --memory-mb " +
+        r.message = o.describe() +
+                    " (a crash in the shader compiler or driver, or memory beyond --memory-mb " +
                     std::to_string(g.memoryMb) + ")";
     } else {
         r.status = "error";
@@ -172,9 +184,12 @@ public:
     void working(const std::string& student, const std::string& stage) {
         if (!tty_) return;
         const int width = 30;
-        int filled = int(double(width) * double(finished_) / double(std::max<std::size_t>(total_, 1)));
-        std::fprintf(stderr, "\r[%s%s] %zu/%zu  grading %-20.20s %-14s", std::string(std::size_t(filled), '#').c_str(),
-                     std::string(std::size_t(width - filled), '.').c_str(), finished_, total_, student.c_str(), stage.c_str());
+        int filled =
+            int(double(width) * double(finished_) / double(std::max<std::size_t>(total_, 1)));
+        std::fprintf(stderr, "\r[%s%s] %zu/%zu  grading %-20.20s %-14s",
+                     std::string(std::size_t(filled), '#').c_str(),
+                     std::string(std::size_t(width - filled), '.').c_str(), finished_, total_,
+                     student.c_str(), stage.c_str());
         std::fflush(stderr);
     }
     void done(const std::string& student, const StageResult& r) {
@@ -182,8 +197,11 @@ public:
         if (tty_) {
             if (finished_ == total_) std::fprintf(stderr, "\r%-90s\r", "");
         } else {
-            std::fprintf(stderr, "  [%zu/%zu] %s %s: %s\n", finished_, total_, student.c_str(), r.stage.c_str(),
-                         r.status == "graded" ? (std::to_string(int(std::lround(r.score))) + "/100").c_str() : r.status.c_str());
+            std::fprintf(stderr, "  [%zu/%zu] %s %s: %s\n", finished_, total_, student.c_str(),
+                         r.stage.c_str(),
+                         r.status == "graded"
+                             ? (std::to_string(int(std::lround(r.score))) + "/100").c_str()
+                             : r.status.c_str());
         }
         std::fflush(stderr);
     }
@@ -202,19 +220,25 @@ void printSummary(const ClassResult& result) {
         for (const StageResult& r : st.stages) {
             if (r.status == "graded") std::printf(" %6.1f", r.score);
             else if (r.status == "not submitted") std::printf(" %6s", "-");
-            else std::printf(" %6s", r.status == "compile error" ? "CE" : r.status == "timed out" ? "TIME" : "ERR");
+            else
+                std::printf(" %6s", r.status == "compile error" ? "CE"
+                                    : r.status == "timed out"   ? "TIME"
+                                                                : "ERR");
         }
         std::printf(" %8.1f\n", st.score());
     }
-    std::printf("(scores out of 100 per stage; - not submitted, CE compile error, TIME timed out, ERR crashed or other error)\n");
+    std::printf("(scores out of 100 per stage; - not submitted, CE compile error, TIME timed out, "
+                "ERR crashed or other error)\n");
 }
 
-} // namespace
+}  // namespace
 
 int cmdGrade(const GradeOptions& g) {
     if (g.jobs < 1 || g.jobs > 64) throw Error("--jobs must be between 1 and 64");
-    if (!(g.timeoutSeconds > 0.0) || g.timeoutSeconds > 3600.0) throw Error("--timeout must be between 0 and 3600 seconds");
-    if (g.memoryMb != 0 && (g.memoryMb < 256 || g.memoryMb > 1 << 20)) throw Error("--memory-mb must be 0 (no limit) or 256..1048576");
+    if (!(g.timeoutSeconds > 0.0) || g.timeoutSeconds > 3600.0)
+        throw Error("--timeout must be between 0 and 3600 seconds");
+    if (g.memoryMb != 0 && (g.memoryMb < 256 || g.memoryMb > 1 << 20))
+        throw Error("--memory-mb must be 0 (no limit) or 256..1048576");
     if (g.outDir.empty()) throw Error("--out is required");
     const std::vector<const StageInfo*> stages = stagesToGrade(g.stages);
     const fs::path submissions = g.submissions;
@@ -224,7 +248,8 @@ int cmdGrade(const GradeOptions& g) {
     std::error_code ec;
     // Only what grading writes is cleared: no stale result of an earlier run
     // may be mixed into this one.
-    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"}) fs::remove_all(out / own, ec);
+    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"})
+        fs::remove_all(out / own, ec);
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
     const std::string exe = executablePath().string();
@@ -236,12 +261,15 @@ int cmdGrade(const GradeOptions& g) {
     std::signal(SIGTERM, onInterrupt);
     auto interrupted = [&] {
         if (!gInterrupted) return false;
-        std::fprintf(stderr, "\nraylab grade: interrupted; no report was written (the folder holds partial results only)\n");
+        std::fprintf(stderr, "\nraylab grade: interrupted; no report was written (the folder holds "
+                             "partial results only)\n");
         return true;
     };
 
-    std::printf("raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB%s\n", students.size(), stages.size(), g.jobs,
-                g.timeoutSeconds, g.memoryMb, g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
+    std::printf(
+        "raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB%s\n",
+        students.size(), stages.size(), g.jobs, g.timeoutSeconds, g.memoryMb,
+        g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
     std::fflush(stdout);
 
     // 1. The solution's images for every stage (trusted code, but in children
@@ -249,12 +277,16 @@ int cmdGrade(const GradeOptions& g) {
     const bool referencesDone = runPool(
         stages.size(), g.jobs,
         [&](std::size_t i) {
-            return std::make_unique<Child>(std::vector<std::string>{exe, "grade-reference", "--stage", stages[i]->id, "--out", out.string(), "--seed", seed},
-                                           out / "reference" / (stages[i]->id + ".log"), ChildLimits{g.timeoutSeconds * 10.0, 0});
+            return std::make_unique<Child>(
+                std::vector<std::string>{exe, "grade-reference", "--stage", stages[i]->id, "--out",
+                                         out.string(), "--seed", seed},
+                out / "reference" / (stages[i]->id + ".log"),
+                ChildLimits{g.timeoutSeconds * 10.0, 0});
         },
         [&](std::size_t i, const ChildOutcome& o) {
             if (o.exitCode != 0)
-                throw Error("rendering the reference images of stage " + stages[i]->id + " failed (" + o.describe() + "); see " +
+                throw Error("rendering the reference images of stage " + stages[i]->id +
+                            " failed (" + o.describe() + "); see " +
                             (out / "reference" / (stages[i]->id + ".log")).string());
         },
         interrupted);
@@ -277,7 +309,8 @@ int cmdGrade(const GradeOptions& g) {
     Progress progress(queue.size());
     const ChildLimits limits{g.timeoutSeconds, g.memoryMb};
     // Runs ITEMS with up to JOBS children; FINISH gets each item's result.
-    auto runItems = [&](const std::deque<Item>& items, int jobs, const std::function<void(const Item&, StageResult)>& finish) {
+    auto runItems = [&](const std::deque<Item>& items, int jobs,
+                        const std::function<void(const Item&, StageResult)>& finish) {
         auto startItem = [&](std::size_t i) -> std::unique_ptr<Child> {
             const Item& item = items[i];
             const std::string& name = students[item.student];
@@ -286,8 +319,9 @@ int cmdGrade(const GradeOptions& g) {
                 StageResult r;
                 r.stage = item.stage->id;
                 r.status = fs::exists(stageDir, ec) ? "error" : "not submitted";
-                r.message = r.status == "error" ? item.stage->id + "/ is not a folder (a symbolic link?)"
-                                                : "no " + item.stage->id + "/ folder in the submission";
+                r.message = r.status == "error"
+                                ? item.stage->id + "/ is not a folder (a symbolic link?)"
+                                : "no " + item.stage->id + "/ folder in the submission";
                 finish(item, r);
                 return nullptr;
             }
@@ -295,10 +329,11 @@ int cmdGrade(const GradeOptions& g) {
             fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
             fs::create_directories(itemDir, ec);
             progress.working(name, item.stage->id);
-            return std::make_unique<Child>(std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
-                                                                    (submissions / name).string(), "--student", name, "--out", out.string(),
-                                                                    "--seed", seed},
-                                           itemDir / "log.txt", limits);
+            return std::make_unique<Child>(
+                std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
+                                         (submissions / name).string(), "--student", name, "--out",
+                                         out.string(), "--seed", seed},
+                itemDir / "log.txt", limits);
         };
         auto itemDone = [&](std::size_t i, const ChildOutcome& o) {
             const Item& item = items[i];
@@ -309,8 +344,7 @@ int cmdGrade(const GradeOptions& g) {
                 try {
                     r = stageResultFromJson(readTextFile(itemDir / "result.json"));
                     haveResult = true;
-                } catch (const Error&) {
-                }
+                } catch (const Error&) {}
             }
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
@@ -327,8 +361,9 @@ int cmdGrade(const GradeOptions& g) {
     // A wall-clock limit depends on the load: an item that timed out while
     // others ran beside it gets a second run on its own before it scores 0.
     if (completed && !timedOut.empty()) {
-        std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n", timedOut.size(),
-                     timedOut.size() == 1 ? "" : "s", timedOut.size() == 1 ? "it" : "them", timedOut.size() == 1 ? "its" : "their");
+        std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n",
+                     timedOut.size(), timedOut.size() == 1 ? "" : "s",
+                     timedOut.size() == 1 ? "it" : "them", timedOut.size() == 1 ? "its" : "their");
         completed = runItems(timedOut, 1, [&](const Item& item, StageResult r) {
             progress.done(students[item.student], r);
             graded[{item.student, item.stage->id}] = std::move(r);
@@ -337,7 +372,8 @@ int cmdGrade(const GradeOptions& g) {
     if (!completed) return 130;
     for (std::size_t i = 0; i < students.size(); ++i)
         for (const StageInfo* s : stages) result.students[i].stages.push_back(graded[{i, s->id}]);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // 3. The reports.
     for (const StudentResult& st : result.students) {
@@ -351,22 +387,32 @@ int cmdGrade(const GradeOptions& g) {
     writeJunitXml(result, out / "junit.xml");
     writeHtmlReport(result, out);
     printSummary(result);
-    std::printf("graded in %.1f s; report: %s\n", result.seconds, fs::absolute(out / "report.html").lexically_normal().c_str());
+    std::printf("graded in %.1f s; report: %s\n", result.seconds,
+                fs::absolute(out / "report.html").lexically_normal().c_str());
     return 0;
 }
 
 Command gradeCommand() {
-    return {"grade", "grade a whole class headlessly: one folder per student, each laid out like labs/", [](CLI::App& cmd) {
-                auto g = std::make_shared<GradeOptions>();
-                cmd.add_option("--submissions", g->submissions, "folder with one subfolder per student")->required();
-                cmd.add_option("--out", g->outDir, "folder for report.html, summary.csv, junit.xml, <student>/results.json")->required();
-                cmd.add_option("--stages", g->stages, "comma-separated stages to grade (default: all)");
-                cmd.add_option("--jobs", g->jobs, "submissions graded at once")->capture_default_str();
-                cmd.add_option("--timeout", g->timeoutSeconds, "seconds per stage of a submission")->capture_default_str();
-                cmd.add_option("--memory-mb", g->memoryMb, "address-space limit per stage of a submission, MB (0: none)")->capture_default_str();
-                cmd.add_option("--seed", g->seed, "seed of the extra camera views (keep it secret)")->capture_default_str();
-                return std::function<int()>([=] { return cmdGrade(*g); });
-            }};
+    return {
+        "grade", "grade a whole class headlessly: one folder per student, each laid out like labs/",
+        [](CLI::App& cmd) {
+            auto g = std::make_shared<GradeOptions>();
+            cmd.add_option("--submissions", g->submissions, "folder with one subfolder per student")
+                ->required();
+            cmd.add_option("--out", g->outDir,
+                           "folder for report.html, summary.csv, junit.xml, <student>/results.json")
+                ->required();
+            cmd.add_option("--stages", g->stages, "comma-separated stages to grade (default: all)");
+            cmd.add_option("--jobs", g->jobs, "submissions graded at once")->capture_default_str();
+            cmd.add_option("--timeout", g->timeoutSeconds, "seconds per stage of a submission")
+                ->capture_default_str();
+            cmd.add_option("--memory-mb", g->memoryMb,
+                           "address-space limit per stage of a submission, MB (0: none)")
+                ->capture_default_str();
+            cmd.add_option("--seed", g->seed, "seed of the extra camera views (keep it secret)")
+                ->capture_default_str();
+            return std::function<int()>([=] { return cmdGrade(*g); });
+        }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -3,8 +3,8 @@
 // process so that a submission's endless loop, crash or memory blow-up ends
 // only that process (cmd_grade.cpp reports it and goes on).
 #include "atomic_file.h"
-#include "commands.h"
 #include "command.h"
+#include "commands.h"
 #include "error.h"
 #include "gl_loader.h"
 #include "grade_stage.h"
@@ -18,14 +18,16 @@ int cmdGradeReference(const std::string& stageId, const std::string& outDir, uns
     const StageInfo& stage = findStage(stageId);
     auto context = createHeadlessContext(Backend::Auto);
     renderGradingReferences(stage, seed, outDir);
-    writeTextFileAtomic(std::filesystem::path(outDir) / "reference" / "machine.txt", glDescription() + "\n");
+    writeTextFileAtomic(std::filesystem::path(outDir) / "reference" / "machine.txt",
+                        glDescription() + "\n");
     return 0;
 }
 
-int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const std::string& student, const std::string& outDir,
-                 unsigned seed) {
+int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const std::string& student,
+                 const std::string& outDir, unsigned seed) {
     const StageInfo& stage = findStage(stageId);
-    const std::filesystem::path resultFile = studentFolder(outDir, student) / stage.id / "result.json";
+    const std::filesystem::path resultFile =
+        studentFolder(outDir, student) / stage.id / "result.json";
     try {
         auto context = createHeadlessContext(Backend::Auto);
         StageResult result = gradeStage(stage, labRoot, student, outDir, seed);
@@ -50,7 +52,7 @@ struct ItemOptions {
     std::string stage, lab, student, out;
     unsigned seed = 0;
 };
-} // namespace
+}  // namespace
 
 Command gradeItemCommand() {
     return {"grade-item", "", [](CLI::App& cmd) {
@@ -60,7 +62,8 @@ Command gradeItemCommand() {
                 cmd.add_option("--student", o->student)->required();
                 cmd.add_option("--out", o->out)->required();
                 cmd.add_option("--seed", o->seed);
-                return std::function<int()>([=] { return cmdGradeItem(o->stage, o->lab, o->student, o->out, o->seed); });
+                return std::function<int()>(
+                    [=] { return cmdGradeItem(o->stage, o->lab, o->student, o->out, o->seed); });
             }};
 }
 
@@ -70,8 +73,9 @@ Command gradeReferenceCommand() {
                 cmd.add_option("--stage", o->stage)->required();
                 cmd.add_option("--out", o->out)->required();
                 cmd.add_option("--seed", o->seed);
-                return std::function<int()>([=] { return cmdGradeReference(o->stage, o->out, o->seed); });
+                return std::function<int()>(
+                    [=] { return cmdGradeReference(o->stage, o->out, o->seed); });
             }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,8 +1,8 @@
 // `raylab rays`: the primary rays of a frame exactly as the GPU computed them
 // (format: ray_dump.h).
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "debug_views.h"
 #include "error.h"
 #include "ray_dump.h"
@@ -16,7 +16,8 @@ int cmdRays(const StageOptions& options, const std::string& outFile, Backend bac
     std::error_code ec;
     std::filesystem::path out(outFile);
     std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
-    if (!std::filesystem::is_directory(dir, ec)) throw Error("--out '" + outFile + "': folder " + dir.string() + " does not exist");
+    if (!std::filesystem::is_directory(dir, ec))
+        throw Error("--out '" + outFile + "': folder " + dir.string() + " does not exist");
     StageSetup setup = resolveStageOptions(options);
 
     auto context = createHeadlessContext(backend);
@@ -36,13 +37,16 @@ int cmdRays(const StageOptions& options, const std::string& outFile, Backend bac
         r[3] = rgba[4 * i], r[4] = rgba[4 * i + 1], r[5] = rgba[4 * i + 2];
     }
     writeRayDumpAtomic(dump, out);
-    std::printf("raylab: wrote %s (%dx%d primary rays from the GPU, origin + unit direction per pixel, stage %s, %s, %s backend)\n",
-                outFile.c_str(), w, h, setup.stage->id.c_str(), setup.sources.label.c_str(), context->backendName().c_str());
+    std::printf("raylab: wrote %s (%dx%d primary rays from the GPU, origin + unit direction per "
+                "pixel, stage %s, %s, %s backend)\n",
+                outFile.c_str(), w, h, setup.stage->id.c_str(), setup.sources.label.c_str(),
+                context->backendName().c_str());
     return 0;
 }
 
 Command raysCommand() {
-    return {"rays", "write the primary rays the GPU computes for every pixel to a file", [](CLI::App& cmd) {
+    return {"rays", "write the primary rays the GPU computes for every pixel to a file",
+            [](CLI::App& cmd) {
                 struct Options {
                     StageOptions stage;
                     std::string out;
@@ -51,7 +55,10 @@ Command raysCommand() {
                 auto o = std::make_shared<Options>();
                 o->stage.size = "800x600";
                 CLI::Option* lab = addStageOptions(cmd, o->stage, true);
-                cmd.add_option("--out", o->out, "output file (RLRAYS01: header, then origin and direction per pixel)")->required();
+                cmd.add_option(
+                       "--out", o->out,
+                       "output file (RLRAYS01: header, then origin and direction per pixel)")
+                    ->required();
                 auto backend = std::make_shared<BackendOption>(cmd);
                 return std::function<int()>([=] {
                     o->backend = backend->resolve();
@@ -61,4 +68,4 @@ Command raysCommand() {
             }};
 }
 
-} // namespace raylab
+}  // namespace raylab

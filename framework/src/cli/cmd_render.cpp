@@ -1,6 +1,6 @@
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "debug_views.h"
 #include "error.h"
 #include "paths.h"
@@ -16,22 +16,26 @@ namespace {
 bool checkOutputFile(const std::filesystem::path& out) {
     if (out.empty()) throw Error("--out FILE.png or FILE.pfm is required");
     if (out.extension() != ".png" && out.extension() != ".pfm")
-        throw Error("--out '" + out.string() + "': the file name must end in .png (a picture) or .pfm (raw floats)");
+        throw Error("--out '" + out.string() +
+                    "': the file name must end in .png (a picture) or .pfm (raw floats)");
     std::error_code ec;
     std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
-    if (!std::filesystem::is_directory(dir, ec)) throw Error("--out '" + out.string() + "': folder " + dir.string() + " does not exist");
+    if (!std::filesystem::is_directory(dir, ec))
+        throw Error("--out '" + out.string() + "': folder " + dir.string() + " does not exist");
     return out.extension() == ".pfm";
 }
 
 // The frame drawn as `raylab render` always drew it (8-bit colour).
 int renderColorPng(const StageSetup& setup, const RenderOptions& render) {
     auto context = createHeadlessContext(render.backend);
-    StageRenderer renderer(*setup.stage, setup.sources, setup.scene, setup.size.width, setup.size.height);
+    StageRenderer renderer(*setup.stage, setup.sources, setup.scene, setup.size.width,
+                           setup.size.height);
     reportOpenTodos(renderer.openTodos());
     renderer.render(setup.camera, setup.time, setup.settings);
     writePngAtomic(renderer.read(), render.outFile);
-    std::printf("raylab: wrote %s (%dx%d, stage %s, %s, %s backend)\n", render.outFile.c_str(), setup.size.width, setup.size.height,
-                setup.stage->id.c_str(), setup.sources.label.c_str(), context->backendName().c_str());
+    std::printf("raylab: wrote %s (%dx%d, stage %s, %s, %s backend)\n", render.outFile.c_str(),
+                setup.size.width, setup.size.height, setup.stage->id.c_str(),
+                setup.sources.label.c_str(), context->backendName().c_str());
     return 0;
 }
 
@@ -41,12 +45,15 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
     const int w = setup.size.width, h = setup.size.height;
     std::vector<float> rgba;
     if (view == DebugView::Color) {
-        StageRenderer renderer(*setup.stage, setup.sources, setup.scene, w, h, PixelFormat::Rgba32F);
+        StageRenderer renderer(*setup.stage, setup.sources, setup.scene, w, h,
+                               PixelFormat::Rgba32F);
         reportOpenTodos(renderer.openTodos());
         renderer.render(setup.camera, setup.time, setup.settings);
         rgba = renderer.target().readFloats();
     } else {
-        GpuView gv = view == DebugView::Depth ? GpuView::Depth : view == DebugView::Normal ? GpuView::Normal : GpuView::Id;
+        GpuView gv = view == DebugView::Depth    ? GpuView::Depth
+                     : view == DebugView::Normal ? GpuView::Normal
+                                                 : GpuView::Id;
         GpuViewRenderer renderer(gv, *setup.stage, setup.sources, setup.scene, w, h);
         reportOpenTodos(renderer.openTodos());
         renderer.render(setup.camera, setup.time, setup.settings);
@@ -57,48 +64,59 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
 }
 
 ViewData referenceView(DebugView view, const StageSetup& setup, std::string* source) {
-    ReferenceTracer tracer(setup.scene, ReferenceFeatures::forStage(*setup.stage), setup.time, setup.settings);
-    std::vector<ReferenceSample> samples = tracer.traceImage(setup.camera, setup.size.width, setup.size.height);
+    ReferenceTracer tracer(setup.scene, ReferenceFeatures::forStage(*setup.stage), setup.time,
+                           setup.settings);
+    std::vector<ReferenceSample> samples =
+        tracer.traceImage(setup.camera, setup.size.width, setup.size.height);
     *source = "reference tracer";
     return viewFromReference(view, samples, setup.size.width, setup.size.height);
 }
 
-} // namespace
+}  // namespace
 
 int cmdRender(const StageOptions& options, const RenderOptions& render) {
     // Every input is checked before anything is drawn or written.
     const DebugView view = parseDebugView(render.view);
     const bool pfm = checkOutputFile(render.outFile);
     if (viewNeedsReference(view) && !render.reference)
-        throw Error(std::string("--view ") + debugViewName(view) + " needs --reference (the GPU shaders do not count rays)");
+        throw Error(std::string("--view ") + debugViewName(view) +
+                    " needs --reference (the GPU shaders do not count rays)");
     StageSetup setup = resolveStageOptions(options);
     if (view == DebugView::Color && !pfm && !render.reference) return renderColorPng(setup, render);
 
     std::string source;
-    ViewData data = render.reference ? referenceView(view, setup, &source) : gpuView(view, setup, render.backend, &source);
+    ViewData data = render.reference ? referenceView(view, setup, &source)
+                                     : gpuView(view, setup, render.backend, &source);
     std::string mapping;
     if (pfm) {
         writePfmAtomic(data.values, render.outFile);
-        mapping = std::string(data.values.channels == 3 ? "3" : "1") + " float" + (data.values.channels == 3 ? "s" : "") +
-                  " per pixel: " + pfmDescription(data);
+        mapping = std::string(data.values.channels == 3 ? "3" : "1") + " float" +
+                  (data.values.channels == 3 ? "s" : "") + " per pixel: " + pfmDescription(data);
     } else {
         writePngAtomic(viewToPng(data, &mapping), render.outFile);
     }
-    std::printf("raylab: wrote %s (%s view, %dx%d, stage %s, %s): %s\n", render.outFile.c_str(), debugViewName(view), setup.size.width,
-                setup.size.height, setup.stage->id.c_str(), source.c_str(), mapping.c_str());
+    std::printf("raylab: wrote %s (%s view, %dx%d, stage %s, %s): %s\n", render.outFile.c_str(),
+                debugViewName(view), setup.size.width, setup.size.height, setup.stage->id.c_str(),
+                source.c_str(), mapping.c_str());
     return 0;
 }
 
 Command renderCommand() {
-    return {"render", "render one frame (or a debug view of it) headless to a PNG or PFM file", [](CLI::App& cmd) {
+    return {"render", "render one frame (or a debug view of it) headless to a PNG or PFM file",
+            [](CLI::App& cmd) {
                 auto stage = std::make_shared<StageOptions>();
                 auto render = std::make_shared<RenderOptions>();
                 stage->size = "800x600";
                 CLI::Option* lab = addStageOptions(cmd, *stage, true);
-                cmd.add_option("--out", render->outFile, "output file: .png (a picture) or .pfm (raw floats)")->required();
+                cmd.add_option("--out", render->outFile,
+                               "output file: .png (a picture) or .pfm (raw floats)")
+                    ->required();
                 auto backend = std::make_shared<BackendOption>(cmd);
-                cmd.add_option("--view", render->view, "color, depth, normal, id; with --reference also bounces, stack")->capture_default_str();
-                cmd.add_flag("--reference", render->reference, "draw with the CPU reference tracer instead of the GPU");
+                cmd.add_option("--view", render->view,
+                               "color, depth, normal, id; with --reference also bounces, stack")
+                    ->capture_default_str();
+                cmd.add_flag("--reference", render->reference,
+                             "draw with the CPU reference tracer instead of the GPU");
                 return std::function<int()>([=] {
                     render->backend = backend->resolve();
                     stage->labGiven = lab->count() > 0;
@@ -107,4 +125,4 @@ Command renderCommand() {
             }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,6 +1,6 @@
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "viewer_app.h"
 
 #include <cstdlib>
@@ -15,18 +15,23 @@ bool displayAvailable() {
 
 int cmdRun(const StageOptions& options, const RunOptions& run) {
     StageSetup setup = resolveStageOptions(options);
-    ViewerApp app(std::move(setup), ViewerApp::Automation{run.exitAfterFrames, run.screenshot}, !run.noVsync);
+    ViewerApp app(std::move(setup), ViewerApp::Automation{run.exitAfterFrames, run.screenshot},
+                  !run.noVsync);
     return app.run();
 }
 
 Command runCommand() {
-    return {"run", "open a stage in a window (W/A/S/D, mouse, V vsync, P pause, F12 screenshot)", [](CLI::App& cmd) {
+    return {"run", "open a stage in a window (W/A/S/D, mouse, V vsync, P pause, F12 screenshot)",
+            [](CLI::App& cmd) {
                 auto stage = std::make_shared<StageOptions>();
                 auto run = std::make_shared<RunOptions>();
                 CLI::Option* lab = addStageOptions(cmd, *stage, true);
                 cmd.add_flag("--no-vsync", run->noVsync, "start with vsync off");
-                cmd.add_option("--frames", run->exitAfterFrames, "quit after N frames (for scripts)")->check(CLI::Range(1, 1000000));
-                cmd.add_option("--screenshot", run->screenshot, "with --frames: write the last frame to this PNG");
+                cmd.add_option("--frames", run->exitAfterFrames,
+                               "quit after N frames (for scripts)")
+                    ->check(CLI::Range(1, 1000000));
+                cmd.add_option("--screenshot", run->screenshot,
+                               "with --frames: write the last frame to this PNG");
                 return std::function<int()>([=] {
                     stage->labGiven = lab->count() > 0;
                     return cmdRun(*stage, *run);
@@ -34,4 +39,4 @@ Command runCommand() {
             }};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,5 +1,5 @@
-#include "commands.h"
 #include "command.h"
+#include "commands.h"
 
 #include <cstdio>
 
@@ -18,7 +18,8 @@ int cmdStages() {
 }
 
 Command stagesCommand() {
-    return {"stages", "list the stages of the course", [](CLI::App&) { return std::function<int()>(cmdStages); }};
+    return {"stages", "list the stages of the course",
+            [](CLI::App&) { return std::function<int()>(cmdStages); }};
 }
 
-} // namespace raylab
+}  // namespace raylab

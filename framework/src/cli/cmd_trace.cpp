@@ -1,8 +1,8 @@
 // raylab trace: one pixel's path through the scene, bounce by bounce, from
 // the CPU reference tracer (reference_tracer.h). Needs no OpenGL context.
-#include "commands.h"
-#include "command_options.h"
 #include "command.h"
+#include "command_options.h"
+#include "commands.h"
 #include "error.h"
 #include "reference_tracer.h"
 
@@ -21,8 +21,10 @@ void parsePixel(const std::string& text, int& x, int& y) {
     std::istringstream in(text);
     char comma = 0;
     long long px = 0, py = 0;
-    if (!(in >> px >> comma >> py) || comma != ',' || !(in >> std::ws).eof() || std::llabs(px) > 1000000 || std::llabs(py) > 1000000)
-        throw Error("--pixel '" + text + "': expected X,Y (two whole numbers, e.g. 400,300; 0,0 is the top left)");
+    if (!(in >> px >> comma >> py) || comma != ',' || !(in >> std::ws).eof() ||
+        std::llabs(px) > 1000000 || std::llabs(py) > 1000000)
+        throw Error("--pixel '" + text +
+                    "': expected X,Y (two whole numbers, e.g. 400,300; 0,0 is the top left)");
     x = int(px);
     y = int(py);
 }
@@ -35,7 +37,7 @@ std::string vec(const glm::dvec3& v) {
 
 int byte(double c) { return int(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
-} // namespace
+}  // namespace
 
 int cmdTrace(const StageOptions& options, const std::string& pixel) {
     int x = 0, y = 0;
@@ -43,47 +45,56 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
     StageSetup setup = resolveStageOptions(options);
     const int w = setup.size.width, h = setup.size.height;
     if (x < 0 || y < 0 || x >= w || y >= h)
-        throw Error("--pixel " + pixel + ": outside the " + std::to_string(w) + "x" + std::to_string(h) + " image (x 0.." +
-                    std::to_string(w - 1) + ", y 0.." + std::to_string(h - 1) + ")");
+        throw Error("--pixel " + pixel + ": outside the " + std::to_string(w) + "x" +
+                    std::to_string(h) + " image (x 0.." + std::to_string(w - 1) + ", y 0.." +
+                    std::to_string(h - 1) + ")");
     const StageInfo& stage = *setup.stage;
     const ReferenceFeatures features = ReferenceFeatures::forStage(stage);
     ReferenceTracer tracer(setup.scene, features, setup.time, setup.settings);
 
     const RenderSettings& s = setup.settings;
-    std::printf("raylab trace: stage %s, the solution's model on the CPU in double precision; scene %s, %dx%d, time %g s\n",
+    std::printf("raylab trace: stage %s, the solution's model on the CPU in double precision; "
+                "scene %s, %dx%d, time %g s\n",
                 stage.id.c_str(), setup.scene.file.c_str(), w, h, double(setup.time));
-    std::printf("  settings: shadows %s, depth %d, glow %s, normal maps %s, colour mode %s\n", s.shadows ? "on" : "off", s.maxDepth,
-                s.glow ? "on" : "off", s.normalMaps ? "on" : "off", kColorModes[s.colorMode]);
+    std::printf("  settings: shadows %s, depth %d, glow %s, normal maps %s, colour mode %s\n",
+                s.shadows ? "on" : "off", s.maxDepth, s.glow ? "on" : "off",
+                s.normalMaps ? "on" : "off", kColorModes[s.colorMode]);
     const PrimaryRay ray = primaryRay(setup.camera, w, h, x, y);
-    std::printf("pixel %d,%d (0,0 top left): primary ray from %s along %s\n", x, y, vec(ray.origin).c_str(), vec(ray.dir).c_str());
+    std::printf("pixel %d,%d (0,0 top left): primary ray from %s along %s\n", x, y,
+                vec(ray.origin).c_str(), vec(ray.dir).c_str());
     std::fflush(stdout);
 
     std::ostringstream log;
     const ReferenceSample sample = tracer.trace(ray, &log);
     std::fputs(log.str().c_str(), stdout);
     if (sample.id >= 0)
-        std::printf("primary hit: t=%.6g, id %d, normal %s\n", sample.depth, sample.id, vec(sample.normal).c_str());
-    else
-        std::printf("primary hit: none\n");
-    std::printf("rays traced: %d, most rays waiting on the stack: %d%s\n", sample.rays, sample.maxStack,
+        std::printf("primary hit: t=%.6g, id %d, normal %s\n", sample.depth, sample.id,
+                    vec(sample.normal).c_str());
+    else std::printf("primary hit: none\n");
+    std::printf("rays traced: %d, most rays waiting on the stack: %d%s\n", sample.rays,
+                sample.maxStack,
                 sample.stackOverflow ? ", stack overflowed (a refracted ray was dropped)" : "");
     const glm::dvec3& c = sample.color;
-    std::printf("colour: %s = %d, %d, %d of 255\n", vec(c).c_str(), byte(c.r), byte(c.g), byte(c.b));
+    std::printf("colour: %s = %d, %d, %d of 255\n", vec(c).c_str(), byte(c.r), byte(c.g),
+                byte(c.b));
     return 0;
 }
 
 Command traceCommand() {
-    return {"trace", "print one pixel's path bounce by bounce, from the CPU reference tracer (no GPU)", [](CLI::App& cmd) {
-                auto stage = std::make_shared<StageOptions>();
-                auto pixel = std::make_shared<std::string>();
-                stage->size = "800x600";
-                CLI::Option* lab = addStageOptions(cmd, *stage, true);
-                cmd.add_option("--pixel", *pixel, "the pixel X,Y of the --size image (0,0 top left)")->required();
-                return std::function<int()>([=] {
-                    stage->labGiven = lab->count() > 0;
-                    return cmdTrace(*stage, *pixel);
-                });
-            }};
+    return {
+        "trace", "print one pixel's path bounce by bounce, from the CPU reference tracer (no GPU)",
+        [](CLI::App& cmd) {
+            auto stage = std::make_shared<StageOptions>();
+            auto pixel = std::make_shared<std::string>();
+            stage->size = "800x600";
+            CLI::Option* lab = addStageOptions(cmd, *stage, true);
+            cmd.add_option("--pixel", *pixel, "the pixel X,Y of the --size image (0,0 top left)")
+                ->required();
+            return std::function<int()>([=] {
+                stage->labGiven = lab->count() > 0;
+                return cmdTrace(*stage, *pixel);
+            });
+        }};
 }
 
-} // namespace raylab
+}  // namespace raylab

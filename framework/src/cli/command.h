@@ -21,4 +21,4 @@ struct Command {
 // Every command, in the order `raylab --help` lists them.
 const std::vector<Command>& commandTable();
 
-} // namespace raylab
+}  // namespace raylab

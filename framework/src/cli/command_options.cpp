@@ -3,26 +3,39 @@
 namespace raylab {
 
 CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
-    cmd.add_option("--stage", o.stage, "stage id or number, e.g. 01-raycast or 01 (see `raylab stages`)")->required();
-    CLI::Option* lab = cmd.add_option("--lab", o.labDir, "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
-                           ->expected(0, 1);
+    cmd.add_option("--stage", o.stage,
+                   "stage id or number, e.g. 01-raycast or 01 (see `raylab stages`)")
+        ->required();
+    CLI::Option* lab =
+        cmd.add_option("--lab", o.labDir,
+                       "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
+            ->expected(0, 1);
     cmd.add_flag("--solution", o.solution, "use the complete solution instead of a lab");
-    cmd.add_option("--scene", o.scene, "scene file (default: the stage's scene under assets/scenes/)");
+    cmd.add_option("--scene", o.scene,
+                   "scene file (default: the stage's scene under assets/scenes/)");
     cmd.add_option("--size", o.size, "image size WIDTHxHEIGHT")->capture_default_str();
     if (withCamera) {
-        cmd.add_option("--camera", o.camera, "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
+        cmd.add_option("--camera", o.camera,
+                       "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
         cmd.add_option("--time", o.time, "animation time in seconds")->capture_default_str();
-        cmd.add_flag("--no-shadows", o.noShadows, "start with shadows off (stage 03 on; key 1 in the window)");
-        cmd.add_option("--depth", o.maxDepth, "rays per path, 1..8 (stage 04 on; arrow keys in the window)")->capture_default_str();
+        cmd.add_flag("--no-shadows", o.noShadows,
+                     "start with shadows off (stage 03 on; key 1 in the window)");
+        cmd.add_option("--depth", o.maxDepth,
+                       "rays per path, 1..8 (stage 04 on; arrow keys in the window)")
+            ->capture_default_str();
         cmd.add_flag("--no-glow", o.noGlow, "start without the sun's glow (stage 06 on; key G)");
-        cmd.add_flag("--no-normal-maps", o.noNormalMaps, "start without normal maps (stage 07 on; key N)");
-        cmd.add_option("--color-mode", o.colorMode, "colour mode RGB, BRB, BRR, RBB or GGR (stage 08; Up/Down)")->capture_default_str();
+        cmd.add_flag("--no-normal-maps", o.noNormalMaps,
+                     "start without normal maps (stage 07 on; key N)");
+        cmd.add_option("--color-mode", o.colorMode,
+                       "colour mode RGB, BRB, BRR, RBB or GGR (stage 08; Up/Down)")
+            ->capture_default_str();
     }
     return lab;
 }
 
 BackendOption::BackendOption(CLI::App& cmd) {
-    cmd.add_option("--backend", name_, "headless backend: auto, egl or osmesa")->capture_default_str();
+    cmd.add_option("--backend", name_, "headless backend: auto, egl or osmesa")
+        ->capture_default_str();
 }
 
-} // namespace raylab
+}  // namespace raylab

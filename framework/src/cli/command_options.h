@@ -23,4 +23,4 @@ private:
     std::string name_ = "auto";
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -1,7 +1,7 @@
 // The table of `raylab`'s commands. A new command is a cmd_*.cpp that
 // defines a Command, plus one line here.
-#include "command.h"
 #include "commands.h"
+#include "command.h"
 
 #include <string>
 
@@ -20,21 +20,23 @@ Command benchCommand();
 Command checkCommand();
 
 const std::vector<Command>& commandTable() {
-    static const std::vector<Command> table = {stagesCommand(), runCommand(),  renderCommand(),        raysCommand(),
-                                               traceCommand(),  gradeCommand(), gradeItemCommand(), gradeReferenceCommand(),
-                                               demoCommand(),   benchCommand(), checkCommand()};
+    static const std::vector<Command> table = {
+        stagesCommand(), runCommand(),   renderCommand(),    raysCommand(),
+        traceCommand(),  gradeCommand(), gradeItemCommand(), gradeReferenceCommand(),
+        demoCommand(),   benchCommand(), checkCommand()};
     return table;
 }
 
 namespace {
 std::string gCommandLine;
-} // namespace
+}  // namespace
 
 void rememberCommandLine(int argc, char** argv) {
     gCommandLine.clear();
-    for (int i = 0; i < argc; ++i) gCommandLine += (i ? " " : "") + std::string(i ? argv[i] : "raylab");
+    for (int i = 0; i < argc; ++i)
+        gCommandLine += (i ? " " : "") + std::string(i ? argv[i] : "raylab");
 }
 
 const std::string& programCommandLine() { return gCommandLine; }
 
-} // namespace raylab
+}  // namespace raylab

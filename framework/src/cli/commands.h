@@ -19,10 +19,10 @@ struct RunOptions {
 int cmdRun(const StageOptions& stage, const RunOptions& run);
 
 struct RenderOptions {
-    std::string outFile;        // .png (a picture) or .pfm (raw floats)
+    std::string outFile;  // .png (a picture) or .pfm (raw floats)
     Backend backend = Backend::Auto;
-    std::string view = "color"; // color, depth, normal, id, bounces, stack (debug_views.h)
-    bool reference = false;     // draw with the CPU reference tracer instead of the GPU
+    std::string view = "color";  // color, depth, normal, id, bounces, stack (debug_views.h)
+    bool reference = false;      // draw with the CPU reference tracer instead of the GPU
 };
 int cmdRender(const StageOptions& stage, const RenderOptions& render);
 
@@ -34,8 +34,8 @@ int cmdRays(const StageOptions& stage, const std::string& outFile, Backend backe
 int cmdTrace(const StageOptions& stage, const std::string& pixel);
 
 struct DemoOptions {
-    std::string stage;   // empty: the highest finished stage
-    std::string scene;   // "lite", "pro" or a file; empty: the stage's scene
+    std::string stage;  // empty: the highest finished stage
+    std::string scene;  // "lite", "pro" or a file; empty: the stage's scene
     std::string size = "800x600";
     std::string outDir;  // empty: a new folder under the current directory
     int frames = 6;
@@ -57,18 +57,19 @@ int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 struct GradeOptions {
     std::string submissions;  // one folder per student, each laid out like labs/
     std::string outDir;
-    std::string stages;       // "01,02,04"; empty: every available stage
+    std::string stages;  // "01,02,04"; empty: every available stage
     int jobs = 2;
     double timeoutSeconds = 60.0;  // per stage of a submission
-    long memoryMb = 2048;          // per stage of a submission (address space); the pro scene needs well under 1 GB
-    unsigned seed = 0;             // of the seeded views; keep it secret to prevent tuning
+    long memoryMb =
+        2048;  // per stage of a submission (address space); the pro scene needs well under 1 GB
+    unsigned seed = 0;  // of the seeded views; keep it secret to prevent tuning
 };
 int cmdGrade(const GradeOptions& grade);
 
 // The child-process halves of `raylab grade` (not for direct use).
 int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);
-int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student, const std::string& outDir,
-                 unsigned seed);
+int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student,
+                 const std::string& outDir, unsigned seed);
 
 struct BenchOptions {
     std::string outDir;               // bench.csv, bench.md, bench.png go here (made when missing)
@@ -77,7 +78,7 @@ struct BenchOptions {
     std::string size;                 // empty: 800x600 (quick: 160x120)
     int frames = 0;                   // timed frames per setting; 0: 5 (quick: 1)
     Backend backend = Backend::Auto;
-    std::string commandLine;          // for the report
+    std::string commandLine;  // for the report
 };
 int cmdBench(const BenchOptions& bench);
 
@@ -88,4 +89,4 @@ const std::string& programCommandLine();
 // True when a window can be opened (X11 or Wayland display set).
 bool displayAvailable();
 
-} // namespace raylab
+}  // namespace raylab

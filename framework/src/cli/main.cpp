@@ -14,7 +14,8 @@ using namespace raylab;
 int main(int argc, char** argv) {
     rememberProgramArguments(argc, argv);
     rememberCommandLine(argc, argv);
-    CLI::App app{"RayLab: build a real-time GPU ray tracer stage by stage, and grade it headlessly."};
+    CLI::App app{
+        "RayLab: build a real-time GPU ray tracer stage by stage, and grade it headlessly."};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "help for every subcommand");
 
@@ -34,7 +35,8 @@ int main(int argc, char** argv) {
             return app.exit(e);
         } catch (const CLI::ParseError& e) {
             std::string help = "raylab --help";
-            for (const CLI::App* sub : app.get_subcommands()) help = "raylab " + sub->get_name() + " --help";
+            for (const CLI::App* sub : app.get_subcommands())
+                help = "raylab " + sub->get_name() + " --help";
             std::fprintf(stderr, "raylab: error: %s (see %s)\n", e.what(), help.c_str());
             return 2;
         }

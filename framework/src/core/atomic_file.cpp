@@ -30,13 +30,14 @@ int writeAll(int fd, const std::string& text) {
     return 0;
 }
 
-} // namespace
+}  // namespace
 
 void writeTextFileAtomic(const fs::path& file, const std::string& text) {
     const std::string what = "cannot write " + displayPath(file) + ": ";
     std::error_code ec;
     const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    if (!fs::is_directory(dir, ec)) throw Error(what + "folder " + displayPath(dir) + " does not exist");
+    if (!fs::is_directory(dir, ec))
+        throw Error(what + "folder " + displayPath(dir) + " does not exist");
     if (file.filename().empty()) throw Error(what + "not a file name");
 
     fs::path tmp = file;
@@ -45,7 +46,8 @@ void writeTextFileAtomic(const fs::path& file, const std::string& text) {
     if (fd < 0) throw Error(what + std::strerror(errno));
 
     int err = writeAll(fd, text);
-    if (err == 0 && ::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) err = errno;  // EINVAL: fs without fsync
+    if (err == 0 && ::fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
+        err = errno;  // EINVAL: fs without fsync
     if (::close(fd) != 0 && err == 0) err = errno;
     if (err == 0 && ::rename(tmp.c_str(), file.c_str()) != 0) err = errno;
     if (err != 0) {
@@ -54,4 +56,4 @@ void writeTextFileAtomic(const fs::path& file, const std::string& text) {
     }
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -12,4 +12,4 @@ namespace raylab {
 // Error("cannot write FILE: reason") is thrown.
 void writeTextFileAtomic(const std::filesystem::path& file, const std::string& text);
 
-} // namespace raylab
+}  // namespace raylab

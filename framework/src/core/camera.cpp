@@ -40,4 +40,4 @@ glm::vec3 Camera::rayDirection(int px, int py, int width, int height) const {
     return forward() * focalLength() + right() * (aspect * x) + up() * y;
 }
 
-} // namespace raylab
+}  // namespace raylab

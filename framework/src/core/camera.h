@@ -45,4 +45,4 @@ private:
     float fovYDeg_ = 36.87f;  // 2*atan(1/3): the seed's canvas 3 units ahead, half-height 1
 };
 
-} // namespace raylab
+}  // namespace raylab

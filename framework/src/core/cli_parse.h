@@ -18,4 +18,4 @@ inline constexpr int kMaxSide = 8192;
 // "x,y,z,yaw,pitch" (degrees; pitch within +-Camera::kMaxPitchDeg).
 CameraPose parseCamera(const std::string& text);
 
-} // namespace raylab
+}  // namespace raylab

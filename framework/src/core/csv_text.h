@@ -9,4 +9,4 @@ namespace raylab {
 
 std::string csvText(const std::string& raw);
 
-} // namespace raylab
+}  // namespace raylab

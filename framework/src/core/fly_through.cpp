@@ -17,4 +17,4 @@ CameraPose FlyThrough::poseAt(const CameraPose& start, int frame) const {
     return pose;
 }
 
-} // namespace raylab
+}  // namespace raylab

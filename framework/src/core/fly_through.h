@@ -12,7 +12,9 @@ struct FlyThrough {
     float secondsPerFrame = 0.1f;
 
     CameraPose poseAt(const CameraPose& start, int frame) const;
-    float timeAt(float startTime, int frame) const { return startTime + secondsPerFrame * float(frame); }
+    float timeAt(float startTime, int frame) const {
+        return startTime + secondsPerFrame * float(frame);
+    }
 };
 
-} // namespace raylab
+}  // namespace raylab

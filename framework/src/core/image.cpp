@@ -20,27 +20,33 @@ struct SurfaceDeleter {
     void operator()(SDL_Surface* s) const { SDL_FreeSurface(s); }
 };
 using SurfacePtr = std::unique_ptr<SDL_Surface, SurfaceDeleter>;
-} // namespace
+}  // namespace
 
 Image loadPng(const std::filesystem::path& file) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw Error("cannot read image " + displayPath(file) + ": no such file");
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw Error("cannot read image " + displayPath(file) + ": no such file");
     SurfacePtr loaded(IMG_Load(file.c_str()));
     if (!loaded) throw Error("cannot read image " + displayPath(file) + ": " + IMG_GetError());
     SurfacePtr rgba(SDL_ConvertSurfaceFormat(loaded.get(), SDL_PIXELFORMAT_RGBA32, 0));
     if (!rgba) throw Error("cannot convert image " + displayPath(file) + ": " + SDL_GetError());
     Image image(rgba->w, rgba->h);
     for (int y = 0; y < rgba->h; ++y)
-        std::memcpy(image.pixel(0, y), static_cast<const std::uint8_t*>(rgba->pixels) + y * rgba->pitch, std::size_t(rgba->w) * 4);
+        std::memcpy(image.pixel(0, y),
+                    static_cast<const std::uint8_t*>(rgba->pixels) + y * rgba->pitch,
+                    std::size_t(rgba->w) * 4);
     return image;
 }
 
 void writePngAtomic(const Image& image, const std::filesystem::path& file) {
     std::error_code ec;
     std::filesystem::path dir = file.parent_path().empty() ? "." : file.parent_path();
-    if (!std::filesystem::is_directory(dir, ec)) throw Error("cannot write " + file.string() + ": folder " + dir.string() + " does not exist");
-    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint8_t*>(image.rgba.data()), image.width, image.height, 32,
-                                                          image.width * 4, SDL_PIXELFORMAT_RGBA32));
+    if (!std::filesystem::is_directory(dir, ec))
+        throw Error("cannot write " + file.string() + ": folder " + dir.string() +
+                    " does not exist");
+    SurfacePtr surface(SDL_CreateRGBSurfaceWithFormatFrom(
+        const_cast<std::uint8_t*>(image.rgba.data()), image.width, image.height, 32,
+        image.width * 4, SDL_PIXELFORMAT_RGBA32));
     if (!surface) throw Error(std::string("cannot create image surface: ") + SDL_GetError());
     std::filesystem::path tmp = file;
     tmp += ".tmp-" + std::to_string(::getpid());
@@ -64,7 +70,8 @@ Image imageFromFloats(const std::vector<float>& rgba, int width, int height, lon
         bool finite = std::isfinite(in[0]) && std::isfinite(in[1]) && std::isfinite(in[2]);
         if (!finite) ++bad;
         for (int c = 0; c < 3; ++c)
-            out[c] = finite ? std::uint8_t(std::lround(std::clamp(in[c], 0.0f, 1.0f) * 255.0f)) : std::uint8_t(c == 1 ? 0 : 255);
+            out[c] = finite ? std::uint8_t(std::lround(std::clamp(in[c], 0.0f, 1.0f) * 255.0f))
+                            : std::uint8_t(c == 1 ? 0 : 255);
         out[3] = 255;
     }
     if (nonFinite) *nonFinite = bad;
@@ -75,16 +82,20 @@ Image resampledBilinear(const Image& src, int w, int h) {
     if (src.width == w && src.height == h) return src;
     Image out(w, h);
     for (int y = 0; y < h; ++y) {
-        float sy = std::clamp((float(y) + 0.5f) * float(src.height) / float(h) - 0.5f, 0.0f, float(src.height - 1));
+        float sy = std::clamp((float(y) + 0.5f) * float(src.height) / float(h) - 0.5f, 0.0f,
+                              float(src.height - 1));
         int y0 = int(sy), y1 = std::min(y0 + 1, src.height - 1);
         float fy = sy - float(y0);
         for (int x = 0; x < w; ++x) {
-            float sx = std::clamp((float(x) + 0.5f) * float(src.width) / float(w) - 0.5f, 0.0f, float(src.width - 1));
+            float sx = std::clamp((float(x) + 0.5f) * float(src.width) / float(w) - 0.5f, 0.0f,
+                                  float(src.width - 1));
             int x0 = int(sx), x1 = std::min(x0 + 1, src.width - 1);
             float fx = sx - float(x0);
             for (int c = 0; c < 4; ++c) {
-                float top = float(src.pixel(x0, y0)[c]) * (1 - fx) + float(src.pixel(x1, y0)[c]) * fx;
-                float bottom = float(src.pixel(x0, y1)[c]) * (1 - fx) + float(src.pixel(x1, y1)[c]) * fx;
+                float top =
+                    float(src.pixel(x0, y0)[c]) * (1 - fx) + float(src.pixel(x1, y0)[c]) * fx;
+                float bottom =
+                    float(src.pixel(x0, y1)[c]) * (1 - fx) + float(src.pixel(x1, y1)[c]) * fx;
                 out.pixel(x, y)[c] = std::uint8_t(std::lround(top * (1 - fy) + bottom * fy));
             }
         }
@@ -92,4 +103,4 @@ Image resampledBilinear(const Image& src, int w, int h) {
     return out;
 }
 
-} // namespace raylab
+}  // namespace raylab

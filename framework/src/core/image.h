@@ -15,8 +15,12 @@ struct Image {
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * std::size_t(h) * 4, 0) {}
-    const std::uint8_t* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
-    std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+    const std::uint8_t* pixel(int x, int y) const {
+        return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+    }
+    std::uint8_t* pixel(int x, int y) {
+        return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+    }
 };
 
 Image loadPng(const std::filesystem::path& file);
@@ -34,4 +38,4 @@ Image resampledBilinear(const Image& src, int w, int h);
 // Writes FILE.tmp-PID next to FILE, then renames it over FILE.
 void writePngAtomic(const Image& image, const std::filesystem::path& file);
 
-} // namespace raylab
+}  // namespace raylab

@@ -24,7 +24,7 @@ int nearestMatch(const Image& a, const Image& b, int x, int y) {
     return best;
 }
 
-} // namespace
+}  // namespace
 
 ImageDiff compareImages(const Image& a, const Image& b, int channelTolerance) {
     ImageDiff diff;
@@ -40,7 +40,8 @@ ImageDiff compareImages(const Image& a, const Image& b, int channelTolerance) {
             diff.maxDiff = std::max(diff.maxDiff, d);
             if (d > channelTolerance) ++diff.badPixels;
         }
-    diff.badShare = a.width * a.height > 0 ? double(diff.badPixels) / (double(a.width) * a.height) : 0.0;
+    diff.badShare =
+        a.width * a.height > 0 ? double(diff.badPixels) / (double(a.width) * a.height) : 0.0;
     return diff;
 }
 
@@ -51,7 +52,8 @@ bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol) {
 std::string describe(const ImageDiff& diff) {
     if (!diff.sameSize) return "image sizes differ";
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%.2f%% of pixels differ (max %d/255)", diff.badShare * 100.0, diff.maxDiff);
+    std::snprintf(buf, sizeof buf, "%.2f%% of pixels differ (max %d/255)", diff.badShare * 100.0,
+                  diff.maxDiff);
     return buf;
 }
 
@@ -80,19 +82,28 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
             magenta += isMagenta(m);
             expectedMagenta += isMagenta(e);
             int sumM = m[0] + m[1] + m[2], sumE = e[0] + e[1] + e[2];
-            int diff = std::max({std::abs(m[0] - e[0]), std::abs(m[1] - e[1]), std::abs(m[2] - e[2])});
+            int diff =
+                std::max({std::abs(m[0] - e[0]), std::abs(m[1] - e[1]), std::abs(m[2] - e[2])});
             if (diff <= channelTolerance) continue;
             ++differing;
             darker += sumM < sumE;
             brighter += sumM > sumE;
         }
     const long all = long(mine.width) * long(mine.height);
-    auto percent = [&](long n, long of) { return std::to_string(int(100.0 * double(n) / double(std::max(1L, of)) + 0.5)) + "%"; };
-    if (magenta > expectedMagenta + all / 100) return "magenta stripes on " + percent(magenta, all) + " of the image: an unfinished TODO is reached";
+    auto percent = [&](long n, long of) {
+        return std::to_string(int(100.0 * double(n) / double(std::max(1L, of)) + 0.5)) + "%";
+    };
+    if (magenta > expectedMagenta + all / 100)
+        return "magenta stripes on " + percent(magenta, all) +
+               " of the image: an unfinished TODO is reached";
     if (differing == 0) return "";
-    if (darker >= differing * 8 / 10) return percent(darker, differing) + " of the differing pixels are too dark (light missing, or shadow acne?)";
-    if (brighter >= differing * 8 / 10) return percent(brighter, differing) + " of the differing pixels are too bright (light that should be blocked or weighted?)";
+    if (darker >= differing * 8 / 10)
+        return percent(darker, differing) +
+               " of the differing pixels are too dark (light missing, or shadow acne?)";
+    if (brighter >= differing * 8 / 10)
+        return percent(brighter, differing) + " of the differing pixels are too bright (light that "
+                                              "should be blocked or weighted?)";
     return "";
 }
 
-} // namespace raylab
+}  // namespace raylab

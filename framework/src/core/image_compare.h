@@ -10,13 +10,14 @@ namespace raylab {
 struct ImageDiff {
     int badPixels = 0;      // pixels with no close match in the other image's 3x3 neighbourhood
     double badShare = 0.0;  // badPixels / all pixels
-    int maxDiff = 0;        // largest per-channel difference (0..255) after the neighbourhood search
+    int maxDiff = 0;  // largest per-channel difference (0..255) after the neighbourhood search
     bool sameSize = true;
 };
 
 struct CompareTolerance {
-    int channel = 8;              // a pixel matches if some neighbour differs by at most this in every channel (of 255)
-    double maxBadShare = 0.005;   // the images agree if at most this share of pixels has no match
+    int channel =
+        8;  // a pixel matches if some neighbour differs by at most this in every channel (of 255)
+    double maxBadShare = 0.005;  // the images agree if at most this share of pixels has no match
 };
 
 // For each pixel of A, the smallest difference (max over RGB) to a pixel of B
@@ -38,4 +39,4 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
 // A heat map of the per-pixel difference (black = equal, red = max), for reports.
 Image diffHeatMap(const Image& a, const Image& b);
 
-} // namespace raylab
+}  // namespace raylab

@@ -14,17 +14,20 @@ namespace {
 
 bool looksLikeRoot(const fs::path& dir) {
     std::error_code ec;
-    return fs::is_directory(dir / "framework" / "shaders", ec) && fs::is_directory(dir / "solution", ec);
+    return fs::is_directory(dir / "framework" / "shaders", ec) &&
+           fs::is_directory(dir / "solution", ec);
 }
 
 fs::path findRoot() {
     if (const char* env = std::getenv("RAYLAB_ROOT"); env && *env) {
         if (!looksLikeRoot(env))
-            throw Error(std::string("RAYLAB_ROOT=") + env + " is not a RayLab tree (no framework/shaders or solution/)");
+            throw Error(std::string("RAYLAB_ROOT=") + env +
+                        " is not a RayLab tree (no framework/shaders or solution/)");
         return fs::weakly_canonical(env);
     }
     std::error_code ec;
-    fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // not executablePath(): no error here, fall through
+    fs::path exe = fs::read_symlink("/proc/self/exe",
+                                    ec);  // not executablePath(): no error here, fall through
     if (!ec) {
         for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
             if (looksLikeRoot(dir)) return dir;
@@ -37,7 +40,7 @@ fs::path findRoot() {
     throw Error("cannot find the RayLab tree (framework/shaders, solution/): set RAYLAB_ROOT");
 }
 
-} // namespace
+}  // namespace
 
 fs::path executablePath() {
     std::error_code ec;
@@ -70,4 +73,4 @@ std::string readTextFile(const fs::path& p) {
     return ss.str();
 }
 
-} // namespace raylab
+}  // namespace raylab

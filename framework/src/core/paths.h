@@ -23,4 +23,4 @@ fs::path executablePath();
 // Reads a whole text file; throws Error("cannot read FILE: reason").
 std::string readTextFile(const fs::path& p);
 
-} // namespace raylab
+}  // namespace raylab

@@ -25,14 +25,16 @@ std::uint32_t byteSwap(std::uint32_t v) {
     return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
 }
 
-} // namespace
+}  // namespace
 
 std::string encodePfm(const FloatImage& image) {
-    if (image.channels != 1 && image.channels != 3) throw Error("a PFM image has 1 or 3 channels, not " + std::to_string(image.channels));
-    if (image.values.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
+    if (image.channels != 1 && image.channels != 3)
+        throw Error("a PFM image has 1 or 3 channels, not " + std::to_string(image.channels));
+    if (image.values.size() !=
+        std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
         throw Error("PFM image: the values do not match the size");
-    std::string out = std::string(image.channels == 3 ? "PF" : "Pf") + "\n" + std::to_string(image.width) + " " +
-                      std::to_string(image.height) + "\n-1.0\n";
+    std::string out = std::string(image.channels == 3 ? "PF" : "Pf") + "\n" +
+                      std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
     const std::size_t header = out.size();
     const std::size_t row = std::size_t(image.width) * std::size_t(image.channels);
     out.resize(header + row * std::size_t(image.height) * sizeof(float));
@@ -61,7 +63,8 @@ FloatImage decodePfm(const std::string& bytes, const std::string& what) {
         return bytes.substr(start, pos - start);
     };
     std::string magic = token();
-    if (magic != "PF" && magic != "Pf") throw Error(what + ": not a PFM file (it must start with PF or Pf)");
+    if (magic != "PF" && magic != "Pf")
+        throw Error(what + ": not a PFM file (it must start with PF or Pf)");
     int channels = magic == "PF" ? 3 : 1;
     int width = 0, height = 0;
     double scale = 0.0;
@@ -69,15 +72,15 @@ FloatImage decodePfm(const std::string& bytes, const std::string& what) {
         width = std::stoi(token());
         height = std::stoi(token());
         scale = std::stod(token());
-    } catch (const std::exception&) {
+    } catch (const std::exception&) { throw Error(what + ": bad PFM header"); }
+    if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || scale == 0.0)
         throw Error(what + ": bad PFM header");
-    }
-    if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || scale == 0.0) throw Error(what + ": bad PFM header");
     ++pos;  // the single whitespace after the scale
     const std::size_t count = std::size_t(width) * std::size_t(height) * std::size_t(channels);
     if (bytes.size() < pos || bytes.size() - pos != count * sizeof(float))
-        throw Error(what + ": PFM data is " + std::to_string(bytes.size() < pos ? 0 : bytes.size() - pos) + " bytes, expected " +
-                    std::to_string(count * sizeof(float)));
+        throw Error(what + ": PFM data is " +
+                    std::to_string(bytes.size() < pos ? 0 : bytes.size() - pos) +
+                    " bytes, expected " + std::to_string(count * sizeof(float)));
     const bool fileLittle = scale < 0.0;
     const bool swap = fileLittle != hostIsLittleEndian();
     FloatImage image(width, height, channels);
@@ -107,4 +110,4 @@ FloatImage loadPfm(const std::filesystem::path& file) {
     return decodePfm(bytes.str(), displayPath(file));
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -21,9 +21,17 @@ struct FloatImage {
     std::vector<float> values;  // width * height * channels, top row first
 
     FloatImage() = default;
-    FloatImage(int w, int h, int c) : width(w), height(h), channels(c), values(std::size_t(w) * std::size_t(h) * std::size_t(c), 0.0f) {}
-    float* at(int x, int y) { return &values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels)]; }
-    const float* at(int x, int y) const { return &values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels)]; }
+    FloatImage(int w, int h, int c)
+        : width(w), height(h), channels(c),
+          values(std::size_t(w) * std::size_t(h) * std::size_t(c), 0.0f) {}
+    float* at(int x, int y) {
+        return &values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) *
+                       std::size_t(channels)];
+    }
+    const float* at(int x, int y) const {
+        return &values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) *
+                       std::size_t(channels)];
+    }
 };
 
 // The bytes of a PFM file (little-endian, scale -1.0).
@@ -35,4 +43,4 @@ FloatImage decodePfm(const std::string& bytes, const std::string& what = "PFM da
 void writePfmAtomic(const FloatImage& image, const std::filesystem::path& file);
 FloatImage loadPfm(const std::filesystem::path& file);
 
-} // namespace raylab
+}  // namespace raylab

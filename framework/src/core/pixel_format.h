@@ -6,4 +6,4 @@ namespace raylab {
 // grading must see NaN and Inf (which 8-bit colour would hide).
 enum class PixelFormat { Rgba8, Rgba32F };
 
-} // namespace raylab
+}  // namespace raylab

@@ -7,16 +7,22 @@ namespace raylab::shader {
 namespace {
 
 // Enough digits that the GLSL float is the nearest one to the C++ double.
-std::string floatConst(const char* name, double value) { return "const float " + std::string(name) + " = " + significant(value, 9) + ";\n"; }
-
-std::string intConst(const char* name, int value) { return "const int " + std::string(name) + " = " + std::to_string(value) + ";\n"; }
-
-} // namespace
-
-std::string constantsGlsl() {
-    return floatConst("NO_HIT", kNoHit) + floatConst("T_MIN", kTMin) + floatConst("T_FAR", kTFar) + intConst("MAX_DEPTH", kMaxDepth) + intConst("MAX_RAYS", kMaxRays) +
-           intConst("KIND_SPHERE", kSphere) + intConst("KIND_PLANE", kPlane) + intConst("KIND_DISC", kDisc) +
-           intConst("KIND_TRIANGLE", kTriangle) + intConst("KIND_TORUS", kTorus) + intConst("OBJECT_KIND_STRIDE", kObjectKindStride);
+std::string floatConst(const char* name, double value) {
+    return "const float " + std::string(name) + " = " + significant(value, 9) + ";\n";
 }
 
-} // namespace raylab::shader
+std::string intConst(const char* name, int value) {
+    return "const int " + std::string(name) + " = " + std::to_string(value) + ";\n";
+}
+
+}  // namespace
+
+std::string constantsGlsl() {
+    return floatConst("NO_HIT", kNoHit) + floatConst("T_MIN", kTMin) + floatConst("T_FAR", kTFar) +
+           intConst("MAX_DEPTH", kMaxDepth) + intConst("MAX_RAYS", kMaxRays) +
+           intConst("KIND_SPHERE", kSphere) + intConst("KIND_PLANE", kPlane) +
+           intConst("KIND_DISC", kDisc) + intConst("KIND_TRIANGLE", kTriangle) +
+           intConst("KIND_TORUS", kTorus) + intConst("OBJECT_KIND_STRIDE", kObjectKindStride);
+}
+
+}  // namespace raylab::shader

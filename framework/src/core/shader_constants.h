@@ -28,4 +28,4 @@ inline constexpr const char* kKindNames[] = {"sphere", "plane", "disc", "triangl
 // The GLSL declarations of the constants above, one per line.
 std::string constantsGlsl();
 
-} // namespace raylab::shader
+}  // namespace raylab::shader

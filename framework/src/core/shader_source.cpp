@@ -25,14 +25,20 @@ const char* kGenerated = "<raylab>";
 // the meaning of the regex it replaces (quoted above it), `.` included: it
 // does not match '\r'.
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
 bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 std::size_t skipSpace(const std::string& s, std::size_t i) {
     while (i < s.size() && isSpace(s[i])) ++i;
     return i;
 }
-bool startsAt(const std::string& s, std::size_t i, const char* word) { return s.compare(i, std::strlen(word), word) == 0; }
-bool noCarriageReturnFrom(const std::string& s, std::size_t i) { return s.find('\r', std::min(i, s.size())) == std::string::npos; }
+bool startsAt(const std::string& s, std::size_t i, const char* word) {
+    return s.compare(i, std::strlen(word), word) == 0;
+}
+bool noCarriageReturnFrom(const std::string& s, std::size_t i) {
+    return s.find('\r', std::min(i, s.size())) == std::string::npos;
+}
 
 // R"(^\s*#\s*include\s*(["<])([^">]*)[">]\s*(//.*)?$)": sets NAME.
 bool parseInclude(const std::string& line, std::string& name) {
@@ -45,7 +51,8 @@ bool parseInclude(const std::string& line, std::string& name) {
     std::size_t close = line.find_first_of("\">", i + 1);
     if (close == std::string::npos) return false;
     std::size_t rest = skipSpace(line, close + 1);
-    if (rest < line.size() && !(startsAt(line, rest, "//") && noCarriageReturnFrom(line, rest))) return false;
+    if (rest < line.size() && !(startsAt(line, rest, "//") && noCarriageReturnFrom(line, rest)))
+        return false;
     name = line.substr(i + 1, close - i - 1);
     return true;
 }
@@ -75,7 +82,8 @@ bool parseTodoTitle(const std::string& line, std::string& title) {
 // R"(^[^/]*\blabTodo\s*\(\s*\)\s*;)" (searched): a labTodo(); call before any '/'.
 bool hasStubCall(const std::string& line) {
     const std::size_t slash = line.find('/');
-    for (std::size_t at = line.find("labTodo"); at != std::string::npos && at < slash; at = line.find("labTodo", at + 1)) {
+    for (std::size_t at = line.find("labTodo"); at != std::string::npos && at < slash;
+         at = line.find("labTodo", at + 1)) {
         if (at > 0 && isWordChar(line[at - 1])) continue;
         std::size_t i = skipSpace(line, at + 7);
         if (i >= line.size() || line[i] != '(') continue;
@@ -100,10 +108,13 @@ struct Assembler {
 
     fs::path resolve(const std::string& name, const std::string& fromFile, int fromLine) {
         fs::path rel(name);
-        bool escapes = rel.is_absolute() || std::any_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".."; });
+        bool escapes =
+            rel.is_absolute() ||
+            std::any_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".."; });
         if (name.empty() || escapes)
             throw Error(fromFile + ":" + std::to_string(fromLine) + ": #include \"" + name +
-                        "\" is not allowed: name a file inside the stage folder (no \"..\", no absolute path)");
+                        "\" is not allowed: name a file inside the stage folder (no \"..\", no "
+                        "absolute path)");
         for (const fs::path& dir : search) {
             fs::path candidate = dir / rel;
             std::error_code ec;
@@ -112,13 +123,15 @@ struct Assembler {
             // submissions are untrusted).
             fs::path real = fs::canonical(candidate, ec);
             fs::path base = fs::canonical(dir, ec);
-            auto inside = std::mismatch(base.begin(), base.end(), real.begin(), real.end()).first == base.end();
+            auto inside = std::mismatch(base.begin(), base.end(), real.begin(), real.end()).first ==
+                          base.end();
             if (ec || !inside)
-                throw Error(fromFile + ":" + std::to_string(fromLine) + ": #include \"" + name + "\" leads outside " + displayPath(dir) +
-                            " (a symbolic link?)");
+                throw Error(fromFile + ":" + std::to_string(fromLine) + ": #include \"" + name +
+                            "\" leads outside " + displayPath(dir) + " (a symbolic link?)");
             return candidate;
         }
-        std::string where = fromFile.empty() ? std::string() : fromFile + ":" + std::to_string(fromLine) + ": ";
+        std::string where =
+            fromFile.empty() ? std::string() : fromFile + ":" + std::to_string(fromLine) + ": ";
         std::string dirs;
         for (const fs::path& dir : search) dirs += (dirs.empty() ? "" : ", ") + displayPath(dir);
         throw Error(where + "cannot find shader file \"" + name + "\" (looked in " + dirs + ")");
@@ -145,10 +158,11 @@ struct Assembler {
     }
 };
 
-} // namespace
+}  // namespace
 
 SourceLine ShaderSource::where(int assembledLine) const {
-    if (assembledLine >= 1 && std::size_t(assembledLine) <= origin.size()) return origin[std::size_t(assembledLine) - 1];
+    if (assembledLine >= 1 && std::size_t(assembledLine) <= origin.size())
+        return origin[std::size_t(assembledLine) - 1];
     return {kGenerated, assembledLine};
 }
 
@@ -185,10 +199,12 @@ std::string mapCompilerLog(const std::string& log, const ShaderSource& source) {
         std::string message;
         SourceLine s;
         auto matches = [&](const std::regex& re, int lineGroup) {
-            if (!std::regex_search(head, m, re, std::regex_constants::match_continuous)) return false;
+            if (!std::regex_search(head, m, re, std::regex_constants::match_continuous))
+                return false;
             std::string digits = m[lineGroup].str();
             digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
-            if (digits.size() > 10 || (digits.size() == 10 && digits > "2147483647")) return false;  // over INT_MAX
+            if (digits.size() > 10 || (digits.size() == 10 && digits > "2147483647"))
+                return false;  // over INT_MAX
             s = source.where(std::stoi(digits));
             std::size_t rest = skipSpace(line, start + std::size_t(m.length(0)));
             message = line.substr(rest);
@@ -222,4 +238,4 @@ std::vector<OpenTodo> findOpenTodos(const ShaderSource& source) {
     return todos;
 }
 
-} // namespace raylab
+}  // namespace raylab

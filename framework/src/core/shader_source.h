@@ -18,9 +18,9 @@ struct SourceLine {
 };
 
 struct ShaderSource {
-    std::string text;                 // the assembled GLSL, `#version 330 core` first
-    std::vector<SourceLine> origin;   // origin[i]: where assembled line i + 1 came from
-    std::vector<fs::path> files;      // every file read, entry first (hot reload watches these)
+    std::string text;                // the assembled GLSL, `#version 330 core` first
+    std::vector<SourceLine> origin;  // origin[i]: where assembled line i + 1 came from
+    std::vector<fs::path> files;     // every file read, entry first (hot reload watches these)
 
     SourceLine where(int assembledLine) const;
 };
@@ -36,7 +36,8 @@ inline constexpr const char* kGlslVersionLine = "#version 330 core";
 // The shared constants (shader_constants.h) follow the defines, then PRELUDE
 // (generated GLSL, e.g. a scene's constants).
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
-                            const std::vector<std::string>& defines, const std::string& prelude = {});
+                            const std::vector<std::string>& defines,
+                            const std::string& prelude = {});
 
 // Rewrites the line references of a compiler or linker log (Mesa
 // "0:12(5): ...", NVIDIA "0(12) : ...", glslang/AMD "ERROR: 0:12: ...") into
@@ -54,4 +55,4 @@ struct OpenTodo {
 // Open TODOs in the files of SOURCE, skipping the framework's own shaders.
 std::vector<OpenTodo> findOpenTodos(const ShaderSource& source);
 
-} // namespace raylab
+}  // namespace raylab

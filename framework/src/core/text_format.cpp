@@ -31,4 +31,4 @@ std::string shortestExact(double v) {
     return std::string(buf, res.ptr);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -17,4 +17,4 @@ std::string trimmedFixed(double v, int decimals);
 // The shortest text that reads back as exactly V ("0.1", "1e-07").
 std::string shortestExact(double v);
 
-} // namespace raylab
+}  // namespace raylab

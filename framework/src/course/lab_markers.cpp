@@ -16,23 +16,27 @@ std::string leftTrimmed(const std::string& s) {
     return i == std::string::npos ? std::string() : s.substr(i);
 }
 
-} // namespace
+}  // namespace
 
-std::string transformMarkedSource(const std::string& text, MarkedForm form, const std::string& file) {
+std::string transformMarkedSource(const std::string& text, MarkedForm form,
+                                  const std::string& file) {
     enum class State { Normal, Solution, Stub } state = State::Normal;
     std::vector<std::string> out;
     long headerStart = -1;  // index in `out` of the current "// TODO(" line, -1 when none
     int regionLine = 0;
     std::istringstream in(text);
     std::string line;
-    auto fail = [&](int n, const std::string& what) -> void { throw Error(file + ":" + std::to_string(n) + ": " + what); };
+    auto fail = [&](int n, const std::string& what) -> void {
+        throw Error(file + ":" + std::to_string(n) + ": " + what);
+    };
 
     for (int n = 1; std::getline(in, line); ++n) {
         const std::string t = leftTrimmed(line);
         switch (state) {
         case State::Normal:
             if (startsWith(t, "//@solution")) {
-                if (headerStart < 0) fail(n, "//@solution needs a \"// TODO(id): ...\" comment right above it");
+                if (headerStart < 0)
+                    fail(n, "//@solution needs a \"// TODO(id): ...\" comment right above it");
                 if (form == MarkedForm::Solved) out.resize(std::size_t(headerStart));
                 state = State::Solution;
                 regionLine = n;
@@ -54,7 +58,9 @@ std::string transformMarkedSource(const std::string& text, MarkedForm form, cons
                 state = State::Normal;
                 headerStart = -1;
             } else if (t == "//@" || startsWith(t, "//@ ")) {
-                if (form == MarkedForm::Lab) out.push_back(line.substr(0, line.size() - t.size()) + (t.size() > 4 ? t.substr(4) : ""));
+                if (form == MarkedForm::Lab)
+                    out.push_back(line.substr(0, line.size() - t.size()) +
+                                  (t.size() > 4 ? t.substr(4) : ""));
             } else {
                 fail(n, "stub lines must start with \"//@ \" (found '" + t + "')");
             }
@@ -68,4 +74,4 @@ std::string transformMarkedSource(const std::string& text, MarkedForm form, cons
     return result;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -23,6 +23,7 @@ namespace raylab {
 enum class MarkedForm { Lab, Solved };
 
 // Throws Error("FILE:LINE: ...") on a malformed region.
-std::string transformMarkedSource(const std::string& text, MarkedForm form, const std::string& fileForMessages);
+std::string transformMarkedSource(const std::string& text, MarkedForm form,
+                                  const std::string& fileForMessages);
 
-} // namespace raylab
+}  // namespace raylab

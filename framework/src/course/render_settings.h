@@ -19,4 +19,4 @@ struct RenderSettings {
 inline constexpr const char* kColorModes[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
 inline constexpr int kColorModeCount = 5;
 
-} // namespace raylab
+}  // namespace raylab

@@ -37,10 +37,12 @@ struct StageReader {
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {
         throw Error(file + ": " + key + ": " + what);
     }
-    void onlyKeys(const json& obj, const std::string& where, std::initializer_list<const char*> allowed) const {
+    void onlyKeys(const json& obj, const std::string& where,
+                  std::initializer_list<const char*> allowed) const {
         for (const auto& [key, value] : obj.items()) {
             (void)value;
-            bool ok = std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; });
+            bool ok = std::any_of(allowed.begin(), allowed.end(),
+                                  [&](const char* a) { return key == a; });
             if (!ok) fail(where.empty() ? key : where + "." + key, "unknown key");
         }
     }
@@ -53,7 +55,8 @@ struct StageReader {
         return v;
     }
     std::string text(const json& v, const std::string& key) const {
-        if (!v.is_string() || v.get<std::string>().empty()) fail(key, "expected a non-empty string");
+        if (!v.is_string() || v.get<std::string>().empty())
+            fail(key, "expected a non-empty string");
         return v.get<std::string>();
     }
     float number(const json& v, const std::string& key) const {
@@ -61,7 +64,8 @@ struct StageReader {
         return v.get<float>();
     }
     int count(const json& v, const std::string& key) const {
-        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000) fail(key, "expected a whole number from 0 to 1000000");
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000)
+            fail(key, "expected a whole number from 0 to 1000000");
         return v.get<int>();
     }
     bool flag(const json& v, const std::string& key) const {
@@ -71,12 +75,14 @@ struct StageReader {
     std::vector<std::string> strings(const json& v, const std::string& key) const {
         if (!v.is_array()) fail(key, "expected a list of strings");
         std::vector<std::string> out;
-        for (std::size_t i = 0; i < v.size(); ++i) out.push_back(text(v[i], key + "[" + std::to_string(i) + "]"));
+        for (std::size_t i = 0; i < v.size(); ++i)
+            out.push_back(text(v[i], key + "[" + std::to_string(i) + "]"));
         return out;
     }
     // Optional members: the default when absent.
     template <typename T, typename Read>
-    T optional(const json& obj, const std::string& where, const char* key, T fallback, Read read) const {
+    T optional(const json& obj, const std::string& where, const char* key, T fallback,
+               Read read) const {
         return obj.contains(key) ? read(obj[key], where + "." + key) : fallback;
     }
 
@@ -92,10 +98,13 @@ struct StageReader {
 
     StageLimits limits(const json& v) const {
         object(v, "limits");
-        onlyKeys(v, "limits", {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori", "textures", "sky_box"});
+        onlyKeys(v, "limits",
+                 {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori",
+                  "textures", "sky_box"});
         StageLimits l;
         auto c = [&](const char* key, int fallback) {
-            return optional(v, "limits", key, fallback, [&](const json& x, const std::string& k) { return count(x, k); });
+            return optional(v, "limits", key, fallback,
+                            [&](const json& x, const std::string& k) { return count(x, k); });
         };
         l.spheres = c("spheres", l.spheres);
         l.materials = c("materials", l.materials);
@@ -105,13 +114,16 @@ struct StageReader {
         l.triangles = c("triangles", l.triangles);
         l.tori = c("tori", l.tori);
         l.textures = c("textures", l.textures);
-        l.skyBox = optional(v, "limits", "sky_box", false, [&](const json& x, const std::string& k) { return flag(x, k); });
+        l.skyBox = optional(v, "limits", "sky_box", false,
+                            [&](const json& x, const std::string& k) { return flag(x, k); });
         return l;
     }
 
     CheckView view(const json& v, const std::string& where) const {
         object(v, where);
-        onlyKeys(v, where, {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps", "color_mode", "scene"});
+        onlyKeys(v, where,
+                 {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps",
+                  "color_mode", "scene"});
         CheckView c;
         c.name = text(member(v, where, "name"), where + ".name");
         c.why = text(member(v, where, "why"), where + ".why");
@@ -122,27 +134,34 @@ struct StageReader {
             const json& p = member(cam, at, "position");
             if (!p.is_array() || p.size() != 3) fail(at + ".position", "expected [x, y, z]");
             CameraPose pose;
-            for (int i = 0; i < 3; ++i) pose.position[i] = number(p[std::size_t(i)], at + ".position");
+            for (int i = 0; i < 3; ++i)
+                pose.position[i] = number(p[std::size_t(i)], at + ".position");
             pose.yawDeg = number(member(cam, at, "yaw"), at + ".yaw");
             pose.pitchDeg = number(member(cam, at, "pitch"), at + ".pitch");
             c.pose = pose;
         }
         auto b = [&](const char* key, bool fallback) {
-            return optional(v, where, key, fallback, [&](const json& x, const std::string& k) { return flag(x, k); });
+            return optional(v, where, key, fallback,
+                            [&](const json& x, const std::string& k) { return flag(x, k); });
         };
-        c.time = optional(v, where, "time", 0.0f, [&](const json& x, const std::string& k) { return number(x, k); });
+        c.time = optional(v, where, "time", 0.0f,
+                          [&](const json& x, const std::string& k) { return number(x, k); });
         c.shadows = b("shadows", true);
         c.glow = b("glow", true);
         c.normalMaps = b("normal_maps", true);
-        c.maxDepth = optional(v, where, "max_depth", RenderSettings::kMaxDepth, [&](const json& x, const std::string& k) {
-            int d = count(x, k);
-            if (d < 1 || d > RenderSettings::kMaxDepth) fail(k, "expected a depth from 1 to " + std::to_string(RenderSettings::kMaxDepth));
-            return d;
-        });
+        c.maxDepth = optional(v, where, "max_depth", RenderSettings::kMaxDepth,
+                              [&](const json& x, const std::string& k) {
+                                  int d = count(x, k);
+                                  if (d < 1 || d > RenderSettings::kMaxDepth)
+                                      fail(k, "expected a depth from 1 to " +
+                                                  std::to_string(RenderSettings::kMaxDepth));
+                                  return d;
+                              });
         if (v.contains("color_mode")) {
             const std::string mode = text(v["color_mode"], where + ".color_mode");
             auto it = std::find(std::begin(kColorModes), std::end(kColorModes), mode);
-            if (it == std::end(kColorModes)) fail(where + ".color_mode", "expected RGB, BRB, BRR, RBB or GGR");
+            if (it == std::end(kColorModes))
+                fail(where + ".color_mode", "expected RGB, BRB, BRR, RBB or GGR");
             c.colorMode = int(it - std::begin(kColorModes));
         }
         if (v.contains("scene")) c.scene = text(v["scene"], where + ".scene");
@@ -155,20 +174,20 @@ json parseFile(const fs::path& file, const std::string& shown) {
     if (!in) throw Error(shown + ": cannot read the file");
     try {
         return json::parse(in);
-    } catch (const json::exception& e) {
-        throw Error(shown + ": not valid JSON: " + e.what());
-    }
+    } catch (const json::exception& e) { throw Error(shown + ": not valid JSON: " + e.what()); }
 }
 
 // Kahn's order: a stage comes after the one it builds on; ties by id, so a
 // track reads in the order of its ids. Tracks follow their first stage's id.
 std::vector<StageInfo> inBuildOrder(std::vector<StageInfo> stages) {
-    std::sort(stages.begin(), stages.end(), [](const StageInfo& a, const StageInfo& b) { return a.id < b.id; });
+    std::sort(stages.begin(), stages.end(),
+              [](const StageInfo& a, const StageInfo& b) { return a.id < b.id; });
     std::map<std::string, const StageInfo*> byId;
     for (const StageInfo& s : stages) byId[s.id] = &s;
     for (const StageInfo& s : stages)
         if (!s.buildsOn.empty() && !byId.count(s.buildsOn))
-            throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: no stage '" + s.buildsOn + "' (no solution/" + s.buildsOn + "/stage.json)");
+            throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: no stage '" +
+                        s.buildsOn + "' (no solution/" + s.buildsOn + "/stage.json)");
     std::vector<StageInfo> ordered;
     std::set<std::string> placed;
     std::vector<std::string> trackOrder;
@@ -182,14 +201,17 @@ std::vector<StageInfo> inBuildOrder(std::vector<StageInfo> stages) {
         if (!next) {
             for (const StageInfo& s : stages)
                 if (!placed.count(s.id))
-                    throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: '" + s.buildsOn + "' leads in a circle");
+                    throw Error(displayPath(s.folder() / "stage.json") + ": builds_on: '" +
+                                s.buildsOn + "' leads in a circle");
         }
         placed.insert(next->id);
         ordered.push_back(*next);
-        if (std::find(trackOrder.begin(), trackOrder.end(), next->track) == trackOrder.end()) trackOrder.push_back(next->track);
+        if (std::find(trackOrder.begin(), trackOrder.end(), next->track) == trackOrder.end())
+            trackOrder.push_back(next->track);
     }
     std::stable_sort(ordered.begin(), ordered.end(), [&](const StageInfo& a, const StageInfo& b) {
-        return std::find(trackOrder.begin(), trackOrder.end(), a.track) < std::find(trackOrder.begin(), trackOrder.end(), b.track);
+        return std::find(trackOrder.begin(), trackOrder.end(), a.track) <
+               std::find(trackOrder.begin(), trackOrder.end(), b.track);
     });
     return ordered;
 }
@@ -199,7 +221,8 @@ std::vector<StageInfo> readStages() {
     std::vector<fs::path> files;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(solution, ec))
-        if (e.is_directory() && fs::is_regular_file(e.path() / "stage.json")) files.push_back(e.path() / "stage.json");
+        if (e.is_directory() && fs::is_regular_file(e.path() / "stage.json"))
+            files.push_back(e.path() / "stage.json");
     std::vector<StageInfo> stages;
     for (const fs::path& f : files) stages.push_back(readStageFile(f));
     return inBuildOrder(std::move(stages));
@@ -211,18 +234,21 @@ std::string stageList() {
     return list;
 }
 
-} // namespace
+}  // namespace
 
 StageInfo readStageFile(const fs::path& file) {
     const std::string shown = displayPath(file);
     StageReader r{shown};
     const json doc = parseFile(file, shown);
     if (!doc.is_object()) r.fail("(top level)", "expected an object");
-    r.onlyKeys(doc, "", {"id", "title", "track", "builds_on", "scene", "program", "limits", "features", "function_checks", "mistakes",
-                         "check_views", "defines"});
+    r.onlyKeys(doc, "",
+               {"id", "title", "track", "builds_on", "scene", "program", "limits", "features",
+                "function_checks", "mistakes", "check_views", "defines"});
     StageInfo s;
     s.id = r.text(r.member(doc, "", "id"), "id");
-    if (s.id != file.parent_path().filename().string()) r.fail("id", "'" + s.id + "' is not the folder's name '" + file.parent_path().filename().string() + "'");
+    if (s.id != file.parent_path().filename().string())
+        r.fail("id", "'" + s.id + "' is not the folder's name '" +
+                         file.parent_path().filename().string() + "'");
     s.title = r.text(r.member(doc, "", "title"), "title");
     s.track = r.text(r.member(doc, "", "track"), "track");
     const json& on = r.member(doc, "", "builds_on");
@@ -236,7 +262,8 @@ StageInfo readStageFile(const fs::path& file) {
         if (!kKnownFeatures.count(features[i])) {
             std::string known;
             for (const std::string& k : kKnownFeatures) known += (known.empty() ? "" : ", ") + k;
-            r.fail("features[" + std::to_string(i) + "]", "unknown feature '" + features[i] + "' (known: " + known + ")");
+            r.fail("features[" + std::to_string(i) + "]",
+                   "unknown feature '" + features[i] + "' (known: " + known + ")");
         }
         s.features.insert(features[i]);
     }
@@ -245,11 +272,14 @@ StageInfo readStageFile(const fs::path& file) {
     if (s.mistakes.is_absolute() || s.mistakes.lexically_normal().string().rfind("..", 0) == 0)
         r.fail("mistakes", "expected a folder inside the project, relative to its root");
     const json& views = r.member(doc, "", "check_views");
-    if (!views.is_array() || views.empty()) r.fail("check_views", "expected a non-empty list of views");
+    if (!views.is_array() || views.empty())
+        r.fail("check_views", "expected a non-empty list of views");
     for (std::size_t i = 0; i < views.size(); ++i) {
         CheckView v = r.view(views[i], "check_views[" + std::to_string(i) + "]");
         for (const CheckView& earlier : s.checkViews)
-            if (earlier.name == v.name) r.fail("check_views[" + std::to_string(i) + "].name", "'" + v.name + "' is used twice");
+            if (earlier.name == v.name)
+                r.fail("check_views[" + std::to_string(i) + "].name",
+                       "'" + v.name + "' is used twice");
         s.checkViews.push_back(v);
     }
     if (doc.contains("defines")) s.extraDefines = r.strings(doc["defines"], "defines");
@@ -257,11 +287,14 @@ StageInfo readStageFile(const fs::path& file) {
 }
 
 std::vector<std::string> StageInfo::defines() const {
-    auto size = [](const char* name, int limit) { return std::string(name) + " " + std::to_string(std::max(1, limit)); };
-    std::vector<std::string> all = {size("MAX_SPHERES", limits.spheres),   size("MAX_MATERIALS", limits.materials),
-                                    size("MAX_LIGHTS", limits.lights),     size("MAX_PLANES", limits.planes),
-                                    size("MAX_DISCS", limits.discs),       size("MAX_TRIANGLES", limits.triangles),
-                                    size("MAX_TORI", limits.tori)};
+    auto size = [](const char* name, int limit) {
+        return std::string(name) + " " + std::to_string(std::max(1, limit));
+    };
+    std::vector<std::string> all = {
+        size("MAX_SPHERES", limits.spheres), size("MAX_MATERIALS", limits.materials),
+        size("MAX_LIGHTS", limits.lights),   size("MAX_PLANES", limits.planes),
+        size("MAX_DISCS", limits.discs),     size("MAX_TRIANGLES", limits.triangles),
+        size("MAX_TORI", limits.tori)};
     all.insert(all.end(), extraDefines.begin(), extraDefines.end());
     return all;
 }
@@ -274,10 +307,12 @@ const std::vector<StageInfo>& allStages() {
 }
 
 const StageInfo& findStage(const std::string& idOrNumber) {
-    const bool digits = !idOrNumber.empty() && idOrNumber.size() <= 3 && idOrNumber.find_first_not_of("0123456789") == std::string::npos;
+    const bool digits = !idOrNumber.empty() && idOrNumber.size() <= 3 &&
+                        idOrNumber.find_first_not_of("0123456789") == std::string::npos;
     for (const StageInfo& s : allStages()) {
         const std::string n = s.number();
-        const bool numberMatches = digits && !n.empty() && n.size() <= 3 && n.find_first_not_of("0123456789") == std::string::npos &&
+        const bool numberMatches = digits && !n.empty() && n.size() <= 3 &&
+                                   n.find_first_not_of("0123456789") == std::string::npos &&
                                    std::stoi(idOrNumber) == std::stoi(n);
         if (idOrNumber == s.id || numberMatches) return s;
     }
@@ -292,4 +327,4 @@ const StageInfo& demoStage() {
     return *demo;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -57,7 +57,7 @@ struct StageInfo {
     StageLimits limits;
     std::set<std::string> features;           // see kKnownFeatures in stage_catalog.cpp
     std::vector<std::string> functionChecks;  // names of function checks (function_checks.h)
-    std::filesystem::path mistakes;           // the mistakes catalogue, relative to the project root
+    std::filesystem::path mistakes;  // the mistakes catalogue, relative to the project root
     std::vector<CheckView> checkViews;
     std::vector<std::string> extraDefines;  // besides the limits ("defines" in stage.json)
 
@@ -83,4 +83,4 @@ const StageInfo& findStage(const std::string& idOrNumber);
 // The stage `raylab demo` and `raylab bench` run: the last with the "demo" feature.
 const StageInfo& demoStage();
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,7 +13,8 @@ StageSources solutionSources(const StageInfo& stage) {
     const fs::path root = projectRoot();
     // The stage's own folder first, then the stages it builds on: a later
     // stage's file replaces an earlier one of the same name.
-    for (const StageInfo* at = &stage; at; at = at->buildsOn.empty() ? nullptr : &findStage(at->buildsOn)) {
+    for (const StageInfo* at = &stage; at;
+         at = at->buildsOn.empty() ? nullptr : &findStage(at->buildsOn)) {
         s.search.push_back(root / "solution" / at->id);
         s.chain.push_back(at->id);
     }
@@ -23,9 +24,11 @@ StageSources solutionSources(const StageInfo& stage) {
 
 StageSources labSources(const StageInfo& stage, const fs::path& labRoot) {
     std::error_code ec;
-    if (!fs::is_directory(labRoot, ec)) throw Error("lab folder " + labRoot.string() + " does not exist");
+    if (!fs::is_directory(labRoot, ec))
+        throw Error("lab folder " + labRoot.string() + " does not exist");
     if (!fs::is_directory(labRoot / stage.id, ec))
-        throw Error("lab folder " + labRoot.string() + " has no " + stage.id + "/ (it should be laid out like labs/)");
+        throw Error("lab folder " + labRoot.string() + " has no " + stage.id +
+                    "/ (it should be laid out like labs/)");
     StageSources s;
     s.label = "lab " + displayPath(labRoot) + "/";
     s.search = {labRoot / stage.id, projectRoot() / "framework" / "shaders"};
@@ -43,9 +46,9 @@ struct VariantSwitch {
     const char* folder;
 };
 constexpr VariantSwitch kVariants[] = {
-    {"RAYLAB_NAIVE_NUMERICS", true, "naive-numerics"},     // textbook methods (tests/numerics)
+    {"RAYLAB_NAIVE_NUMERICS", true, "naive-numerics"},        // textbook methods (tests/numerics)
     {"TORUS_SOLVER_CLOSED_FORM", true, "torus-closed-form"},  // the seed's torus solver
-    {"RAYLAB_BVH", false, "linear-search"},                // objects found by a plain loop
+    {"RAYLAB_BVH", false, "linear-search"},                   // objects found by a plain loop
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {
@@ -54,9 +57,10 @@ bool defined(const std::vector<std::string>& defines, const std::string& name) {
     return false;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<fs::path> searchWithVariants(const StageSources& sources, const std::vector<std::string>& defines) {
+std::vector<fs::path> searchWithVariants(const StageSources& sources,
+                                         const std::vector<std::string>& defines) {
     const fs::path variants = projectRoot() / "framework" / "shaders" / "variants";
     std::vector<std::string> on;
     for (const VariantSwitch& v : kVariants)
@@ -64,7 +68,8 @@ std::vector<fs::path> searchWithVariants(const StageSources& sources, const std:
     auto variantDirsFor = [&](const std::string& stageId, std::vector<fs::path>& out) {
         std::error_code ec;
         for (const std::string& folder : on)
-            if (fs::is_directory(variants / folder / stageId, ec)) out.push_back(variants / folder / stageId);
+            if (fs::is_directory(variants / folder / stageId, ec))
+                out.push_back(variants / folder / stageId);
     };
     std::vector<fs::path> search;
     for (std::size_t i = 0; i < sources.search.size(); ++i) {
@@ -80,4 +85,4 @@ std::vector<fs::path> searchWithVariants(const StageSources& sources, const std:
 
 fs::path defaultLabRoot() { return projectRoot() / "labs"; }
 
-} // namespace raylab
+}  // namespace raylab

@@ -20,15 +20,16 @@ namespace raylab {
 
 struct StageSources {
     std::vector<std::filesystem::path> search;
-    std::string label;                 // "solution" or "lab labs/"
-    std::vector<std::string> chain;    // the stage and those it builds on, newest first
-    bool lab = false;                  // search[0] holds the whole chain's files
+    std::string label;               // "solution" or "lab labs/"
+    std::vector<std::string> chain;  // the stage and those it builds on, newest first
+    bool lab = false;                // search[0] holds the whole chain's files
 };
 
 // SOURCES' search path with the variant folders that DEFINES switch on
 // (framework/shaders/variants/<variant>/<stage id>/) in front of the stage
 // folders whose files they replace.
-std::vector<std::filesystem::path> searchWithVariants(const StageSources& sources, const std::vector<std::string>& defines);
+std::vector<std::filesystem::path> searchWithVariants(const StageSources& sources,
+                                                      const std::vector<std::string>& defines);
 
 StageSources solutionSources(const StageInfo& stage);
 
@@ -38,4 +39,4 @@ StageSources labSources(const StageInfo& stage, const std::filesystem::path& lab
 // labs/ of the project.
 std::filesystem::path defaultLabRoot();
 
-} // namespace raylab
+}  // namespace raylab

@@ -22,7 +22,8 @@ public:
     virtual ~TrackRenderer() = default;
 
     // Draws one frame into the off-screen target.
-    virtual void render(const Camera& camera, float timeSeconds, const RenderSettings& settings) = 0;
+    virtual void render(const Camera& camera, float timeSeconds,
+                        const RenderSettings& settings) = 0;
     // The last frame, as a picture, and its size.
     virtual Image read() const = 0;
     virtual int width() const = 0;
@@ -41,4 +42,4 @@ public:
     virtual const std::vector<OpenTodo>& openTodos() const = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -26,4 +26,4 @@ void Canvas::draw() const {
     glBindVertexArray(0);
 }
 
-} // namespace raylab
+}  // namespace raylab

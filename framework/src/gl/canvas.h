@@ -19,4 +19,4 @@ private:
     GLuint vbo_ = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

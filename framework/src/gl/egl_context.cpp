@@ -13,10 +13,13 @@ namespace {
 class EglContext : public GlContext {
 public:
     EglContext() {
-        auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+            eglGetProcAddress("eglGetPlatformDisplayEXT"));
         EGLint major = 0, minor = 0;
         // Mesa's surfaceless platform needs neither a display nor a GPU.
-        if (getPlatformDisplay) display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (getPlatformDisplay)
+            display_ =
+                getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor)) {
             // Other drivers (e.g. NVIDIA's) offer a default display instead.
             display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
@@ -24,8 +27,13 @@ public:
                 throw Error("EGL is not available (no surfaceless or default display)");
         }
         if (!eglBindAPI(EGL_OPENGL_API)) throw Error("EGL cannot bind the desktop OpenGL API");
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_NONE};
         // No config and no surface: everything is drawn into framebuffer objects.
         context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
         if (context_ == EGL_NO_CONTEXT) {
@@ -52,8 +60,8 @@ private:
     EGLContext context_ = EGL_NO_CONTEXT;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<GlContext> createEglContext() { return std::make_unique<EglContext>(); }
 
-} // namespace raylab
+}  // namespace raylab

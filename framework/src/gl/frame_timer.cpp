@@ -11,7 +11,8 @@ namespace raylab {
 
 std::string FrameTiming::summary() const {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "median %.2f ms (min %.2f, max %.2f, %d frames; %s)", medianMs, minMs, maxMs, frames, method);
+    std::snprintf(buf, sizeof buf, "median %.2f ms (min %.2f, max %.2f, %d frames; %s)", medianMs,
+                  minMs, maxMs, frames, method);
     return buf;
 }
 
@@ -31,8 +32,9 @@ FrameTiming summarizeFrameTimes(std::vector<double> ms) {
     std::sort(ms.begin(), ms.end());
     t.minMs = ms.front();
     t.maxMs = ms.back();
-    t.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+    t.medianMs =
+        ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
     return t;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -14,7 +14,8 @@ struct FrameTiming {
     double medianMs = 0, minMs = 0, maxMs = 0;
     int frames = 0;
     const char* method = "glFinish-fenced, steady clock";
-    std::string summary() const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish-fenced, steady clock)"
+    std::string summary()
+        const;  // "median 12.3 ms (min 11.9, max 13.0, 9 frames; glFinish-fenced, steady clock)"
 };
 
 // Median, min and max of frame times measured one by one (timeOneFrame).
@@ -24,4 +25,4 @@ FrameTiming summarizeFrameTimes(std::vector<double> ms);
 // glFinish that drains earlier work.
 double timeOneFrame(const std::function<void()>& drawFrame);
 
-} // namespace raylab
+}  // namespace raylab

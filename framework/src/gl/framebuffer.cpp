@@ -7,18 +7,20 @@
 
 namespace raylab {
 
-Framebuffer::Framebuffer(int width, int height, PixelFormat format) : width_(width), height_(height), format_(format) {
+Framebuffer::Framebuffer(int width, int height, PixelFormat format)
+    : width_(width), height_(height), format_(format) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
-        throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is not supported (at most " +
-                    std::to_string(maxSize) + " per side)");
+        throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is not supported (at most " + std::to_string(maxSize) + " per side)");
     glGenTextures(1, &color_);
     glBindTexture(GL_TEXTURE_2D, color_);
     if (format == PixelFormat::Rgba32F)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
     else
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -30,8 +32,8 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format) : width_(wid
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &fbo_);
         glDeleteTextures(1, &color_);
-        throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " framebuffer (status 0x" +
-                    std::to_string(status) + ")");
+        throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
+                    " framebuffer (status 0x" + std::to_string(status) + ")");
     }
 }
 
@@ -59,22 +61,25 @@ Image Framebuffer::read() const {
 }
 
 std::vector<float> Framebuffer::readFloats() const {
-    std::vector<float> bottomUp(std::size_t(width_) * std::size_t(height_) * 4), rows(bottomUp.size());
+    std::vector<float> bottomUp(std::size_t(width_) * std::size_t(height_) * 4),
+        rows(bottomUp.size());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, bottomUp.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     const std::size_t row = std::size_t(width_) * 4;
     for (int y = 0; y < height_; ++y)
-        std::memcpy(&rows[std::size_t(y) * row], &bottomUp[std::size_t(height_ - 1 - y) * row], row * sizeof(float));
+        std::memcpy(&rows[std::size_t(y) * row], &bottomUp[std::size_t(height_ - 1 - y) * row],
+                    row * sizeof(float));
     return rows;
 }
 
 void Framebuffer::blitToScreen(int screenWidth, int screenHeight) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, screenWidth, screenHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, screenWidth, screenHeight, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-} // namespace raylab
+}  // namespace raylab

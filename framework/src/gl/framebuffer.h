@@ -20,8 +20,8 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    void bind() const;             // as the draw target, with the viewport set
-    Image read() const;            // top row first
+    void bind() const;                      // as the draw target, with the viewport set
+    Image read() const;                     // top row first
     std::vector<float> readFloats() const;  // RGBA, top row first
     PixelFormat format() const { return format_; }
     void blitToScreen(int screenWidth, int screenHeight) const;
@@ -33,4 +33,4 @@ private:
     GLuint color_ = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -43,4 +43,4 @@ bool inOsMesaProcess();
 // and `--backend osmesa`. Returns only by throwing Error.
 [[noreturn]] void reexecWithOsMesa();
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,25 +13,32 @@ namespace {
 // glDrawArrays, glReadPixels, ...) are linked symbols, not GLEW pointers.
 // Adding a GL call to the framework? Add it here, or the OSMesa backend stops
 // with "missing OpenGL function" (tests/backend_test covers this).
-#define RAYLAB_GLEW_FUNCTIONS(X)                                                                                    \
-    X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindVertexArray) X(BlitFramebuffer)           \
-    X(BufferData) X(CheckFramebufferStatus) X(ClientWaitSync) X(CompileShader) X(CreateProgram) X(CreateShader)       \
-    X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram) X(DeleteShader) X(DeleteSync) X(DeleteVertexArrays)       \
-    X(DetachShader) X(EnableVertexAttribArray) X(FenceSync) X(FramebufferTexture2D) X(GenBuffers) X(GenFramebuffers)  \
-    X(GenVertexArrays) X(GenerateMipmap) X(GetProgramInfoLog) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv)      \
-    X(GetUniformLocation) X(LinkProgram) X(ShaderSource) X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f)          \
-    X(Uniform3fv) X(Uniform4fv) X(Uniform1fv) X(Uniform1iv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)     \
+// clang-format off
+#define RAYLAB_GLEW_FUNCTIONS(X) \
+    X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindVertexArray)           \
+    X(BlitFramebuffer) X(BufferData) X(CheckFramebufferStatus) X(ClientWaitSync)                   \
+    X(CompileShader) X(CreateProgram) X(CreateShader) X(DeleteBuffers) X(DeleteFramebuffers)       \
+    X(DeleteProgram) X(DeleteShader) X(DeleteSync) X(DeleteVertexArrays) X(DetachShader)           \
+    X(EnableVertexAttribArray) X(FenceSync) X(FramebufferTexture2D) X(GenBuffers)                  \
+    X(GenFramebuffers) X(GenVertexArrays) X(GenerateMipmap) X(GetProgramInfoLog) X(GetProgramiv)   \
+    X(GetShaderInfoLog) X(GetShaderiv) X(GetUniformLocation) X(LinkProgram) X(ShaderSource)        \
+    X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform3fv) X(Uniform4fv)                \
+    X(Uniform1fv) X(Uniform1iv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)              \
     X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)
+// clang-format on
 
 bool allLoaded(std::string* missing) {
-#define RAYLAB_CHECK(name) \
-    if (!__glew##name) { *missing = "gl" #name; return false; }
+#define RAYLAB_CHECK(name)                                                                         \
+    if (!__glew##name) {                                                                           \
+        *missing = "gl" #name;                                                                     \
+        return false;                                                                              \
+    }
     RAYLAB_GLEW_FUNCTIONS(RAYLAB_CHECK)
 #undef RAYLAB_CHECK
     return true;
 }
 
-} // namespace
+}  // namespace
 
 void loadGlWithGlew() {
     glewExperimental = GL_TRUE;
@@ -39,19 +46,21 @@ void loadGlWithGlew() {
     std::string missing;
     if (!allLoaded(&missing)) {
         throw Error(std::string("cannot load OpenGL functions (glewInit: ") +
-                    reinterpret_cast<const char*>(glewGetErrorString(status)) + ", first missing: " + missing + ")");
+                    reinterpret_cast<const char*>(glewGetErrorString(status)) +
+                    ", first missing: " + missing + ")");
     }
     // glewInit's probing may leave an error behind; start clean.
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    while (glGetError() != GL_NO_ERROR) {}
 }
 
 void loadGlFrom(GetProcFn getProc) {
-#define RAYLAB_LOAD(name) __glew##name = reinterpret_cast<decltype(__glew##name)>(getProc("gl" #name));
+#define RAYLAB_LOAD(name)                                                                          \
+    __glew##name = reinterpret_cast<decltype(__glew##name)>(getProc("gl" #name));
     RAYLAB_GLEW_FUNCTIONS(RAYLAB_LOAD)
 #undef RAYLAB_LOAD
     std::string missing;
-    if (!allLoaded(&missing)) throw Error("missing OpenGL function " + missing + " in this context");
+    if (!allLoaded(&missing))
+        throw Error("missing OpenGL function " + missing + " in this context");
 }
 
 void requireGl33() {
@@ -59,7 +68,8 @@ void requireGl33() {
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     if (major * 10 + minor < 33)
-        throw Error("OpenGL 3.3 is required, this context offers " + std::to_string(major) + "." + std::to_string(minor));
+        throw Error("OpenGL 3.3 is required, this context offers " + std::to_string(major) + "." +
+                    std::to_string(minor));
 }
 
 std::string glDescription() {
@@ -70,4 +80,4 @@ std::string glDescription() {
     return "OpenGL " + str(GL_VERSION) + " on " + str(GL_RENDERER);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -25,4 +25,4 @@ void requireGl33();
 // "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe (LLVM 15.0.6, 256 bits)"
 std::string glDescription();
 
-} // namespace raylab
+}  // namespace raylab

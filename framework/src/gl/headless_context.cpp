@@ -27,4 +27,4 @@ std::unique_ptr<GlContext> createHeadlessContext(Backend backend) {
     }
 }
 
-} // namespace raylab
+}  // namespace raylab

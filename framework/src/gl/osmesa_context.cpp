@@ -43,12 +43,22 @@ public:
     OsMesaContext() {
         void* lib = dlopen(kOsMesaLibrary, RTLD_NOW | RTLD_GLOBAL);
         if (!lib) throw Error(std::string("OSMesa is not available: ") + dlerror());
-        auto create = load<decltype(&OSMesaCreateContextAttribs)>(lib, "OSMesaCreateContextAttribs");
+        auto create =
+            load<decltype(&OSMesaCreateContextAttribs)>(lib, "OSMesaCreateContextAttribs");
         auto makeCurrent = load<decltype(&OSMesaMakeCurrent)>(lib, "OSMesaMakeCurrent");
         destroy_ = load<decltype(&OSMesaDestroyContext)>(lib, "OSMesaDestroyContext");
         gGetProcAddress = load<decltype(&OSMesaGetProcAddress)>(lib, "OSMesaGetProcAddress");
-        const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                                  OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+        const int attributes[] = {OSMESA_FORMAT,
+                                  OSMESA_RGBA,
+                                  OSMESA_DEPTH_BITS,
+                                  0,
+                                  OSMESA_PROFILE,
+                                  OSMESA_CORE_PROFILE,
+                                  OSMESA_CONTEXT_MAJOR_VERSION,
+                                  3,
+                                  OSMESA_CONTEXT_MINOR_VERSION,
+                                  3,
+                                  0};
         context_ = create(attributes, nullptr);
         if (!context_) throw Error("OSMesa cannot create an OpenGL 3.3 core context");
         // OSMesa wants a buffer to be current; we draw into framebuffer objects, so 1x1 is enough.
@@ -70,25 +80,30 @@ private:
 
 std::vector<std::string> gArguments;
 
-} // namespace
+}  // namespace
 
 bool inOsMesaProcess() {
     // The invariant that matters: the linked GL 1.1 symbols are OSMesa's.
     Dl_info info{};
     const void* clear = reinterpret_cast<const void*>(&glClear);
-    return dladdr(clear, &info) != 0 && info.dli_fname && std::strstr(info.dli_fname, "OSMesa") != nullptr;
+    return dladdr(clear, &info) != 0 && info.dli_fname &&
+           std::strstr(info.dli_fname, "OSMesa") != nullptr;
 }
 
 void reexecWithOsMesa() {
     if (const char* marker = std::getenv(kPreloadedMarker); marker && std::strcmp(marker, "1") == 0)
-        throw Error("the OSMesa backend needs libOSMesa preloaded, but preloading it did not take effect");
+        throw Error(
+            "the OSMesa backend needs libOSMesa preloaded, but preloading it did not take effect");
     std::string preload = kOsMesaLibrary;
     if (const char* old = std::getenv("LD_PRELOAD"); old && *old) preload += std::string(":") + old;
     setenv("LD_PRELOAD", preload.c_str(), 1);
     setenv(kPreloadedMarker, "1", 1);
     std::vector<std::string> args;
     for (std::size_t i = 0; i < gArguments.size(); ++i) {
-        if (gArguments[i] == "--backend" && i + 1 < gArguments.size()) { ++i; continue; }
+        if (gArguments[i] == "--backend" && i + 1 < gArguments.size()) {
+            ++i;
+            continue;
+        }
         if (gArguments[i].rfind("--backend=", 0) == 0) continue;
         args.push_back(gArguments[i]);
     }
@@ -104,8 +119,9 @@ void reexecWithOsMesa() {
 void rememberProgramArguments(int argc, char** argv) { gArguments.assign(argv, argv + argc); }
 
 std::unique_ptr<GlContext> createOsMesaContext() {
-    if (!inOsMesaProcess()) throw Error("the OSMesa backend needs its own process (use --backend osmesa)");
+    if (!inOsMesaProcess())
+        throw Error("the OSMesa backend needs its own process (use --backend osmesa)");
     return std::make_unique<OsMesaContext>();
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -9,9 +9,12 @@ namespace {
 
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
-    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+              : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> log(std::size_t(length) + 1, '\0');
-    if (length > 0) isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data()) : glGetShaderInfoLog(object, length, nullptr, log.data());
+    if (length > 0)
+        isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
+                  : glGetShaderInfoLog(object, length, nullptr, log.data());
     return log.data();
 }
 
@@ -20,7 +23,8 @@ std::string firstErrorLine(const std::string& log) {
     std::istringstream in(log);
     std::string line, first;
     while (std::getline(in, line)) {
-        if (line.find("error") != std::string::npos || line.find("ERROR") != std::string::npos) return line;
+        if (line.find("error") != std::string::npos || line.find("ERROR") != std::string::npos)
+            return line;
         if (first.empty() && !line.empty()) first = line;
     }
     return first.empty() ? "unknown error" : first;
@@ -41,7 +45,7 @@ GLuint compile(GLenum kind, const ShaderSource& source) {
     return shader;
 }
 
-} // namespace
+}  // namespace
 
 ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment) {
     GLuint vs = compile(GL_VERTEX_SHADER, vertex);
@@ -79,4 +83,4 @@ GLint ShaderProgram::uniform(const std::string& name) const {
     return location;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,7 +13,8 @@ namespace raylab {
 // error, mapped to file:line; log() has every mapped line.
 class ShaderError : public std::runtime_error {
 public:
-    ShaderError(const std::string& firstLine, std::string log) : std::runtime_error(firstLine), log_(std::move(log)) {}
+    ShaderError(const std::string& firstLine, std::string log)
+        : std::runtime_error(firstLine), log_(std::move(log)) {}
     const std::string& log() const { return log_; }
 
 private:
@@ -36,4 +37,4 @@ private:
     mutable std::unordered_map<std::string, GLint> uniforms_;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -16,10 +16,11 @@ namespace {
 std::vector<std::uint8_t> bottomRowFirst(const Image& image) {
     std::vector<std::uint8_t> rows(image.rgba.size());
     const std::size_t row = std::size_t(image.width) * 4;
-    for (int y = 0; y < image.height; ++y) std::memcpy(&rows[std::size_t(image.height - 1 - y) * row], image.pixel(0, y), row);
+    for (int y = 0; y < image.height; ++y)
+        std::memcpy(&rows[std::size_t(image.height - 1 - y) * row], image.pixel(0, y), row);
     return rows;
 }
-} // namespace
+}  // namespace
 
 TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
     std::vector<Image> images;
@@ -33,18 +34,24 @@ TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
     glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
     for (std::size_t i = 0; i < images.size(); ++i)
         if (images[i].width > maxSize || images[i].height > maxSize)
-            throw Error("texture " + displayPath(files[i]) + " is " + std::to_string(images[i].width) + "x" + std::to_string(images[i].height) +
-                        ": this OpenGL takes at most " + std::to_string(maxSize) + " pixels per side");
+            throw Error("texture " + displayPath(files[i]) + " is " +
+                        std::to_string(images[i].width) + "x" + std::to_string(images[i].height) +
+                        ": this OpenGL takes at most " + std::to_string(maxSize) +
+                        " pixels per side");
     if (int(images.size()) > maxLayers)
-        throw Error(std::to_string(images.size()) + " textures, but this OpenGL takes at most " + std::to_string(maxLayers) + " in an array");
+        throw Error(std::to_string(images.size()) + " textures, but this OpenGL takes at most " +
+                    std::to_string(maxLayers) + " in an array");
     glGenTextures(1, &id_);
     glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     int layers = std::max(1, int(images.size()));
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, std::max(1, width_), std::max(1, height_), layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, std::max(1, width_), std::max(1, height_),
+                 layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     for (std::size_t i = 0; i < images.size(); ++i) {
-        std::vector<std::uint8_t> rows = bottomRowFirst(resampledBilinear(images[i], width_, height_));
-        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(i), width_, height_, 1, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+        std::vector<std::uint8_t> rows =
+            bottomRowFirst(resampledBilinear(images[i], width_, height_));
+        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(i), width_, height_, 1, GL_RGBA,
+                        GL_UNSIGNED_BYTE, rows.data());
     }
     // No mipmaps: the tracer samples at level 0 (texture derivatives are
     // undefined inside its data-dependent loop).
@@ -55,7 +62,8 @@ TextureArray::TextureArray(const std::vector<std::filesystem::path>& files) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     if (GLenum e = glGetError(); e != GL_NO_ERROR) {
         glDeleteTextures(1, &id_);
-        throw Error("cannot upload the scene's textures (OpenGL error " + std::to_string(e) + ", out of memory?)");
+        throw Error("cannot upload the scene's textures (OpenGL error " + std::to_string(e) +
+                    ", out of memory?)");
     }
 }
 
@@ -74,7 +82,8 @@ Texture2D::Texture2D(const std::filesystem::path& file) {
     glGenTextures(1, &id_);
     glBindTexture(GL_TEXTURE_2D, id_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 rows.data());
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -96,19 +105,21 @@ CubeMap::CubeMap(const CubeFaces& faces) {
         images[i] = loadPng(faces[i]);
         const Image& img = images[i];
         if (img.width != img.height)
-            throw Error("sky box face " + displayPath(faces[i]) + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+            throw Error("sky box face " + displayPath(faces[i]) + " is " +
+                        std::to_string(img.width) + "x" + std::to_string(img.height) +
                         ", faces must be square");
         if (i > 0 && img.width != images[0].width)
-            throw Error("sky box face " + displayPath(faces[i]) + " is " + std::to_string(img.width) + " pixels wide, " +
-                        displayPath(faces[0]) + " is " + std::to_string(images[0].width) + ": faces must have one size");
+            throw Error("sky box face " + displayPath(faces[i]) + " is " +
+                        std::to_string(img.width) + " pixels wide, " + displayPath(faces[0]) +
+                        " is " + std::to_string(images[0].width) + ": faces must have one size");
     }
     size_ = images[0].width;
     glGenTextures(1, &id_);
     glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (std::size_t i = 0; i < images.size(); ++i)
-        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), 0, GL_RGBA8, size_, size_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     images[i].rgba.data());
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), 0, GL_RGBA8, size_, size_, 0,
+                     GL_RGBA, GL_UNSIGNED_BYTE, images[i].rgba.data());
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
@@ -126,4 +137,4 @@ void CubeMap::bind(int unit) const {
     glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
 }
 
-} // namespace raylab
+}  // namespace raylab

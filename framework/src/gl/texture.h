@@ -72,4 +72,4 @@ private:
     int size_ = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -26,14 +26,18 @@ std::string num(double v) { return significant(v, 6); }
 
 std::string hitText(double t) { return t < 0.0 ? "no hit" : "t = " + num(t); }
 
-bool finite(const dvec4& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w); }
+bool finite(const dvec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
 
 // Hit distances: hit or miss must agree (unless on the boundary), t within a
 // relative 1e-4 - float32 gives about 1e-7, a wrong formula far more.
 std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& want) {
     if (!finite(got)) return c.label + ": expected " + hitText(want.x) + ", got NaN or Inf";
     bool gotHit = got.x != kNoHit, wantHit = want.x != kNoHit;
-    if (gotHit && got.x <= 0.0) return c.label + ": returned t = " + num(got.x) + ", neither a hit in front of the ray nor NO_HIT";
+    if (gotHit && got.x <= 0.0)
+        return c.label + ": returned t = " + num(got.x) +
+               ", neither a hit in front of the ray nor NO_HIT";
     if (gotHit != wantHit) {
         if (c.hitOrMiss && !gotHit) return "";
         return c.label + ": expected " + hitText(want.x) + ", got " + hitText(got.x);
@@ -43,7 +47,8 @@ std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& wan
     return "";
 }
 
-std::string compareVector(const FunctionCase& c, const dvec4& got, const dvec4& want, int components, double tolerance) {
+std::string compareVector(const FunctionCase& c, const dvec4& got, const dvec4& want,
+                          int components, double tolerance) {
     if (!finite(got)) return c.label + ": got NaN or Inf";
     for (int i = 0; i < components; ++i)
         if (std::fabs(got[i] - want[i]) > tolerance) {
@@ -79,7 +84,8 @@ struct Lcg {
     }
 };
 
-FunctionCase rayCase(std::string label, dvec3 o, dvec3 d, dvec4 a2, dvec4 a3 = dvec4(0.0), bool hitOrMiss = false) {
+FunctionCase rayCase(std::string label, dvec3 o, dvec3 d, dvec4 a2, dvec4 a3 = dvec4(0.0),
+                     bool hitOrMiss = false) {
     FunctionCase c;
     c.label = std::move(label);
     c.in = {dvec4(o, 0.0), dvec4(glm::normalize(d), 0.0), a2, a3};
@@ -112,9 +118,12 @@ FunctionSpec sphereSpec() {
         dvec3 center(rng.in(-3, 3), rng.in(-3, 3), rng.in(-3, 3));
         dvec3 o(rng.in(-6, 6), rng.in(-6, 6), rng.in(-6, 6));
         dvec3 aim = center + rng.direction() * rng.in(0.0, 1.5) - o;  // about half of them hit
-        s.cases.push_back(rayCase("random ray " + std::to_string(i + 1), o, aim, dvec4(center, rng.in(0.3, 1.2))));
+        s.cases.push_back(rayCase("random ray " + std::to_string(i + 1), o, aim,
+                                  dvec4(center, rng.in(0.3, 1.2))));
     }
-    s.reference = [](const FunctionCase& c) { return dvec4(reference::intersectSphere(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
+    s.reference = [](const FunctionCase& c) {
+        return dvec4(reference::intersectSphere(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1);
+    };
     s.compare = compareHit;
     return s;
 }
@@ -134,9 +143,12 @@ FunctionSpec planeSpec() {
         rayCase("from below", {0, -2, 0}, {0.2, 1, 0}, floor),
         rayCase("starting on the plane", {0, 0, 0}, {0, -1, 0.3}, floor),
         rayCase("grazing", {0, 0.01, 0}, {1, -0.001, 0}, floor),
-        rayCase("tilted plane, offset", {0, 0, 0}, {1, 1, 1}, dvec4(glm::normalize(dvec3(1, 2, 3)), 4.0)),
+        rayCase("tilted plane, offset", {0, 0, 0}, {1, 1, 1},
+                dvec4(glm::normalize(dvec3(1, 2, 3)), 4.0)),
     };
-    s.reference = [](const FunctionCase& c) { return dvec4(reference::intersectPlane(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1); };
+    s.reference = [](const FunctionCase& c) {
+        return dvec4(reference::intersectPlane(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1);
+    };
     s.compare = compareHit;
     return s;
 }
@@ -155,10 +167,12 @@ FunctionSpec discSpec() {
         rayCase("on the rim", {2.0, 3, 0}, {0, -1, 0}, disc, up, true),
         rayCase("parallel", {0, 1, -5}, {0, 0, 1}, disc, up),
         rayCase("from below", {0.5, -1, 0.5}, {0, 1, 0}, disc, up),
-        rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5), dvec4(glm::normalize(dvec3(0.2, 0.1, 1)), 0)),
+        rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5),
+                dvec4(glm::normalize(dvec3(0.2, 0.1, 1)), 0)),
     };
     s.reference = [](const FunctionCase& c) {
-        return dvec4(reference::intersectDisc(rayOf(c), xyz(c.in[2]), xyz(c.in[3]), c.in[2].w), 0, 0, 1);
+        return dvec4(reference::intersectDisc(rayOf(c), xyz(c.in[2]), xyz(c.in[3]), c.in[2].w), 0,
+                     0, 1);
     };
     s.compare = compareHit;
     return s;
@@ -166,7 +180,8 @@ FunctionSpec discSpec() {
 
 // Triangle a, b, c packed into the spare w components: a0.w a1.w a2.w = a,
 // a2.xyz = b, a3.xyz = c.
-FunctionCase triangleCase(std::string label, dvec3 o, dvec3 d, dvec3 a, dvec3 b, dvec3 c, bool hitOrMiss = false) {
+FunctionCase triangleCase(std::string label, dvec3 o, dvec3 d, dvec3 a, dvec3 b, dvec3 c,
+                          bool hitOrMiss = false) {
     FunctionCase k;
     k.label = std::move(label);
     k.in = {dvec4(o, a.x), dvec4(glm::normalize(d), a.y), dvec4(b, a.z), dvec4(c, 0.0)};
@@ -178,7 +193,8 @@ FunctionSpec triangleSpec() {
     FunctionSpec s;
     s.name = "intersectTriangle";
     s.includes = {"intersect_triangle.glsl"};
-    s.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, a3.xyz), 0.0, 0.0, 1.0)";
+    s.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, a3.xyz), "
+             "0.0, 0.0, 1.0)";
     const dvec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);  // counter-clockwise seen from +z
     s.cases = {
         triangleCase("front face, inside", {0.5, 0.5, 3}, {0, 0, -1}, a, b, c),
@@ -196,7 +212,8 @@ FunctionSpec triangleSpec() {
     };
     s.reference = [](const FunctionCase& k) {
         dvec3 first(k.in[0].w, k.in[1].w, k.in[2].w);
-        return dvec4(reference::intersectTriangle(rayOf(k), first, xyz(k.in[2]), xyz(k.in[3])), 0, 0, 1);
+        return dvec4(reference::intersectTriangle(rayOf(k), first, xyz(k.in[2]), xyz(k.in[3])), 0,
+                     0, 1);
     };
     s.compare = compareHit;
     return s;
@@ -210,7 +227,8 @@ FunctionSpec torusNormalSpec() {
     const double R = 1.0, r = 0.25;
     for (int i = 0; i < 12; ++i) {
         double u = 0.5 * i, v = 1.3 * i + 0.2;
-        dvec3 p((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+        dvec3 p((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                r * std::sin(v));
         FunctionCase c;
         c.label = "surface point " + std::to_string(i + 1);
         c.in = {dvec4(p, R), dvec4(r, 0, 0, 0), dvec4(0.0), dvec4(0.0)};
@@ -221,7 +239,9 @@ FunctionSpec torusNormalSpec() {
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (!finite(got)) return c.label + ": got NaN or Inf";
-        if (std::fabs(glm::length(xyz(got)) - 1.0) > 1e-3) return c.label + ": the normal is not of unit length (" + num(glm::length(xyz(got))) + ")";
+        if (std::fabs(glm::length(xyz(got)) - 1.0) > 1e-3)
+            return c.label + ": the normal is not of unit length (" + num(glm::length(xyz(got))) +
+                   ")";
         return compareVector(c, got, want, 3, 1e-3);
     };
     return s;
@@ -244,7 +264,8 @@ FunctionSpec fresnelDielectricSpec() {
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (std::isfinite(got.x) && (got.x < 0.0 || got.x > 1.0))
-            return c.label + ": F = " + num(got.x) + " is not a share (reflected + transmitted must be 1, both >= 0)";
+            return c.label + ": F = " + num(got.x) +
+                   " is not a share (reflected + transmitted must be 1, both >= 0)";
         return compareVector(c, got, want, 1, 1e-4);
     };
     return s;
@@ -255,7 +276,8 @@ FunctionSpec fresnelConductorSpec() {
     s.name = "fresnelConductor";
     s.includes = {"fresnel.glsl"};
     s.call = "vec4(fresnelConductor(a0.x, a1.xyz, a2.xyz), 1.0)";
-    const dvec3 goldN(0.143, 0.375, 1.442), goldK(3.983, 2.386, 1.603), silverN(0.155, 0.117, 0.135), silverK(4.83, 3.12, 2.15);
+    const dvec3 goldN(0.143, 0.375, 1.442), goldK(3.983, 2.386, 1.603),
+        silverN(0.155, 0.117, 0.135), silverK(4.83, 3.12, 2.15);
     for (double cosine : {1.0, 0.7, 0.4, 0.1, 0.0}) {
         FunctionCase c;
         c.label = "gold, cos " + num(cosine);
@@ -268,7 +290,9 @@ FunctionSpec fresnelConductorSpec() {
     s.reference = [](const FunctionCase& c) {
         return dvec4(reference::fresnelConductor(c.in[0].x, xyz(c.in[1]), xyz(c.in[2])), 1.0);
     };
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) { return compareVector(c, got, want, 3, 1e-4); };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareVector(c, got, want, 3, 1e-4);
+    };
     return s;
 }
 
@@ -287,9 +311,15 @@ FunctionSpec sphereUvSpec() {
     s.includes = {"sphere_uv.glsl"};
     s.call = "vec4(sphereUV(a0.xyz), 0.0, 1.0)";
     const std::pair<const char*, dvec3> dirs[] = {
-        {"+x (u = 0.5)", {1, 0, 0}},  {"-z (east of +x)", {0, 0, -1}}, {"+z", {0, 0, 1}},
-        {"north pole", {0, 1, 0}},    {"south pole", {0, -1, 0}},      {"mid-latitude", {0.5, 0.6, -0.3}},
-        {"southern", {-0.4, -0.7, 0.2}}, {"near the seam", {-1, 0, 1e-3}}, {"across the seam", {-1, 0, -1e-3}},
+        {"+x (u = 0.5)", {1, 0, 0}},
+        {"-z (east of +x)", {0, 0, -1}},
+        {"+z", {0, 0, 1}},
+        {"north pole", {0, 1, 0}},
+        {"south pole", {0, -1, 0}},
+        {"mid-latitude", {0.5, 0.6, -0.3}},
+        {"southern", {-0.4, -0.7, 0.2}},
+        {"near the seam", {-1, 0, 1e-3}},
+        {"across the seam", {-1, 0, -1e-3}},
     };
     for (const auto& [label, d] : dirs) {
         FunctionCase c;
@@ -297,10 +327,13 @@ FunctionSpec sphereUvSpec() {
         c.in = {dvec4(glm::normalize(d), 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) { return dvec4(reference::sphereUV(xyz(c.in[0])), 0, 1); };
+    s.reference = [](const FunctionCase& c) {
+        return dvec4(reference::sphereUV(xyz(c.in[0])), 0, 1);
+    };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         // At the poles every u is right.
-        if (std::fabs(std::fabs(xyz(c.in[0]).y) - 1.0) < 1e-9) return compareVector(c, dvec4(got.y, 0, 0, 0), dvec4(want.y, 0, 0, 0), 1, 1e-4);
+        if (std::fabs(std::fabs(xyz(c.in[0]).y) - 1.0) < 1e-9)
+            return compareVector(c, dvec4(got.y, 0, 0, 0), dvec4(want.y, 0, 0, 0), 1, 1e-4);
         return compareUv(c, got, want);
     };
     return s;
@@ -317,9 +350,12 @@ FunctionSpec planeUvSpec() {
         dvec3 point, origin, n;
         double tile;
     } rows[] = {
-        {"floor, origin", {0, 0, 0}, {0, 0, 0}, up, 2.0},   {"floor, one tile along x", {2, 0, 0}, {0, 0, 0}, up, 2.0},
-        {"floor, along z", {0, 0, 3}, {0, 0, 0}, up, 2.0},  {"floor, far away", {123, 0, -77}, {0, 0, 0}, up, 2.0},
-        {"tile size 0.5", {1, 0, 1}, {0, 0, 0}, up, 0.5},   {"tilted plane", {0.4, -0.3, 0.5}, {0.1, 0.1, 0.1}, tilted, 1.0},
+        {"floor, origin", {0, 0, 0}, {0, 0, 0}, up, 2.0},
+        {"floor, one tile along x", {2, 0, 0}, {0, 0, 0}, up, 2.0},
+        {"floor, along z", {0, 0, 3}, {0, 0, 0}, up, 2.0},
+        {"floor, far away", {123, 0, -77}, {0, 0, 0}, up, 2.0},
+        {"tile size 0.5", {1, 0, 1}, {0, 0, 0}, up, 0.5},
+        {"tilted plane", {0.4, -0.3, 0.5}, {0.1, 0.1, 0.1}, tilted, 1.0},
     };
     for (const Row& r : rows) {
         FunctionCase c;
@@ -331,17 +367,18 @@ FunctionSpec planeUvSpec() {
         return dvec4(reference::planeUV(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), c.in[2].w), 0, 1);
     };
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        return compareVector(c, got, want, 2, 1e-4 * std::max(1.0, std::fabs(want.x) + std::fabs(want.y)));
+        return compareVector(c, got, want, 2,
+                             1e-4 * std::max(1.0, std::fabs(want.x) + std::fabs(want.y)));
     };
     return s;
 }
 
-} // namespace
+}  // namespace
 
 const std::vector<FunctionSpec>& functionSpecs() {
-    static const std::vector<FunctionSpec> specs = {sphereSpec(),     fresnelDielectricSpec(), fresnelConductorSpec(),
-                                                    planeSpec(),      discSpec(),              triangleSpec(),
-                                                    torusNormalSpec(), sphereUvSpec(),         planeUvSpec()};
+    static const std::vector<FunctionSpec> specs = {
+        sphereSpec(),   fresnelDielectricSpec(), fresnelConductorSpec(), planeSpec(),  discSpec(),
+        triangleSpec(), torusNormalSpec(),       sphereUvSpec(),         planeUvSpec()};
     return specs;
 }
 
@@ -359,7 +396,8 @@ std::vector<const FunctionSpec*> functionSpecsFor(const StageInfo& stage) {
         try {
             out.push_back(&functionSpec(stage.functionChecks[i]));
         } catch (const Error& e) {
-            throw Error(displayPath(stage.folder() / "stage.json") + ": function_checks[" + std::to_string(i) + "]: " + e.what());
+            throw Error(displayPath(stage.folder() / "stage.json") + ": function_checks[" +
+                        std::to_string(i) + "]: " + e.what());
         }
     }
     return out;
@@ -369,7 +407,8 @@ const StageInfo& stageCheckingFunction(const std::string& name) {
     for (const StageInfo& stage : allStages())
         for (const std::string& f : stage.functionChecks)
             if (f == name) return stage;
-    throw Error("no stage lists the function check '" + name + "' (solution/*/stage.json, \"function_checks\")");
+    throw Error("no stage lists the function check '" + name +
+                "' (solution/*/stage.json, \"function_checks\")");
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -18,9 +18,10 @@ namespace raylab {
 
 // One row of inputs: up to four vec4s, a0..a3 in the harness.
 struct FunctionCase {
-    std::string label;            // "tangent ray", "from inside"
+    std::string label;  // "tangent ray", "from inside"
     std::array<glm::dvec4, 4> in{};
-    bool hitOrMiss = false;       // on the boundary: either answer is right (if a hit, its t must be right)
+    bool hitOrMiss =
+        false;  // on the boundary: either answer is right (if a hit, its t must be right)
 };
 
 struct FunctionSpec {
@@ -30,7 +31,8 @@ struct FunctionSpec {
     std::vector<FunctionCase> cases;
     std::function<glm::dvec4(const FunctionCase&)> reference;
     // Empty when GOT agrees with WANT, else one line saying how it does not.
-    std::function<std::string(const FunctionCase&, const glm::dvec4& got, const glm::dvec4& want)> compare;
+    std::function<std::string(const FunctionCase&, const glm::dvec4& got, const glm::dvec4& want)>
+        compare;
 };
 
 // Every checked function. A stage runs those its stage.json lists under
@@ -51,14 +53,16 @@ struct FunctionOutcome {
 
 // Runs SPEC's table through the stage's shader files in SOURCES. Needs a
 // current GL context.
-FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources);
+FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage,
+                                 const StageSources& sources);
 
 // The raw harness output: one vec4 per case (w = kHarnessTodoMarker when the
 // call reached a labTodo() stub). EXTRADEFINES are added to the stage's
 // (e.g. "TORUS_SOLVER_CLOSED_FORM" for the numerics tests). Throws Error or
 // ShaderError when the harness does not compile.
 inline constexpr float kHarnessTodoMarker = -12345.0f;
-std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources,
+std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage,
+                                  const StageSources& sources,
                                   const std::vector<std::string>& extraDefines = {});
 
-} // namespace raylab
+}  // namespace raylab

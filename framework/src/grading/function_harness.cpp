@@ -37,8 +37,11 @@ std::string harnessSource(const FunctionSpec& spec) {
             "    vec4 a1 = texelFetch(uCases, ivec2(i, 1), 0);\n"
             "    vec4 a2 = texelFetch(uCases, ivec2(i, 2), 0);\n"
             "    vec4 a3 = texelFetch(uCases, ivec2(i, 3), 0);\n"
-            "    result = " + spec.call + ";\n"
-            "    if (gLabTodoReached) result.w = " + std::to_string(int(kHarnessTodoMarker)) + ".0;  // a stub answered\n}\n";
+            "    result = " +
+            spec.call +
+            ";\n"
+            "    if (gLabTodoReached) result.w = " +
+            std::to_string(int(kHarnessTodoMarker)) + ".0;  // a stub answered\n}\n";
     return text;
 }
 
@@ -48,7 +51,8 @@ struct HarnessDir {
     fs::path path;
     HarnessDir() {
         std::string pattern = (fs::temp_directory_path() / "raylab-harness-XXXXXX").string();
-        if (!mkdtemp(pattern.data())) throw Error("cannot create a temporary folder for the function-check harness");
+        if (!mkdtemp(pattern.data()))
+            throw Error("cannot create a temporary folder for the function-check harness");
         path = pattern;
     }
     ~HarnessDir() {
@@ -64,7 +68,9 @@ public:
         std::vector<float> texels(std::size_t(n) * 4 * 4);
         for (int row = 0; row < 4; ++row)
             for (int i = 0; i < n; ++i)
-                for (int c = 0; c < 4; ++c) texels[(std::size_t(row) * std::size_t(n) + std::size_t(i)) * 4 + std::size_t(c)] = float(cases[std::size_t(i)].in[std::size_t(row)][c]);
+                for (int c = 0; c < 4; ++c)
+                    texels[(std::size_t(row) * std::size_t(n) + std::size_t(i)) * 4 +
+                           std::size_t(c)] = float(cases[std::size_t(i)].in[std::size_t(row)][c]);
         glGenTextures(1, &id_);
         glBindTexture(GL_TEXTURE_2D, id_);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -81,15 +87,17 @@ private:
     GLuint id_ = 0;
 };
 
-} // namespace
+}  // namespace
 
-std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources,
+std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage,
+                                  const StageSources& sources,
                                   const std::vector<std::string>& extraDefines) {
     HarnessDir dir;
     {
         std::ofstream f(dir.path / "harness.frag");
         f << harnessSource(spec);
-        if (!f.flush()) throw Error("cannot write the function-check harness to " + dir.path.string());
+        if (!f.flush())
+            throw Error("cannot write the function-check harness to " + dir.path.string());
     }
     std::vector<std::string> defines = stage.defines();
     defines.insert(defines.end(), extraDefines.begin(), extraDefines.end());
@@ -113,18 +121,22 @@ std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& sta
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     std::vector<float> raw = target.readFloats();
     std::vector<glm::vec4> results;
-    for (int i = 0; i < n; ++i) results.emplace_back(raw[std::size_t(i) * 4], raw[std::size_t(i) * 4 + 1], raw[std::size_t(i) * 4 + 2], raw[std::size_t(i) * 4 + 3]);
+    for (int i = 0; i < n; ++i)
+        results.emplace_back(raw[std::size_t(i) * 4], raw[std::size_t(i) * 4 + 1],
+                             raw[std::size_t(i) * 4 + 2], raw[std::size_t(i) * 4 + 3]);
     return results;
 }
 
-FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage, const StageSources& sources) {
+FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage,
+                                 const StageSources& sources) {
     FunctionOutcome out;
     out.name = spec.name;
     out.total = int(spec.cases.size());
     std::vector<glm::vec4> results;
     try {
         results = runHarness(spec, stage, sources);
-    } catch (const std::exception& e) {  // Error or ShaderError: the student's code does not compile
+    } catch (
+        const std::exception& e) {  // Error or ShaderError: the student's code does not compile
         out.compiled = false;
         out.firstFailure = std::string("does not compile: ") + e.what();
         return out;
@@ -132,12 +144,13 @@ FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stag
     for (int i = 0; i < out.total; ++i) {
         const FunctionCase& c = spec.cases[std::size_t(i)];
         const glm::vec4& r = results[std::size_t(i)];
-        std::string why = r.w == kHarnessTodoMarker ? c.label + ": reaches an unfinished TODO"
-                                                    : spec.compare(c, glm::dvec4(r), spec.reference(c));
+        std::string why = r.w == kHarnessTodoMarker
+                              ? c.label + ": reaches an unfinished TODO"
+                              : spec.compare(c, glm::dvec4(r), spec.reference(c));
         if (why.empty()) ++out.passed;
         else if (out.firstFailure.empty()) out.firstFailure = why;
     }
     return out;
 }
 
-} // namespace raylab
+}  // namespace raylab

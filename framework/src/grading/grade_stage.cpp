@@ -23,11 +23,15 @@ namespace {
 constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
 constexpr double kZeroCreditShare = 0.10;
 
-Scene stageScene(const StageInfo& stage) { return loadScene(projectRoot() / "assets" / "scenes" / stage.scene); }
+Scene stageScene(const StageInfo& stage) {
+    return loadScene(projectRoot() / "assets" / "scenes" / stage.scene);
+}
 
-std::string relativeTo(const fs::path& p, const fs::path& base) { return p.lexically_relative(base).generic_string(); }
+std::string relativeTo(const fs::path& p, const fs::path& base) {
+    return p.lexically_relative(base).generic_string();
+}
 
-} // namespace
+}  // namespace
 
 double imageCredit(double badShare, bool passed) {
     if (passed) return 1.0;
@@ -37,11 +41,14 @@ double imageCredit(double badShare, bool passed) {
 void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::path& outDir) {
     const fs::path dir = outDir / "reference" / stage.id;
     fs::create_directories(dir);
-    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth, kGradeHeight);
-    for (const CheckView& view : gradingViews(stage, seed)) writePngAtomic(renderers.render(view), dir / (view.name + ".png"));
+    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth,
+                            kGradeHeight);
+    for (const CheckView& view : gradingViews(stage, seed))
+        writePngAtomic(renderers.render(view), dir / (view.name + ".png"));
 }
 
-StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student, const fs::path& outDir, unsigned seed) {
+StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student,
+                       const fs::path& outDir, unsigned seed) {
     StageResult result;
     result.stage = stage.id;
     result.status = "graded";
@@ -66,9 +73,12 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             Image expected = loadPng(refDir / (view.name + ".png"));
             ImageDiff diff = compareImages(mine, expected, tolerance.channel);
             check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
-            check.score = nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
+            check.score =
+                nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
             check.output = describe(diff);
-            if (nonFinite) check.output = std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta); " + check.output;
+            if (nonFinite)
+                check.output = std::to_string(nonFinite) +
+                               " pixels are NaN or Inf (shown magenta); " + check.output;
             std::string hint = check.passed ? "" : diagnose(mine, expected, tolerance.channel);
             if (!hint.empty()) check.output += "; " + hint;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
@@ -104,11 +114,22 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
 }
 
 std::string stageResultToJson(const StageResult& r) {
-    nlohmann::json j = {{"stage", r.stage}, {"status", r.status}, {"message", r.message}, {"score", r.score},
-                        {"max_score", r.maxScore}, {"seconds", r.seconds}, {"checks", nlohmann::json::array()}};
+    nlohmann::json j = {{"stage", r.stage},
+                        {"status", r.status},
+                        {"message", r.message},
+                        {"score", r.score},
+                        {"max_score", r.maxScore},
+                        {"seconds", r.seconds},
+                        {"checks", nlohmann::json::array()}};
     for (const CheckResult& c : r.checks)
-        j["checks"].push_back({{"name", c.name}, {"kind", c.kind}, {"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
-                               {"output", c.output}, {"student_image", c.studentImage}, {"reference_image", c.referenceImage},
+        j["checks"].push_back({{"name", c.name},
+                               {"kind", c.kind},
+                               {"score", c.score},
+                               {"max_score", c.maxScore},
+                               {"passed", c.passed},
+                               {"output", c.output},
+                               {"student_image", c.studentImage},
+                               {"reference_image", c.referenceImage},
                                {"diff_image", c.diffImage}});
     return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
@@ -142,4 +163,4 @@ StageResult stageResultFromJson(const std::string& text) {
     }
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -22,7 +22,8 @@ namespace raylab {
 
 // Where one student's results go: OUT/students/<name>/ (never next to the
 // class files, whatever the student's folder is called).
-inline std::filesystem::path studentFolder(const std::filesystem::path& outDir, const std::string& student) {
+inline std::filesystem::path studentFolder(const std::filesystem::path& outDir,
+                                           const std::string& student) {
     return outDir / "students" / student;
 }
 
@@ -31,13 +32,15 @@ inline constexpr int kGradeHeight = 120;
 
 // OUT/reference/<stage>/<view>.png for every grading view (solution, float
 // target converted to 8 bits exactly as for submissions).
-void renderGradingReferences(const StageInfo& stage, unsigned seed, const std::filesystem::path& outDir);
+void renderGradingReferences(const StageInfo& stage, unsigned seed,
+                             const std::filesystem::path& outDir);
 
 // Grades LABROOT/<stage>/ against OUT/reference/<stage>/; writes the
 // student's images and diff heat maps to OUT/students/<student>/<stage>/. A compile
 // error gives status "compile error" with the log mapped to file:line.
-StageResult gradeStage(const StageInfo& stage, const std::filesystem::path& labRoot, const std::string& student,
-                       const std::filesystem::path& outDir, unsigned seed);
+StageResult gradeStage(const StageInfo& stage, const std::filesystem::path& labRoot,
+                       const std::string& student, const std::filesystem::path& outDir,
+                       unsigned seed);
 
 // The credit (0..1) of an image check with this share of differing pixels.
 double imageCredit(double badShare, bool passed);
@@ -46,4 +49,4 @@ double imageCredit(double badShare, bool passed);
 std::string stageResultToJson(const StageResult& result);
 StageResult stageResultFromJson(const std::string& text);  // throws Error on malformed input
 
-} // namespace raylab
+}  // namespace raylab

@@ -18,7 +18,9 @@ struct SeededRandom {
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
         return z ^ (z >> 31);
     }
-    float uniform(float lo, float hi) { return lo + (hi - lo) * float(double(next() >> 11) * (1.0 / 9007199254740992.0)); }
+    float uniform(float lo, float hi) {
+        return lo + (hi - lo) * float(double(next() >> 11) * (1.0 / 9007199254740992.0));
+    }
 };
 
 // The scene file's own camera (views without a pose use it).
@@ -32,7 +34,7 @@ std::uint64_t stageHash(const std::string& id) {
     return h;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
     std::vector<CheckView> views = stage.checkViews;
@@ -48,8 +50,10 @@ std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
         const CheckView& base = *posed[rng.next() % posed.size()];
         CheckView v = base;
         v.name = "seeded-" + std::to_string(i + 1);
-        CameraPose pose = base.pose ? *base.pose : sceneCamera(base.scene.empty() ? stage.scene : base.scene);
-        pose.position += glm::vec3(rng.uniform(-0.4f, 0.4f), rng.uniform(-0.2f, 0.2f), rng.uniform(-0.4f, 0.4f));
+        CameraPose pose =
+            base.pose ? *base.pose : sceneCamera(base.scene.empty() ? stage.scene : base.scene);
+        pose.position +=
+            glm::vec3(rng.uniform(-0.4f, 0.4f), rng.uniform(-0.2f, 0.2f), rng.uniform(-0.4f, 0.4f));
         pose.yawDeg += rng.uniform(-10.0f, 10.0f);
         pose.pitchDeg += rng.uniform(-6.0f, 6.0f);
         v.pose = pose;
@@ -60,4 +64,4 @@ std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
     return views;
 }
 
-} // namespace raylab
+}  // namespace raylab

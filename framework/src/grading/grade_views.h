@@ -14,4 +14,4 @@ inline constexpr int kSeededViewsPerStage = 3;
 // results differ between standard libraries).
 std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed);
 
-} // namespace raylab
+}  // namespace raylab

@@ -3,8 +3,8 @@
 #include "error.h"
 
 #include <fcntl.h>
-#include <sys/prctl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,18 +16,24 @@
 namespace raylab {
 
 namespace {
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-} // namespace
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+}  // namespace
 
 std::string ChildOutcome::describe() const {
     char s[128];
     if (timedOut) std::snprintf(s, sizeof s, "timed out after %.0f s", seconds);
-    else if (signal) std::snprintf(s, sizeof s, "killed by signal %d (%s)", signal, strsignal(signal));
+    else if (signal)
+        std::snprintf(s, sizeof s, "killed by signal %d (%s)", signal, strsignal(signal));
     else std::snprintf(s, sizeof s, "exit code %d", exitCode);
     return s;
 }
 
-Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& log, const ChildLimits& limits) : limits_(limits) {
+Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& log,
+             const ChildLimits& limits)
+    : limits_(limits) {
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -41,7 +47,7 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
         // async-signal-safe calls until exec.
         setpgid(0, 0);
         prctl(PR_SET_PDEATHSIG, SIGKILL);  // the grader died: so does the job
-        if (getppid() == 1) _exit(126);     // it died before the line above
+        if (getppid() == 1) _exit(126);    // it died before the line above
         int fd = open(logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
         if (fd >= 0) {
             dup2(fd, 1);
@@ -54,7 +60,8 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
             close(devNull);
         }
         if (limits.memoryMb > 0) {
-            rlimit lim{rlim_t(limits.memoryMb) * 1024 * 1024, rlim_t(limits.memoryMb) * 1024 * 1024};
+            rlimit lim{rlim_t(limits.memoryMb) * 1024 * 1024,
+                       rlim_t(limits.memoryMb) * 1024 * 1024};
             setrlimit(RLIMIT_AS, &lim);
         }
         rlimit noCore{0, 0};
@@ -107,4 +114,4 @@ Child::~Child() {
     }
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -18,13 +18,15 @@ struct ChildOutcome {
     int exitCode = -1;   // when it exited
     int signal = 0;      // when a signal ended it (SIGKILL after a timeout too)
     double seconds = 0;  // wall time
-    std::string describe() const;  // "exit code 2", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
+    std::string describe()
+        const;  // "exit code 2", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
 };
 
 class Child {
 public:
     // Starts ARGV (argv[0] a path) with its output appended to LOG.
-    Child(const std::vector<std::string>& argv, const std::filesystem::path& log, const ChildLimits& limits);
+    Child(const std::vector<std::string>& argv, const std::filesystem::path& log,
+          const ChildLimits& limits);
     // Non-blocking: true (and the outcome filled in) once the child has ended.
     // Kills the child's process group when its time is up.
     bool poll();
@@ -43,4 +45,4 @@ private:
     ChildOutcome outcome_;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -25,4 +25,4 @@ bool FileWatcher::changed() {
     return any;
 }
 
-} // namespace raylab
+}  // namespace raylab

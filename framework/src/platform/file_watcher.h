@@ -20,4 +20,4 @@ private:
     std::vector<Entry> entries_;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -13,7 +13,7 @@ void fillBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data, 
     glBindTexture(GL_TEXTURE_BUFFER, 0);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
-} // namespace
+}  // namespace
 
 BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
     std::vector<float> nodes;
@@ -44,4 +44,4 @@ void BvhBuffers::bind(int nodeUnit, int itemUnit) const {
     glActiveTexture(GL_TEXTURE0);
 }
 
-} // namespace raylab
+}  // namespace raylab

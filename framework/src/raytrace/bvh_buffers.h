@@ -28,4 +28,4 @@ private:
     int nodeCount_ = 0;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -17,10 +17,13 @@ struct ViewName {
     DebugView view;
     const char* name;
 };
-constexpr ViewName kViews[] = {{DebugView::Color, "color"},  {DebugView::Depth, "depth"},     {DebugView::Normal, "normal"},
-                               {DebugView::Id, "id"},        {DebugView::Bounces, "bounces"}, {DebugView::Stack, "stack"}};
+constexpr ViewName kViews[] = {{DebugView::Color, "color"},     {DebugView::Depth, "depth"},
+                               {DebugView::Normal, "normal"},   {DebugView::Id, "id"},
+                               {DebugView::Bounces, "bounces"}, {DebugView::Stack, "stack"}};
 
-int channelsOf(DebugView view) { return view == DebugView::Color || view == DebugView::Normal ? 3 : 1; }
+int channelsOf(DebugView view) {
+    return view == DebugView::Color || view == DebugView::Normal ? 3 : 1;
+}
 
 StageInfo withViewDefines(const StageInfo& stage, GpuView view) {
     StageInfo s = stage;
@@ -48,10 +51,11 @@ void ramp(double s, std::uint8_t rgb[3]) {
     s = std::clamp(s, 0.0, 1.0) * 3.0;
     int i = std::min(2, int(s));
     double f = s - i;
-    for (int c = 0; c < 3; ++c) rgb[c] = std::uint8_t(std::lround(stops[i][c] + f * (stops[i + 1][c] - stops[i][c])));
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = std::uint8_t(std::lround(stops[i][c] + f * (stops[i + 1][c] - stops[i][c])));
 }
 
-} // namespace
+}  // namespace
 
 DebugView parseDebugView(const std::string& name) {
     for (const ViewName& v : kViews)
@@ -65,15 +69,19 @@ const char* debugViewName(DebugView view) {
     return "?";
 }
 
-bool viewNeedsReference(DebugView view) { return view == DebugView::Bounces || view == DebugView::Stack; }
+bool viewNeedsReference(DebugView view) {
+    return view == DebugView::Bounces || view == DebugView::Stack;
+}
 
-GpuViewRenderer::GpuViewRenderer(GpuView view, const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
-                                 ShaderVariant variant)
+GpuViewRenderer::GpuViewRenderer(GpuView view, const StageInfo& stage, StageSources sources,
+                                 Scene scene, int width, int height, ShaderVariant variant)
     : stage_(withViewDefines(stage, view)),
-      renderer_(stage_, std::move(sources), std::move(scene), width, height, PixelFormat::Rgba32F, kViewFragmentEntry, std::move(variant)) {}
+      renderer_(stage_, std::move(sources), std::move(scene), width, height, PixelFormat::Rgba32F,
+                kViewFragmentEntry, std::move(variant)) {}
 
 ViewData viewFromGpu(DebugView view, const std::vector<float>& rgba, int width, int height) {
-    if (viewNeedsReference(view)) throw Error(std::string("the ") + debugViewName(view) + " view needs --reference");
+    if (viewNeedsReference(view))
+        throw Error(std::string("the ") + debugViewName(view) + " view needs --reference");
     ViewData d;
     d.view = view;
     d.values = FloatImage(width, height, channelsOf(view));
@@ -89,7 +97,8 @@ ViewData viewFromGpu(DebugView view, const std::vector<float>& rgba, int width, 
     return d;
 }
 
-ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& samples, int width, int height) {
+ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& samples, int width,
+                           int height) {
     ViewData d;
     d.view = view;
     d.values = FloatImage(width, height, channelsOf(view));
@@ -173,13 +182,17 @@ Image viewToPng(const ViewData& d, std::string* mapping) {
         }
         for (std::size_t i = 0; i < n; ++i)
             if (!d.hit[i]) setPixel(image, i, 0, 0, 0);
-        what = lo <= hi ? "depth " + number(lo) + ".." + number(hi) + " mapped to white..grey, misses black" : "depth: nothing hit, all black";
+        what = lo <= hi ? "depth " + number(lo) + ".." + number(hi) +
+                              " mapped to white..grey, misses black"
+                        : "depth: nothing hit, all black";
         break;
     }
     case DebugView::Normal:
         for (std::size_t i = 0; i < n; ++i) {
             if (!d.hit[i]) setPixel(image, i, 0, 0, 0);
-            else setPixel(image, i, toByte(0.5 + 0.5 * v[3 * i]), toByte(0.5 + 0.5 * v[3 * i + 1]), toByte(0.5 + 0.5 * v[3 * i + 2]));
+            else
+                setPixel(image, i, toByte(0.5 + 0.5 * v[3 * i]), toByte(0.5 + 0.5 * v[3 * i + 1]),
+                         toByte(0.5 + 0.5 * v[3 * i + 2]));
         }
         what = "normal -1..1 mapped to 0.5 + 0.5 n (x red, y green, z blue), misses black";
         break;
@@ -197,7 +210,9 @@ Image viewToPng(const ViewData& d, std::string* mapping) {
             setPixel(image, i, rgb[0], rgb[1], rgb[2]);
         }
         what = "id: " + std::to_string(ids.size()) + " object" + (ids.size() == 1 ? "" : "s");
-        if (!ids.empty()) what += " (ids " + std::to_string(*ids.begin()) + ".." + std::to_string(*ids.rbegin()) + ")";
+        if (!ids.empty())
+            what += " (ids " + std::to_string(*ids.begin()) + ".." + std::to_string(*ids.rbegin()) +
+                    ")";
         what += ", one colour each, misses black";
         break;
     }
@@ -212,8 +227,10 @@ Image viewToPng(const ViewData& d, std::string* mapping) {
             if (d.overflow[i]) rgb[0] = 255, rgb[1] = 0, rgb[2] = 0, ++overflows;
             setPixel(image, i, rgb[0], rgb[1], rgb[2]);
         }
-        what = std::string(d.view == DebugView::Bounces ? "rays per pixel " : "stack depth ") + number(lo) + ".." + number(hi) +
-               " mapped to blue..yellow, " + std::to_string(overflows) + " stack-overflow pixel" + (overflows == 1 ? "" : "s") + " red";
+        what = std::string(d.view == DebugView::Bounces ? "rays per pixel " : "stack depth ") +
+               number(lo) + ".." + number(hi) + " mapped to blue..yellow, " +
+               std::to_string(overflows) + " stack-overflow pixel" + (overflows == 1 ? "" : "s") +
+               " red";
         break;
     }
     }
@@ -233,4 +250,4 @@ std::string pfmDescription(const ViewData& d) {
     return "";
 }
 
-} // namespace raylab
+}  // namespace raylab

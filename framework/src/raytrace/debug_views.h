@@ -38,7 +38,7 @@ bool viewNeedsReference(DebugView view);
 // One view of one frame, ready to be written.
 struct ViewData {
     DebugView view = DebugView::Color;
-    FloatImage values;                   // 3 channels (color, normal) or 1; top row first; misses as above
+    FloatImage values;  // 3 channels (color, normal) or 1; top row first; misses as above
     std::vector<std::uint8_t> hit;       // per pixel: the primary ray hit an object
     std::vector<std::uint8_t> overflow;  // per pixel: a refracted ray was dropped (reference only)
 };
@@ -51,15 +51,17 @@ enum class GpuView { Depth = 1, Normal = 2, Id = 3, Rays = 4 };
 // Error or ShaderError like StageRenderer.
 class GpuViewRenderer {
 public:
-    GpuViewRenderer(GpuView view, const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
-                    ShaderVariant variant = {});
+    GpuViewRenderer(GpuView view, const StageInfo& stage, StageSources sources, Scene scene,
+                    int width, int height, ShaderVariant variant = {});
     GpuViewRenderer(const GpuViewRenderer&) = delete;
     GpuViewRenderer& operator=(const GpuViewRenderer&) = delete;
 
     void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {}) {
         renderer_.render(camera, timeSeconds, settings);
     }
-    std::vector<float> readFloats() const { return renderer_.target().readFloats(); }  // RGBA, top row first
+    std::vector<float> readFloats() const {
+        return renderer_.target().readFloats();
+    }  // RGBA, top row first
     const std::vector<OpenTodo>& openTodos() const { return renderer_.openTodos(); }
 
 private:
@@ -73,7 +75,8 @@ inline constexpr const char* kViewFragmentEntry = "view_main.frag";
 // RGBA floats of a GPU view (or of a Rgba32F colour frame for Color) to ViewData.
 ViewData viewFromGpu(DebugView view, const std::vector<float>& rgba, int width, int height);
 // The reference tracer's samples (row-major, top row first) to ViewData.
-ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& samples, int width, int height);
+ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& samples, int width,
+                           int height);
 
 // The picture of a view for people: colour clamped to 8 bits; depth grey,
 // near bright, scaled to the image's range, misses black; normal 0.5 + 0.5 n,
@@ -88,4 +91,4 @@ std::string pfmDescription(const ViewData& data);
 // The colour the id view gives object ID (never black, never pure red).
 void idColor(int id, std::uint8_t rgb[3]);
 
-} // namespace raylab
+}  // namespace raylab

@@ -21,7 +21,8 @@ void putU32(std::string& out, std::size_t at, std::uint32_t v) {
 
 std::uint32_t getU32(const std::string& in, std::size_t at) {
     std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= std::uint32_t(static_cast<unsigned char>(in[at + std::size_t(i)])) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+        v |= std::uint32_t(static_cast<unsigned char>(in[at + std::size_t(i)])) << (8 * i);
     return v;
 }
 
@@ -37,16 +38,18 @@ float bitsFloat(std::uint32_t b) {
     return f;
 }
 
-} // namespace
+}  // namespace
 
 std::string encodeRayDump(const RayDump& dump) {
     const std::size_t n = std::size_t(dump.width) * std::size_t(dump.height) * 6;
-    if (dump.width <= 0 || dump.height <= 0 || dump.records.size() != n) throw Error("ray dump: the records do not match the size");
+    if (dump.width <= 0 || dump.height <= 0 || dump.records.size() != n)
+        throw Error("ray dump: the records do not match the size");
     std::string out(kHeaderBytes + n * 4, '\0');
     std::memcpy(out.data(), kRayDumpMagic, 8);
     putU32(out, 8, std::uint32_t(dump.width));
     putU32(out, 12, std::uint32_t(dump.height));
-    for (std::size_t i = 0; i < n; ++i) putU32(out, kHeaderBytes + 4 * i, floatBits(dump.records[i]));
+    for (std::size_t i = 0; i < n; ++i)
+        putU32(out, kHeaderBytes + 4 * i, floatBits(dump.records[i]));
     return out;
 }
 
@@ -60,9 +63,11 @@ RayDump decodeRayDump(const std::string& bytes, const std::string& what) {
     dump.height = int(h);
     const std::size_t n = std::size_t(w) * std::size_t(h) * 6;
     if (bytes.size() != kHeaderBytes + n * 4)
-        throw Error(what + ": " + std::to_string(bytes.size()) + " bytes, expected " + std::to_string(kHeaderBytes + n * 4));
+        throw Error(what + ": " + std::to_string(bytes.size()) + " bytes, expected " +
+                    std::to_string(kHeaderBytes + n * 4));
     dump.records.resize(n);
-    for (std::size_t i = 0; i < n; ++i) dump.records[i] = bitsFloat(getU32(bytes, kHeaderBytes + 4 * i));
+    for (std::size_t i = 0; i < n; ++i)
+        dump.records[i] = bitsFloat(getU32(bytes, kHeaderBytes + 4 * i));
     return dump;
 }
 
@@ -78,4 +83,4 @@ RayDump loadRayDump(const std::filesystem::path& file) {
     return decodeRayDump(bytes.str(), displayPath(file));
 }
 
-} // namespace raylab
+}  // namespace raylab

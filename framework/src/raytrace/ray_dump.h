@@ -23,7 +23,9 @@ struct RayDump {
     int height = 0;
     std::vector<float> records;  // width * height * 6: origin xyz, direction xyz
 
-    const float* origin(int x, int y) const { return &records[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 6]; }
+    const float* origin(int x, int y) const {
+        return &records[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 6];
+    }
     const float* dir(int x, int y) const { return origin(x, y) + 3; }
 };
 
@@ -34,4 +36,4 @@ RayDump decodeRayDump(const std::string& bytes, const std::string& what = "ray d
 void writeRayDumpAtomic(const RayDump& dump, const std::filesystem::path& file);
 RayDump loadRayDump(const std::filesystem::path& file);
 
-} // namespace raylab
+}  // namespace raylab

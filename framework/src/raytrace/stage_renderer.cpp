@@ -12,11 +12,13 @@ namespace raylab {
 
 namespace {
 
-void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count, int limit) {
-    if (count > 0 && limit == 0) throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
+void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count,
+               int limit) {
+    if (count > 0 && limit == 0)
+        throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
     if (int(count) > limit)
-        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what + ", but stage " + stage.id +
-                    " supports at most " + std::to_string(limit));
+        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what +
+                    ", but stage " + stage.id + " supports at most " + std::to_string(limit));
 }
 
 void checkSceneFits(const StageInfo& stage, const Scene& scene) {
@@ -32,7 +34,8 @@ void checkSceneFits(const StageInfo& stage, const Scene& scene) {
     if (scene.skyBox && !l.skyBox) {
         std::string adds;  // the first stage of the track that has one
         for (const StageInfo& s : allStages())
-            if (adds.empty() && s.track == stage.track && s.limits.skyBox) adds = " (stage " + s.number() + " adds it)";
+            if (adds.empty() && s.track == stage.track && s.limits.skyBox)
+                adds = " (stage " + s.number() + " adds it)";
         throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box" + adds);
     }
 }
@@ -44,15 +47,19 @@ constexpr int kBvhNodeUnit = 2;
 constexpr int kBvhItemUnit = 3;
 
 void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
-    if (!values.empty()) glUniform1iv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+    if (!values.empty())
+        glUniform1iv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
 }
 
 void setFloatArray(const ShaderProgram& p, const char* name, const std::vector<GLfloat>& values) {
-    if (!values.empty()) glUniform1fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
+    if (!values.empty())
+        glUniform1fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), values.data());
 }
 
 void setVec4Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec4>& values) {
-    if (!values.empty()) glUniform4fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
+    if (!values.empty())
+        glUniform4fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()),
+                     glm::value_ptr(values[0]));
 }
 
 // World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z.
@@ -65,18 +72,23 @@ glm::mat3 torusToLocal(glm::vec3 axis) {
 
 // Uploads an array uniform NAME[0..] of vec3s when the program has it.
 void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec3>& values) {
-    if (!values.empty()) glUniform3fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()), glm::value_ptr(values[0]));
+    if (!values.empty())
+        glUniform3fv(p.uniform(std::string(name) + "[0]"), GLsizei(values.size()),
+                     glm::value_ptr(values[0]));
 }
 
-} // namespace
+}  // namespace
 
-StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height, PixelFormat format,
-                             std::string fragmentEntry, ShaderVariant variant)
-    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)), target_(std::make_unique<Framebuffer>(width, height, format)),
-      variant_(std::move(variant)), fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
+StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width,
+                             int height, PixelFormat format, std::string fragmentEntry,
+                             ShaderVariant variant)
+    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)),
+      target_(std::make_unique<Framebuffer>(width, height, format)), variant_(std::move(variant)),
+      fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
     // The tracer draws one full-screen canvas: a geometry stage has no place in it.
     if (!stage_.program.geometry.empty())
-        throw Error(displayPath(stage_.folder() / "stage.json") + ": program.geometry: the ray tracer's renderer takes no geometry shader");
+        throw Error(displayPath(stage_.folder() / "stage.json") +
+                    ": program.geometry: the ray tracer's renderer takes no geometry shader");
     checkSceneFits(stage_, scene_);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
@@ -105,7 +117,8 @@ ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
 void StageRenderer::rebuild() {
     // A specialised program sizes its arrays to the scene (the stage's
     // limits were checked above all the same).
-    std::vector<std::string> defines = variant_.specialized ? bakedSceneDefines(scene_) : stage_.defines();
+    std::vector<std::string> defines =
+        variant_.specialized ? bakedSceneDefines(scene_) : stage_.defines();
     if (variant_.specialized)
         for (const std::string& d : stage_.extraDefines) defines.push_back(d);
     for (const std::string& d : variant_.defines()) defines.push_back(d);
@@ -173,7 +186,8 @@ void StageRenderer::uploadSceneConstants() {
     glUniform1i(p.uniform("uSky"), kSkyUnit);
     // The tree is built only for a program that walks it (stage 08 with
     // RAYLAB_BVH), once, on the first such build.
-    if (variant_.bvh && !bvh_ && p.uniform("uBvhNodes") >= 0) bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
+    if (variant_.bvh && !bvh_ && p.uniform("uBvhNodes") >= 0)
+        bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
     glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
     glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
     glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);
@@ -245,7 +259,8 @@ void StageRenderer::uploadStaticShapes() {
     setIntArray(p, "uTorusMaterial", torusMaterial);
 }
 
-void StageRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
+void StageRenderer::render(const Camera& camera, float timeSeconds,
+                           const RenderSettings& settings) {
     target_->bind();
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -270,15 +285,17 @@ void StageRenderer::render(const Camera& camera, float timeSeconds, const Render
     // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
     std::vector<glm::vec4> spheres;
-    for (const Sphere& s : scene_.spheres) spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
+    for (const Sphere& s : scene_.spheres)
+        spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
     setVec4Array(p, "uSpheres", spheres);
     // Spinning tori turn their axis.
     std::vector<glm::mat3> toLocal;
     for (const Torus& t : scene_.tori) toLocal.push_back(torusToLocal(t.axisAt(timeSeconds)));
     if (!toLocal.empty())
-        glUniformMatrix3fv(p.uniform("uTorusToLocal[0]"), GLsizei(toLocal.size()), GL_FALSE, glm::value_ptr(toLocal[0]));
+        glUniformMatrix3fv(p.uniform("uTorusToLocal[0]"), GLsizei(toLocal.size()), GL_FALSE,
+                           glm::value_ptr(toLocal[0]));
     canvas_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -5,11 +5,11 @@
 #include "camera.h"
 #include "canvas.h"
 #include "framebuffer.h"
+#include "render_settings.h"
 #include "scene.h"
 #include "shader_program.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
-#include "render_settings.h"
 #include "texture.h"
 #include "track_renderer.h"
 
@@ -25,8 +25,8 @@ namespace raylab {
 // How the stage's shader is compiled (fixed per program, unlike RenderSettings).
 // `raylab bench` compares the choices; the defaults are the fastest correct ones.
 struct ShaderVariant {
-    bool bvh = true;               // RAYLAB_BVH: stage 08 finds bounded objects through a BVH (bvh.h)
-    bool specialized = false;      // the scene's static data compiled in as constants (scene_baking.h)
+    bool bvh = true;           // RAYLAB_BVH: stage 08 finds bounded objects through a BVH (bvh.h)
+    bool specialized = false;  // the scene's static data compiled in as constants (scene_baking.h)
     bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
     bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
     std::vector<std::string> defines() const;  // the defines for the switches above
@@ -46,14 +46,18 @@ public:
     // FRAGMENTENTRY: the entry fragment shader; empty for the stage's own
     // (another one, e.g. the debug views' view_main.frag, gets the same uniforms).
     StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width, int height,
-                  PixelFormat format = PixelFormat::Rgba8, std::string fragmentEntry = "", ShaderVariant variant = {});
+                  PixelFormat format = PixelFormat::Rgba8, std::string fragmentEntry = "",
+                  ShaderVariant variant = {});
 
-    void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {}) override;
+    void render(const Camera& camera, float timeSeconds,
+                const RenderSettings& settings = {}) override;
     Image read() const override { return target_->read(); }
     const Framebuffer& target() const { return *target_; }
     int width() const override { return target_->width(); }
     int height() const override { return target_->height(); }
-    void blitToScreen(int screenWidth, int screenHeight) const override { target_->blitToScreen(screenWidth, screenHeight); }
+    void blitToScreen(int screenWidth, int screenHeight) const override {
+        target_->blitToScreen(screenWidth, screenHeight);
+    }
     void resize(int width, int height, PixelFormat format = PixelFormat::Rgba8) override {
         target_ = std::make_unique<Framebuffer>(width, height, format);
     }
@@ -85,4 +89,4 @@ private:
     std::string fragmentEntry_;
 };
 
-} // namespace raylab
+}  // namespace raylab

@@ -20,9 +20,9 @@ struct StageOptions {
     bool labGiven = false;  // --lab with or without a folder
     std::string labDir;     // empty: labs/
     bool solution = false;
-    std::string scene;      // empty: the stage's default scene
+    std::string scene;  // empty: the stage's default scene
     std::string size = "800x600";
-    std::string camera;     // empty: the scene's camera
+    std::string camera;  // empty: the scene's camera
     float time = 0.0f;
     bool noShadows = false;
     int maxDepth = RenderSettings::kMaxDepth;
@@ -54,4 +54,4 @@ Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene);
 // Prints the open TODOs of a lab to stderr, once per program run.
 void reportOpenTodos(const std::vector<OpenTodo>& todos);
 
-} // namespace raylab
+}  // namespace raylab

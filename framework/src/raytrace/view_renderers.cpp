@@ -5,17 +5,20 @@
 
 namespace raylab {
 
-ViewRenderers::ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene, std::string sceneOverride, int width,
-                             int height)
-    : stage_(stage), sources_(std::move(sources)), defaultScene_(std::move(defaultScene)), sceneOverride_(std::move(sceneOverride)),
-      width_(width), height_(height) {}
+ViewRenderers::ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene,
+                             std::string sceneOverride, int width, int height)
+    : stage_(stage), sources_(std::move(sources)), defaultScene_(std::move(defaultScene)),
+      sceneOverride_(std::move(sceneOverride)), width_(width), height_(height) {}
 
 StageRenderer& ViewRenderers::forView(const CheckView& view) {
-    const std::string key = sceneOverride_.empty() ? view.scene : "";  // an override puts every view in its scene
+    const std::string key =
+        sceneOverride_.empty() ? view.scene : "";  // an override puts every view in its scene
     auto it = byScene_.find(key);
     if (it != byScene_.end()) return *it->second;
-    Scene scene = key.empty() ? defaultScene_ : loadScene(projectRoot() / "assets" / "scenes" / key);
-    auto renderer = std::make_unique<StageRenderer>(stage_, sources_, scene, width_, height_, PixelFormat::Rgba32F);
+    Scene scene =
+        key.empty() ? defaultScene_ : loadScene(projectRoot() / "assets" / "scenes" / key);
+    auto renderer = std::make_unique<StageRenderer>(stage_, sources_, scene, width_, height_,
+                                                    PixelFormat::Rgba32F);
     return *byScene_.emplace(key, std::move(renderer)).first->second;
 }
 
@@ -26,7 +29,8 @@ RenderSettings settingsOf(const CheckView& view) {
 Image ViewRenderers::render(const CheckView& view, long* nonFinite) {
     StageRenderer& r = forView(view);
     r.render(cameraFor(view.pose, r.scene()), view.time, settingsOf(view));
-    return imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(), nonFinite);
+    return imageFromFloats(r.target().readFloats(), r.target().width(), r.target().height(),
+                           nonFinite);
 }
 
-} // namespace raylab
+}  // namespace raylab

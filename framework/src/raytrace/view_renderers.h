@@ -17,7 +17,8 @@ RenderSettings settingsOf(const CheckView& view);
 class ViewRenderers {
 public:
     // sceneOverride: a scene file for every view (--scene), or empty.
-    ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene, std::string sceneOverride, int width, int height);
+    ViewRenderers(const StageInfo& stage, StageSources sources, Scene defaultScene,
+                  std::string sceneOverride, int width, int height);
 
     // Throws what StageRenderer throws (a bad scene, a shader error).
     StageRenderer& forView(const CheckView& view);
@@ -35,4 +36,4 @@ private:
     std::map<std::string, std::unique_ptr<StageRenderer>> byScene_;
 };
 
-} // namespace raylab
+}  // namespace raylab

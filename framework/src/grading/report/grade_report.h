@@ -43,4 +43,4 @@ void writeJunitXml(const ClassResult& result, const std::filesystem::path& file)
 std::string htmlReport(const ClassResult& result);
 void writeHtmlReport(const ClassResult& result, const std::filesystem::path& outDir);
 
-} // namespace raylab
+}  // namespace raylab

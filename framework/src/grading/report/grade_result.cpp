@@ -14,4 +14,4 @@ double StudentResult::maxScore() const {
     return total;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -9,26 +9,28 @@
 namespace raylab {
 
 struct CheckResult {
-    std::string name;      // "front", "seeded-2", "intersectSphere"
-    std::string kind;      // "image" or "function"
-    double score = 0;      // 0..maxScore (partial credit)
+    std::string name;  // "front", "seeded-2", "intersectSphere"
+    std::string kind;  // "image" or "function"
+    double score = 0;  // 0..maxScore (partial credit)
     double maxScore = 0;
-    bool passed = false;   // full marks
-    std::string output;    // one line: what was measured, why it failed ("3.1% of pixels differ (max 255/255)")
+    bool passed = false;  // full marks
+    std::string output;   // one line: what was measured, why it failed ("3.1% of pixels differ (max
+                          // 255/255)")
     // Image checks: paths relative to the output folder, empty when not available.
     std::string studentImage, referenceImage, diffImage;
 };
 
 struct StageResult {
-    std::string stage;      // "04-recursion"
+    std::string stage;  // "04-recursion"
     // "graded", "not submitted", "compile error", "timed out", "crashed",
     // "out of memory", "error" (anything else). NaN/Inf pixels do not change
     // the status: they score the image check 0.
     std::string status;
-    std::string message;    // for anything but "graded": the reason, e.g. the compiler log mapped to file:line
+    std::string message;  // for anything but "graded": the reason, e.g. the compiler log mapped to
+                          // file:line
     double score = 0;
     double maxScore = 100;
-    double seconds = 0;     // wall time of the child process
+    double seconds = 0;  // wall time of the child process
     std::vector<CheckResult> checks;
 };
 
@@ -42,9 +44,9 @@ struct StudentResult {
 struct ClassResult {
     std::vector<std::string> stages;  // graded stage ids, in order
     std::vector<StudentResult> students;
-    unsigned seed = 0;                // of the seeded camera poses
-    std::string machine;              // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
-    double seconds = 0;               // wall time of the whole run
+    unsigned seed = 0;    // of the seeded camera poses
+    std::string machine;  // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
+    double seconds = 0;   // wall time of the whole run
 };
 
-} // namespace raylab
+}  // namespace raylab

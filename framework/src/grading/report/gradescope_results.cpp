@@ -53,6 +53,8 @@ std::string gradescopeJson(const StudentResult& student) {
     return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-void writeGradescopeResults(const StudentResult& student, const fs::path& file) { writeTextFileAtomic(file, gradescopeJson(student)); }
+void writeGradescopeResults(const StudentResult& student, const fs::path& file) {
+    writeTextFileAtomic(file, gradescopeJson(student));
+}
 
-} // namespace raylab
+}  // namespace raylab

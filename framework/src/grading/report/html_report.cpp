@@ -86,14 +86,18 @@ const char* tone(double score, double maxScore) {
     return f >= 0.9 ? "ok" : f >= 0.5 ? "warn" : "bad";
 }
 
-const char* statusTone(const StageResult& s) { return s.status == "not submitted" ? "none" : "bad"; }
+const char* statusTone(const StageResult& s) {
+    return s.status == "not submitted" ? "none" : "bad";
+}
 
-std::string anchor(std::size_t student, std::size_t stage) { return "s" + std::to_string(student) + "-" + std::to_string(stage); }
+std::string anchor(std::size_t student, std::size_t stage) {
+    return "s" + std::to_string(student) + "-" + std::to_string(stage);
+}
 
 std::string bar(double score, double maxScore) {
     double f = std::min(1.0, std::max(0.0, fraction(score, maxScore)));
-    return "<span class=\"bar\"><i class=\"" + std::string(tone(score, maxScore)) + "\" style=\"width:" + std::to_string(std::lround(f * 100)) +
-           "%\"></i></span>";
+    return "<span class=\"bar\"><i class=\"" + std::string(tone(score, maxScore)) +
+           "\" style=\"width:" + std::to_string(std::lround(f * 100)) + "%\"></i></span>";
 }
 
 std::string figure(const std::string& path, const char* caption) {
@@ -102,7 +106,8 @@ std::string figure(const std::string& path, const char* caption) {
         out += "<div class=\"noimg\">no image</div>";
     } else {
         std::string src = escapeMarkup(urlPath(path), true);
-        out += "<a href=\"" + src + "\"><img src=\"" + src + "\" alt=\"" + caption + " image\" loading=\"lazy\"></a>";
+        out += "<a href=\"" + src + "\"><img src=\"" + src + "\" alt=\"" + caption +
+               " image\" loading=\"lazy\"></a>";
     }
     return out + "<figcaption>" + caption + "</figcaption></figure>";
 }
@@ -116,7 +121,8 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
     double totalSum = 0, totalMax = 0;
     for (std::size_t i = 0; i < r.students.size(); ++i) {
         const StudentResult& st = r.students[i];
-        h += "<tr><td class=\"name\"><a href=\"#s" + std::to_string(i) + "\">" + escapeMarkup(st.name) + "</a></td>";
+        h += "<tr><td class=\"name\"><a href=\"#s" + std::to_string(i) + "\">" +
+             escapeMarkup(st.name) + "</a></td>";
         for (std::size_t j = 0; j < r.stages.size(); ++j) {
             const StageResult* s = findStage(st, r.stages[j]);
             if (!s) {
@@ -128,39 +134,54 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
             stageMax[j] += s->maxScore;
             ++stageCount[j];
             if (isGraded(*s)) {
-                h += "<td class=\"cell num\"><a class=\"" + std::string(tone(s->score, s->maxScore)) + "\" href=\"#" + anchor(i, k) + "\" title=\"" +
-                     num(s->score) + " / " + num(s->maxScore) + "\">" + num(s->score) + "</a></td>";
+                h += "<td class=\"cell num\"><a class=\"" +
+                     std::string(tone(s->score, s->maxScore)) + "\" href=\"#" + anchor(i, k) +
+                     "\" title=\"" + num(s->score) + " / " + num(s->maxScore) + "\">" +
+                     num(s->score) + "</a></td>";
             } else {
-                h += "<td class=\"cell num\"><a class=\"status " + std::string(statusTone(*s)) + "\" href=\"#" + anchor(i, k) + "\">" +
-                     escapeMarkup(statusWord(*s)) + "</a></td>";
+                h += "<td class=\"cell num\"><a class=\"status " + std::string(statusTone(*s)) +
+                     "\" href=\"#" + anchor(i, k) + "\">" + escapeMarkup(statusWord(*s)) +
+                     "</a></td>";
             }
         }
         double score = st.score(), maxScore = st.maxScore();
         totalSum += score;
         totalMax += maxScore;
-        h += "<td class=\"num\"><b>" + num(score) + "</b> <span class=\"muted\">/ " + num(maxScore) + "</span></td>";
-        h += "<td class=\"num\">" + bar(score, maxScore) + std::to_string(std::lround(100 * fraction(score, maxScore))) + "%</td></tr>\n";
+        h += "<td class=\"num\"><b>" + num(score) + "</b> <span class=\"muted\">/ " +
+             num(maxScore) + "</span></td>";
+        h += "<td class=\"num\">" + bar(score, maxScore) +
+             std::to_string(std::lround(100 * fraction(score, maxScore))) + "%</td></tr>\n";
     }
     h += "</tbody>\n";
     if (!r.students.empty()) {
         h += "<tfoot><tr><td>Class average</td>";
         for (std::size_t j = 0; j < r.stages.size(); ++j)
-            h += "<td class=\"num\">" + (stageCount[j] ? num(stageSum[j] / stageCount[j]) : std::string("&ndash;")) + "</td>";
+            h += "<td class=\"num\">" +
+                 (stageCount[j] ? num(stageSum[j] / stageCount[j]) : std::string("&ndash;")) +
+                 "</td>";
         double n = double(r.students.size());
-        h += "<td class=\"num\">" + num(totalSum / n) + " / " + num(totalMax / n) + "</td><td class=\"num\">" +
-             std::to_string(std::lround(100 * fraction(totalSum, totalMax))) + "%</td></tr></tfoot>\n";
+        h += "<td class=\"num\">" + num(totalSum / n) + " / " + num(totalMax / n) +
+             "</td><td class=\"num\">" +
+             std::to_string(std::lround(100 * fraction(totalSum, totalMax))) +
+             "%</td></tr></tfoot>\n";
     }
     h += "</table></div>\n";
-    h += "<p class=\"legend\"><span><span class=\"pill ok\">&ge; 90%</span></span><span><span class=\"pill warn\">50&ndash;90%</span></span>"
-         "<span><span class=\"pill bad\">&lt; 50%</span></span><span><span class=\"pill none\">not submitted</span></span>"
+    h += "<p class=\"legend\"><span><span class=\"pill ok\">&ge; 90%</span></span><span><span "
+         "class=\"pill warn\">50&ndash;90%</span></span>"
+         "<span><span class=\"pill bad\">&lt; 50%</span></span><span><span class=\"pill none\">not "
+         "submitted</span></span>"
          "<span>Click a cell for the details.</span></p>\n";
 }
 
 void htmlStage(std::string& h, const StageResult& s, const std::string& id) {
-    h += "<div class=\"stage\" id=\"" + id + "\">\n<div class=\"stage-head\"><h3>" + escapeMarkup(s.stage) + "</h3>";
-    h += "<span class=\"pill " + std::string(isGraded(s) ? tone(s.score, s.maxScore) : statusTone(s)) + "\">" + num(s.score) + " / " +
-         num(s.maxScore) + "</span>";
-    if (!isGraded(s)) h += "<span class=\"pill " + std::string(statusTone(s)) + "\">" + escapeMarkup(statusWord(s)) + "</span>";
+    h += "<div class=\"stage\" id=\"" + id + "\">\n<div class=\"stage-head\"><h3>" +
+         escapeMarkup(s.stage) + "</h3>";
+    h += "<span class=\"pill " +
+         std::string(isGraded(s) ? tone(s.score, s.maxScore) : statusTone(s)) + "\">" +
+         num(s.score) + " / " + num(s.maxScore) + "</span>";
+    if (!isGraded(s))
+        h += "<span class=\"pill " + std::string(statusTone(s)) + "\">" +
+             escapeMarkup(statusWord(s)) + "</span>";
     if (s.seconds > 0) h += "<span class=\"muted\">" + duration(s.seconds) + "</span>";
     h += "</div>\n";
     if (!s.message.empty()) h += "<pre class=\"log\">" + escapeMarkup(s.message) + "</pre>\n";
@@ -169,22 +190,27 @@ void htmlStage(std::string& h, const StageResult& s, const std::string& id) {
         h += "</div>\n";
         return;
     }
-    h += "<table class=\"checks\"><thead><tr><th>Check</th><th>Kind</th><th>Score</th><th>Result</th></tr></thead><tbody>\n";
+    h += "<table "
+         "class=\"checks\"><thead><tr><th>Check</th><th>Kind</th><th>Score</th><th>Result</th></"
+         "tr></thead><tbody>\n";
     for (const CheckResult& c : s.checks) {
         h += "<tr><td class=\"check\">";
-        h += c.passed ? "<span class=\"mark-ok\" title=\"passed\">&#10003;</span> " : "<span class=\"mark-bad\" title=\"failed\">&#10007;</span> ";
+        h += c.passed ? "<span class=\"mark-ok\" title=\"passed\">&#10003;</span> "
+                      : "<span class=\"mark-bad\" title=\"failed\">&#10007;</span> ";
         h += escapeMarkup(c.name) + "</td><td class=\"kind\">" + escapeMarkup(c.kind) + "</td>";
-        h += "<td class=\"score\"><span class=\"pill " + std::string(tone(c.score, c.maxScore)) + "\">" + num(c.score) + " / " + num(c.maxScore) +
-             "</span></td><td class=\"out\">" + escapeMarkup(c.output);
+        h += "<td class=\"score\"><span class=\"pill " + std::string(tone(c.score, c.maxScore)) +
+             "\">" + num(c.score) + " / " + num(c.maxScore) + "</span></td><td class=\"out\">" +
+             escapeMarkup(c.output);
         if (c.kind == "image")
-            h += "<div class=\"thumbs\">" + figure(c.studentImage, "submitted") + figure(c.referenceImage, "reference") +
-                 figure(c.diffImage, "difference") + "</div>";
+            h += "<div class=\"thumbs\">" + figure(c.studentImage, "submitted") +
+                 figure(c.referenceImage, "reference") + figure(c.diffImage, "difference") +
+                 "</div>";
         h += "</td></tr>\n";
     }
     h += "</tbody></table>\n</div>\n";
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------- HTML
 
@@ -194,9 +220,12 @@ std::string htmlReport(const ClassResult& r) {
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
          "<title>RayLab grading report</title>\n<style>";
     h += kCss;
-    h += "</style>\n</head>\n<body>\n<header id=\"top\">\n<h1>RayLab grading report</h1>\n<p class=\"meta\">";
-    h += "<span><b>" + std::to_string(r.students.size()) + "</b> student" + (r.students.size() == 1 ? "" : "s") + "</span>";
-    h += "<span><b>" + std::to_string(r.stages.size()) + "</b> stage" + (r.stages.size() == 1 ? "" : "s") + "</span>";
+    h += "</style>\n</head>\n<body>\n<header id=\"top\">\n<h1>RayLab grading report</h1>\n<p "
+         "class=\"meta\">";
+    h += "<span><b>" + std::to_string(r.students.size()) + "</b> student" +
+         (r.students.size() == 1 ? "" : "s") + "</span>";
+    h += "<span><b>" + std::to_string(r.stages.size()) + "</b> stage" +
+         (r.stages.size() == 1 ? "" : "s") + "</span>";
     h += "<span>seed <b>" + std::to_string(r.seed) + "</b></span>";
     if (!r.machine.empty()) h += "<span>machine <b>" + escapeMarkup(r.machine) + "</b></span>";
     h += "<span>wall time <b>" + duration(r.seconds) + "</b></span>";
@@ -207,17 +236,21 @@ std::string htmlReport(const ClassResult& r) {
 
     for (std::size_t i = 0; i < r.students.size(); ++i) {
         const StudentResult& st = r.students[i];
-        h += "<section class=\"student\" id=\"s" + std::to_string(i) + "\">\n<div class=\"student-head\"><h2>" + escapeMarkup(st.name) + "</h2>";
-        h += "<span class=\"pill " + std::string(tone(st.score(), st.maxScore())) + "\">" + num(st.score()) + " / " + num(st.maxScore()) +
-             "</span>";
+        h += "<section class=\"student\" id=\"s" + std::to_string(i) +
+             "\">\n<div class=\"student-head\"><h2>" + escapeMarkup(st.name) + "</h2>";
+        h += "<span class=\"pill " + std::string(tone(st.score(), st.maxScore())) + "\">" +
+             num(st.score()) + " / " + num(st.maxScore()) + "</span>";
         h += "<a class=\"top\" href=\"#top\">&#8593; class table</a></div>\n";
         for (std::size_t k = 0; k < st.stages.size(); ++k) htmlStage(h, st.stages[k], anchor(i, k));
         h += "</section>\n";
     }
-    h += "</main>\n<footer>Generated by <code>raylab grade</code>. Scores are rounded to 2 decimals.</footer>\n</body>\n</html>\n";
+    h += "</main>\n<footer>Generated by <code>raylab grade</code>. Scores are rounded to 2 "
+         "decimals.</footer>\n</body>\n</html>\n";
     return h;
 }
 
-void writeHtmlReport(const ClassResult& result, const fs::path& outDir) { writeTextFileAtomic(outDir / "report.html", htmlReport(result)); }
+void writeHtmlReport(const ClassResult& result, const fs::path& outDir) {
+    writeTextFileAtomic(outDir / "report.html", htmlReport(result));
+}
 
-} // namespace raylab
+}  // namespace raylab

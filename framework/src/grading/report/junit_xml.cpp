@@ -35,45 +35,60 @@ std::string junitXml(const ClassResult& r) {
             if (isGraded(s) && !s.checks.empty()) {
                 for (const CheckResult& k : s.checks) {
                     ++c.tests;
-                    cases += "    <testcase classname=\"" + classname + "\" name=\"" + attr(k.name) + "\"";
+                    cases += "    <testcase classname=\"" + classname + "\" name=\"" +
+                             attr(k.name) + "\"";
                     if (k.passed) {
                         cases += "/>\n";
                         continue;
                     }
                     ++c.failures;
-                    cases += ">\n      <failure message=\"" + attr(firstLine(k.output)) + "\" type=\"" + attr(k.kind) + "\">" +
-                             escapeMarkup("score " + num(k.score) + " / " + num(k.maxScore) + (k.output.empty() ? "" : ": " + k.output)) +
+                    cases += ">\n      <failure message=\"" + attr(firstLine(k.output)) +
+                             "\" type=\"" + attr(k.kind) + "\">" +
+                             escapeMarkup("score " + num(k.score) + " / " + num(k.maxScore) +
+                                          (k.output.empty() ? "" : ": " + k.output)) +
                              "</failure>\n    </testcase>\n";
                 }
                 continue;
             }
             ++c.tests;
-            cases += "    <testcase classname=\"" + classname + "\" name=\"stage\" time=\"" + seconds(s.seconds) + "\"";
+            cases += "    <testcase classname=\"" + classname + "\" name=\"stage\" time=\"" +
+                     seconds(s.seconds) + "\"";
             const std::string text = escapeMarkup(s.message.empty() ? statusWord(s) : s.message);
             if (isGraded(s) && s.score >= s.maxScore) {
                 cases += "/>\n";
             } else if (isGraded(s) || s.status == "not submitted") {
                 ++c.failures;
-                cases += ">\n      <failure message=\"" + attr(isGraded(s) ? "score " + num(s.score) + " / " + num(s.maxScore) : statusWord(s)) +
-                         "\" type=\"" + attr(statusWord(s)) + "\">" + text + "</failure>\n    </testcase>\n";
+                cases += ">\n      <failure message=\"" +
+                         attr(isGraded(s) ? "score " + num(s.score) + " / " + num(s.maxScore)
+                                          : statusWord(s)) +
+                         "\" type=\"" + attr(statusWord(s)) + "\">" + text +
+                         "</failure>\n    </testcase>\n";
             } else {
                 ++c.errors;
-                cases += ">\n      <error message=\"" + attr(statusWord(s) + (s.message.empty() ? "" : ": " + firstLine(s.message))) +
-                         "\" type=\"" + attr(statusWord(s)) + "\">" + text + "</error>\n    </testcase>\n";
+                cases +=
+                    ">\n      <error message=\"" +
+                    attr(statusWord(s) + (s.message.empty() ? "" : ": " + firstLine(s.message))) +
+                    "\" type=\"" + attr(statusWord(s)) + "\">" + text +
+                    "</error>\n    </testcase>\n";
             }
         }
-        suites += "  <testsuite name=\"" + attr(st.name) + "\" tests=\"" + std::to_string(c.tests) + "\" failures=\"" +
-                  std::to_string(c.failures) + "\" errors=\"" + std::to_string(c.errors) + "\" skipped=\"0\" time=\"" + seconds(time) + "\"";
+        suites += "  <testsuite name=\"" + attr(st.name) + "\" tests=\"" + std::to_string(c.tests) +
+                  "\" failures=\"" + std::to_string(c.failures) + "\" errors=\"" +
+                  std::to_string(c.errors) + "\" skipped=\"0\" time=\"" + seconds(time) + "\"";
         suites += cases.empty() ? "/>\n" : ">\n" + cases + "  </testsuite>\n";
         all.tests += c.tests;
         all.failures += c.failures;
         all.errors += c.errors;
     }
-    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"raylab grade\" tests=\"" + std::to_string(all.tests) + "\" failures=\"" +
-           std::to_string(all.failures) + "\" errors=\"" + std::to_string(all.errors) + "\" time=\"" + seconds(r.seconds) + "\">\n" + suites +
-           "</testsuites>\n";
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"raylab grade\" "
+           "tests=\"" +
+           std::to_string(all.tests) + "\" failures=\"" + std::to_string(all.failures) +
+           "\" errors=\"" + std::to_string(all.errors) + "\" time=\"" + seconds(r.seconds) +
+           "\">\n" + suites + "</testsuites>\n";
 }
 
-void writeJunitXml(const ClassResult& result, const fs::path& file) { writeTextFileAtomic(file, junitXml(result)); }
+void writeJunitXml(const ClassResult& result, const fs::path& file) {
+    writeTextFileAtomic(file, junitXml(result));
+}
 
-} // namespace raylab
+}  // namespace raylab

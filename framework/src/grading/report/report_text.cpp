@@ -60,7 +60,7 @@ void appendCodePoint(std::string& out, unsigned cp) {
     }
 }
 
-} // namespace
+}  // namespace
 
 // Valid UTF-8 that XML 1.0 and HTML accept: invalid byte sequences, control
 // characters other than tab/newline/CR, and U+FFFE/U+FFFF become U+FFFD.
@@ -74,17 +74,30 @@ std::string cleanText(std::string_view s) {
         const unsigned c = static_cast<unsigned char>(s[i]);
         unsigned cp = 0, min = 0;
         std::size_t len = 0;
-        if (c < 0x80) { cp = c; len = 1; }
-        else if ((c & 0xE0) == 0xC0) { cp = c & 0x1F; len = 2; min = 0x80; }
-        else if ((c & 0xF0) == 0xE0) { cp = c & 0x0F; len = 3; min = 0x800; }
-        else if ((c & 0xF8) == 0xF0) { cp = c & 0x07; len = 4; min = 0x10000; }
+        if (c < 0x80) {
+            cp = c;
+            len = 1;
+        } else if ((c & 0xE0) == 0xC0) {
+            cp = c & 0x1F;
+            len = 2;
+            min = 0x80;
+        } else if ((c & 0xF0) == 0xE0) {
+            cp = c & 0x0F;
+            len = 3;
+            min = 0x800;
+        } else if ((c & 0xF8) == 0xF0) {
+            cp = c & 0x07;
+            len = 4;
+            min = 0x10000;
+        }
         bool ok = len > 0 && i + len <= s.size();
         for (std::size_t k = 1; ok && k < len; ++k) {
             const unsigned cc = static_cast<unsigned char>(s[i + k]);
             if ((cc & 0xC0) != 0x80) ok = false;
             else cp = (cp << 6) | (cc & 0x3F);
         }
-        if (ok && len > 1 && (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))) ok = false;
+        if (ok && len > 1 && (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)))
+            ok = false;
         if (!ok) {
             appendCodePoint(out, kReplacement);
             ++i;
@@ -92,8 +105,7 @@ std::string cleanText(std::string_view s) {
         }
         if ((cp < 0x20 && cp != '\t' && cp != '\n' && cp != '\r') || cp == 0xFFFE || cp == 0xFFFF)
             appendCodePoint(out, kReplacement);
-        else
-            out.append(s.substr(i, len));
+        else out.append(s.substr(i, len));
         i += len;
     }
     return out;
@@ -128,8 +140,8 @@ std::string urlPath(std::string_view path) {
     std::string out;
     for (char ch : path) {
         const unsigned char c = static_cast<unsigned char>(ch);
-        if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.' || c == '_' ||
-            c == '~' || c == '/') {
+        if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+            c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
             out += ch;
         } else {
             out += '%';
@@ -148,7 +160,9 @@ std::string firstLine(const std::string& s) {
 bool isGraded(const StageResult& s) { return s.status == "graded"; }
 
 // The status word shown for a stage ("compile error"), never empty.
-std::string statusWord(const StageResult& s) { return s.status.empty() ? std::string("error") : s.status; }
+std::string statusWord(const StageResult& s) {
+    return s.status.empty() ? std::string("error") : s.status;
+}
 
 // The student's result for stage ID, or null.
 const StageResult* findStage(const StudentResult& student, const std::string& id) {
@@ -162,4 +176,4 @@ const StageResult* findStage(const StudentResult& student, const std::string& id
 // A CSV text field (csv_text.h) of cleaned text.
 std::string csvField(const std::string& raw) { return csvText(cleanText(raw)); }
 
-} // namespace raylab::report
+}  // namespace raylab::report

@@ -47,4 +47,4 @@ const StageResult* findStage(const StudentResult& student, const std::string& id
 // A CSV text field (csv_text.h) of cleaned text.
 std::string csvField(const std::string& raw);
 
-} // namespace raylab::report
+}  // namespace raylab::report

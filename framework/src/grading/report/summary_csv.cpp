@@ -39,6 +39,8 @@ std::string summaryCsv(const ClassResult& r) {
     return out;
 }
 
-void writeSummaryCsv(const ClassResult& result, const fs::path& file) { writeTextFileAtomic(file, summaryCsv(result)); }
+void writeSummaryCsv(const ClassResult& result, const fs::path& file) {
+    writeTextFileAtomic(file, summaryCsv(result));
+}
 
-} // namespace raylab
+}  // namespace raylab

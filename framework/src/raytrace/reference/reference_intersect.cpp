@@ -24,8 +24,8 @@ double intersectSphere(const DRay& ray, const glm::dvec3& center, double radius)
         t0 = std::min(q, c / q);
         t1 = std::max(q, c / q);
     }
-    double t = t0;            // the near root: entering the sphere
-    if (t <= kTMin) t = t1;   // behind us: we are inside, take the exit
+    double t = t0;           // the near root: entering the sphere
+    if (t <= kTMin) t = t1;  // behind us: we are inside, take the exit
     return t > kTMin ? t : kNoHit;
 }
 
@@ -36,14 +36,16 @@ double intersectPlane(const DRay& ray, const glm::dvec3& normal, double offset) 
     return t > kTMin ? t : kNoHit;
 }
 
-double intersectDisc(const DRay& ray, const glm::dvec3& center, const glm::dvec3& normal, double radius) {
+double intersectDisc(const DRay& ray, const glm::dvec3& center, const glm::dvec3& normal,
+                     double radius) {
     const double t = intersectPlane(ray, normal, glm::dot(normal, center));
     if (t == kNoHit) return kNoHit;
     const glm::dvec3 fromCenter = ray.origin + t * ray.dir - center;
     return glm::dot(fromCenter, fromCenter) <= radius * radius ? t : kNoHit;
 }
 
-double intersectTriangle(const DRay& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+double intersectTriangle(const DRay& ray, const glm::dvec3& a, const glm::dvec3& b,
+                         const glm::dvec3& c) {
     const glm::dvec3 e1 = b - a, e2 = c - a;
     const glm::dvec3 p = glm::cross(ray.dir, e2);
     const double det = glm::dot(e1, p);
@@ -64,7 +66,8 @@ double torusDistance(const glm::dvec3& p, double R, double r) {
 }
 
 glm::dvec3 torusNormalLocal(const glm::dvec3& p, double R, double r) {
-    return glm::normalize((glm::dot(p, p) + R * R - r * r) * p - 2.0 * R * R * glm::dvec3(p.x, p.y, 0.0));
+    return glm::normalize((glm::dot(p, p) + R * R - r * r) * p -
+                          2.0 * R * R * glm::dvec3(p.x, p.y, 0.0));
 }
 
 glm::dmat3 torusToLocal(const glm::dvec3& axis) {
@@ -92,7 +95,8 @@ double bisect(double a, double b, Sign sign) {
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (a + b);
         if (mid <= a || mid >= b) break;
-        if (sign(mid) == sa) a = mid; else b = mid;
+        if (sign(mid) == sa) a = mid;
+        else b = mid;
     }
     return 0.5 * (a + b);
 }
@@ -123,7 +127,7 @@ std::vector<double> rootsIn(const std::vector<double>& c, double lo, double hi) 
     return roots;
 }
 
-} // namespace
+}  // namespace
 
 double intersectTorusLocal(const DRay& ray, double R, double r) {
     // Only the bounding sphere (any radius >= R + r) can hold hits; solving
@@ -143,11 +147,9 @@ double intersectTorusLocal(const DRay& ray, double R, double r) {
     const double m = glm::dot(o, o), n = glm::dot(o, d);
     const double k = m + R * R - r * r;
     const double R4 = 4.0 * R * R;
-    const std::vector<double> quartic = {k * k - R4 * (o.x * o.x + o.y * o.y),
-                                         4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
-                                         4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y),
-                                         4.0 * n,
-                                         1.0};
+    const std::vector<double> quartic = {
+        k * k - R4 * (o.x * o.x + o.y * o.y), 4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
+        4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y), 4.0 * n, 1.0};
     const double lo = std::max(kTMin - tEnter, 0.0), hi = tExit - tEnter;
     if (!(lo < hi)) return kNoHit;
     // The quartic factors into (distance to the tube's core^2 - r^2) times a
@@ -167,4 +169,4 @@ double intersectTorusLocal(const DRay& ray, double R, double r) {
     return kNoHit;
 }
 
-} // namespace raylab::reference
+}  // namespace raylab::reference

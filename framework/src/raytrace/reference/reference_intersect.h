@@ -29,11 +29,13 @@ double intersectSphere(const DRay& ray, const glm::dvec3& center, double radius)
 double intersectPlane(const DRay& ray, const glm::dvec3& normal, double offset);
 
 // The plane through CENTER with NORMAL, within RADIUS of the centre (intersect_disc.glsl).
-double intersectDisc(const DRay& ray, const glm::dvec3& center, const glm::dvec3& normal, double radius);
+double intersectDisc(const DRay& ray, const glm::dvec3& center, const glm::dvec3& normal,
+                     double radius);
 
 // Moller-Trumbore with the GLSL's rejections (|det| < 1e-10, u or v outside
 // the triangle, t <= kTMin) (intersect_triangle.glsl).
-double intersectTriangle(const DRay& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+double intersectTriangle(const DRay& ray, const glm::dvec3& a, const glm::dvec3& b,
+                         const glm::dvec3& c);
 
 // A torus in its own frame (centre at the origin, axis +z), ring radius R,
 // tube radius r < R: the nearest t > kTMin or kNoHit. The quartic along the
@@ -54,4 +56,4 @@ double torusDistance(const glm::dvec3& p, double R, double r);
 // x, y, axis, built as stage_renderer.cpp's torusToLocal does.
 glm::dmat3 torusToLocal(const glm::dvec3& axis);
 
-} // namespace raylab::reference
+}  // namespace raylab::reference

@@ -24,23 +24,28 @@ namespace refmodel {
 double offsetCoordinate(double p, double n) {
     if (std::fabs(p) < 1.0 / 32.0) return p + n / 65536.0;
     int exponent = 0;
-    std::frexp(double(float(p)), &exponent);  // |p| = m 2^exponent, m in [0.5, 1): float spacing 2^(exponent - 24)
+    std::frexp(double(float(p)),
+               &exponent);  // |p| = m 2^exponent, m in [0.5, 1): float spacing 2^(exponent - 24)
     return p + std::trunc(256.0 * n) * std::ldexp(1.0, exponent - 24);
 }
 
 glm::dvec3 offsetRayOrigin(const glm::dvec3& p, const glm::dvec3& side) {
-    return {offsetCoordinate(p.x, side.x), offsetCoordinate(p.y, side.y), offsetCoordinate(p.z, side.z)};
+    return {offsetCoordinate(p.x, side.x), offsetCoordinate(p.y, side.y),
+            offsetCoordinate(p.z, side.z)};
 }
 
 std::string fmt(double v) { return significant(v, 4); }
 
-std::string fmt(const glm::dvec3& v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")"; }
+std::string fmt(const glm::dvec3& v) {
+    return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")";
+}
 
 std::string weightText(const glm::dvec3& w) { return fmt(w.x) + "," + fmt(w.y) + "," + fmt(w.z); }
 
-} // namespace refmodel
+}  // namespace refmodel
 
-ReferenceTracer::ReferenceTracer(const Scene& scene, const ReferenceFeatures& features, float timeSeconds, const RenderSettings& settings)
+ReferenceTracer::ReferenceTracer(const Scene& scene, const ReferenceFeatures& features,
+                                 float timeSeconds, const RenderSettings& settings)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.features = features;
@@ -61,26 +66,35 @@ ReferenceTracer::ReferenceTracer(const Scene& scene, const ReferenceFeatures& fe
         d.normalMap = features.textures ? mat.normalMap : -1;
         m.materials.push_back(d);
     }
-    for (const PointLight& l : scene.lights) m.lights.push_back({glm::dvec3(l.position), glm::dvec3(l.color)});
+    for (const PointLight& l : scene.lights)
+        m.lights.push_back({glm::dvec3(l.position), glm::dvec3(l.color)});
     // Positions at TIMESECONDS exactly as stage_renderer.cpp computes them
     // (in float, as the GPU receives them), then carried on in double.
-    for (const Sphere& s : scene.spheres) m.spheres.push_back({glm::dvec3(s.center + s.motion.offsetAt(timeSeconds)), double(s.radius), s.material});
+    for (const Sphere& s : scene.spheres)
+        m.spheres.push_back(
+            {glm::dvec3(s.center + s.motion.offsetAt(timeSeconds)), double(s.radius), s.material});
     for (const Plane& p : scene.planes) {
         const glm::dvec3 n(p.normal);
         m.planes.push_back({n, glm::dot(n, glm::dvec3(p.point)), double(p.tileSize), p.material});
     }
-    for (const Disc& d : scene.discs) m.discs.push_back({glm::dvec3(d.center), glm::dvec3(d.normal), double(d.radius), d.material});
+    for (const Disc& d : scene.discs)
+        m.discs.push_back(
+            {glm::dvec3(d.center), glm::dvec3(d.normal), double(d.radius), d.material});
     for (const Triangle& t : scene.triangles)
-        m.triangles.push_back({glm::dvec3(t.vertices[0]), glm::dvec3(t.vertices[1]), glm::dvec3(t.vertices[2]), t.material});
+        m.triangles.push_back({glm::dvec3(t.vertices[0]), glm::dvec3(t.vertices[1]),
+                               glm::dvec3(t.vertices[2]), t.material});
     for (const Torus& t : scene.tori)
-        m.tori.push_back({glm::dvec3(t.center), double(t.majorRadius), double(t.minorRadius),
-                          reference::torusToLocal(glm::normalize(glm::dvec3(t.axisAt(timeSeconds)))), t.material});
+        m.tori.push_back(
+            {glm::dvec3(t.center), double(t.majorRadius), double(t.minorRadius),
+             reference::torusToLocal(glm::normalize(glm::dvec3(t.axisAt(timeSeconds)))),
+             t.material});
     m.glow = scene.glow;
     m.glowColor = glm::dvec3(scene.glow.color);
     if (features.textures) {
-        if (!scene.textures.empty()) m.textures = std::make_unique<reference::TextureLayers>(scene.textures);
+        if (!scene.textures.empty())
+            m.textures = std::make_unique<reference::TextureLayers>(scene.textures);
         if (scene.skyBox) m.sky = std::make_unique<reference::SkyCube>(*scene.skyBox);
     }
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -34,7 +34,7 @@ using shader::kSphere;
 using shader::kTorus;
 using shader::kTriangle;
 constexpr int kStride = shader::kObjectKindStride;
-} // namespace obj
+}  // namespace obj
 using shader::kKindNames;
 
 // trace.glsl: MAX_DEPTH (stack entries and the depth limit) and MAX_RAYS.
@@ -51,12 +51,35 @@ struct DMaterial {
     int texture = -1, normalMap = -1;
 };
 
-struct DSphere { glm::dvec3 center; double radius; int material; };
-struct DPlane { glm::dvec3 normal; double offset; double tile; int material; };
-struct DDisc { glm::dvec3 center, normal; double radius; int material; };
-struct DTriangle { glm::dvec3 a, b, c; int material; };
-struct DTorus { glm::dvec3 center; double major, minor; glm::dmat3 toLocal; int material; };
-struct DLight { glm::dvec3 position, color; };
+struct DSphere {
+    glm::dvec3 center;
+    double radius;
+    int material;
+};
+struct DPlane {
+    glm::dvec3 normal;
+    double offset;
+    double tile;
+    int material;
+};
+struct DDisc {
+    glm::dvec3 center, normal;
+    double radius;
+    int material;
+};
+struct DTriangle {
+    glm::dvec3 a, b, c;
+    int material;
+};
+struct DTorus {
+    glm::dvec3 center;
+    double major, minor;
+    glm::dmat3 toLocal;
+    int material;
+};
+struct DLight {
+    glm::dvec3 position, color;
+};
 
 struct Hit {
     double t = 1e30;  // T_FAR
@@ -80,8 +103,6 @@ struct PendingRay {
     int number = 1;
 };
 
-
-
 // Where a secondary ray starts (see reference_model.cpp).
 glm::dvec3 offsetRayOrigin(const glm::dvec3& p, const glm::dvec3& side);
 
@@ -90,7 +111,7 @@ std::string fmt(double v);
 std::string fmt(const glm::dvec3& v);
 std::string weightText(const glm::dvec3& w);
 
-} // namespace refmodel
+}  // namespace refmodel
 
 using namespace refmodel;
 
@@ -126,9 +147,11 @@ struct ReferenceTracer::Impl {
     // 05 surface_at.glsl (04's for spheres is the same without detail).
     Surface surfaceAt(const DRay& ray, const Hit& hit, std::ostream* log) const;
     // 03 light_visibility.glsl (02: always visible).
-    bool lightVisible(const glm::dvec3& point, const glm::dvec3& normal, int light, std::ostream* log) const;
+    bool lightVisible(const glm::dvec3& point, const glm::dvec3& normal, int light,
+                      std::ostream* log) const;
     // 02 blinn_phong.glsl
-    glm::dvec3 blinnPhong(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& toEye, const DMaterial& m, std::ostream* log) const;
+    glm::dvec3 blinnPhong(const glm::dvec3& point, const glm::dvec3& normal,
+                          const glm::dvec3& toEye, const DMaterial& m, std::ostream* log) const;
     // 04 / 06 sky.glsl
     glm::dvec3 skyColor(const glm::dvec3& dir) const;
     // GLSL refract(): vec3(0) under total internal reflection.
@@ -147,4 +170,4 @@ struct ReferenceTracer::Impl {
     ReferenceSample traceSample(const DRay& ray, std::ostream* log) const;
 };
 
-} // namespace raylab
+}  // namespace raylab

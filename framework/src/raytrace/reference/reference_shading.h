@@ -19,6 +19,7 @@ glm::dvec2 sphereUV(const glm::dvec3& d);
 
 // plane_uv.glsl: POINT's coordinates on the plane through ORIGIN with unit
 // normal N, in tiles of size TILE.
-glm::dvec2 planeUV(const glm::dvec3& point, const glm::dvec3& origin, const glm::dvec3& n, double tile);
+glm::dvec2 planeUV(const glm::dvec3& point, const glm::dvec3& origin, const glm::dvec3& n,
+                   double tile);
 
-} // namespace raylab::reference
+}  // namespace raylab::reference

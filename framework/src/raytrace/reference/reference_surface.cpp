@@ -42,14 +42,21 @@ double ReferenceTracer::Impl::intersectTorus(const DRay& ray, const DTorus& t) c
 bool ReferenceTracer::Impl::findClosest(const DRay& ray, Hit& hit) const {
     hit = Hit{};
     for (std::size_t i = 0; i < spheres.size(); ++i)
-        keepNearer(hit, reference::intersectSphere(ray, spheres[i].center, spheres[i].radius), obj::kSphere, int(i));
+        keepNearer(hit, reference::intersectSphere(ray, spheres[i].center, spheres[i].radius),
+                   obj::kSphere, int(i));
     for (std::size_t i = 0; i < planes.size(); ++i)
-        keepNearer(hit, reference::intersectPlane(ray, planes[i].normal, planes[i].offset), obj::kPlane, int(i));
+        keepNearer(hit, reference::intersectPlane(ray, planes[i].normal, planes[i].offset),
+                   obj::kPlane, int(i));
     for (std::size_t i = 0; i < discs.size(); ++i)
-        keepNearer(hit, reference::intersectDisc(ray, discs[i].center, discs[i].normal, discs[i].radius), obj::kDisc, int(i));
+        keepNearer(hit,
+                   reference::intersectDisc(ray, discs[i].center, discs[i].normal, discs[i].radius),
+                   obj::kDisc, int(i));
     for (std::size_t i = 0; i < triangles.size(); ++i)
-        keepNearer(hit, reference::intersectTriangle(ray, triangles[i].a, triangles[i].b, triangles[i].c), obj::kTriangle, int(i));
-    for (std::size_t i = 0; i < tori.size(); ++i) keepNearer(hit, intersectTorus(ray, tori[i]), obj::kTorus, int(i));
+        keepNearer(
+            hit, reference::intersectTriangle(ray, triangles[i].a, triangles[i].b, triangles[i].c),
+            obj::kTriangle, int(i));
+    for (std::size_t i = 0; i < tori.size(); ++i)
+        keepNearer(hit, intersectTorus(ray, tori[i]), obj::kTorus, int(i));
     return hit.id >= 0;
 }
 
@@ -68,16 +75,20 @@ void ReferenceTracer::Impl::applyNormalMap(Surface& s, std::ostream* log) const 
     if (!features.normalMaps || !settings.normalMaps || s.material.normalMap < 0) return;
     const glm::dvec3 N = s.normal;
     const glm::dvec3 along = s.tangent - glm::dot(s.tangent, N) * N;
-    if (glm::length(along) == 0.0) return;  // no tangent (the GLSL would give NaN; scene files refuse this)
+    if (glm::length(along) == 0.0)
+        return;  // no tangent (the GLSL would give NaN; scene files refuse this)
     const glm::dvec3 T = glm::normalize(along);
     const glm::dvec3 B = glm::cross(N, T);
     const glm::dvec3 m = textureLayer(s.material.normalMap, s.uv) * 2.0 - 1.0;
     s.normal = glm::normalize(T * m.x + B * m.y + N * m.z);
-    if (log) *log << "  normal map (layer " << s.material.normalMap << "): tangent-space " << fmt(m) << ", normal tilted to " << fmt(s.normal) << "\n";
+    if (log)
+        *log << "  normal map (layer " << s.material.normalMap << "): tangent-space " << fmt(m)
+             << ", normal tilted to " << fmt(s.normal) << "\n";
 }
 
 // 06 surface_detail.glsl
-void ReferenceTracer::Impl::addSurfaceDetail(Surface& s, int kind, int index, std::ostream* log) const {
+void ReferenceTracer::Impl::addSurfaceDetail(Surface& s, int kind, int index,
+                                             std::ostream* log) const {
     if (!features.textures) return;  // stage 05's surface_detail.glsl is empty
     if (kind == obj::kSphere) {
         const glm::dvec3 d = glm::normalize(s.point - spheres[std::size_t(index)].center);
@@ -94,7 +105,9 @@ void ReferenceTracer::Impl::addSurfaceDetail(Surface& s, int kind, int index, st
         const glm::dvec3 picture = textureLayer(s.material.texture, s.uv);
         s.material.ambient *= picture;
         s.material.diffuse *= picture;
-        if (log) *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", " << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
+        if (log)
+            *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", "
+                 << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
     }
     applyNormalMap(s, log);
 }
@@ -115,7 +128,8 @@ Surface ReferenceTracer::Impl::surfaceAt(const DRay& ray, const Hit& hit, std::o
         s.normal = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
     } else {
         const DTorus& t = tori[std::size_t(i)];
-        s.normal = glm::transpose(t.toLocal) * reference::torusNormalLocal(t.toLocal * (s.point - t.center), t.major, t.minor);
+        s.normal = glm::transpose(t.toLocal) *
+                   reference::torusNormalLocal(t.toLocal * (s.point - t.center), t.major, t.minor);
     }
     s.material = materials[std::size_t(materialOf(hit.id))];
     addSurfaceDetail(s, kind, i, log);
@@ -123,22 +137,26 @@ Surface ReferenceTracer::Impl::surfaceAt(const DRay& ray, const Hit& hit, std::o
 }
 
 // 03 light_visibility.glsl (02: always visible).
-bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dvec3& normal, int light, std::ostream* log) const {
+bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dvec3& normal,
+                                         int light, std::ostream* log) const {
     if (!features.shadows || !settings.shadows) return true;
     const glm::dvec3 toLight = lights[std::size_t(light)].position - point;
     const double distanceToLight = glm::length(toLight);
     const glm::dvec3 dir = toLight / distanceToLight;
     const glm::dvec3 side = glm::dot(normal, dir) >= 0.0 ? normal : -normal;
     Hit blocker;
-    const bool blocked = findClosest(DRay{offsetRayOrigin(point, side), dir}, blocker) && blocker.t < distanceToLight;
+    const bool blocked = findClosest(DRay{offsetRayOrigin(point, side), dir}, blocker) &&
+                         blocker.t < distanceToLight;
     if (blocked && log)
-        *log << "  light " << light << ": in shadow, blocked by " << objectName(blocker.id) << " at t=" << fmt(blocker.t) << " (light at "
-             << fmt(distanceToLight) << ")\n";
+        *log << "  light " << light << ": in shadow, blocked by " << objectName(blocker.id)
+             << " at t=" << fmt(blocker.t) << " (light at " << fmt(distanceToLight) << ")\n";
     return !blocked;
 }
 
 // 02 blinn_phong.glsl
-glm::dvec3 ReferenceTracer::Impl::blinnPhong(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& toEye, const DMaterial& m, std::ostream* log) const {
+glm::dvec3 ReferenceTracer::Impl::blinnPhong(const glm::dvec3& point, const glm::dvec3& normal,
+                                             const glm::dvec3& toEye, const DMaterial& m,
+                                             std::ostream* log) const {
     glm::dvec3 color = m.ambient;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!lightVisible(point, normal, int(i), log)) continue;
@@ -147,10 +165,13 @@ glm::dvec3 ReferenceTracer::Impl::blinnPhong(const glm::dvec3& point, const glm:
         glm::dvec3 diffuse = lights[i].color * m.diffuse * lambert, specular(0.0);
         if (lambert > 0.0) {
             const glm::dvec3 halfway = glm::normalize(toLight + toEye);
-            specular = lights[i].color * m.specular * std::pow(std::max(glm::dot(normal, halfway), 0.0), m.shininess);
+            specular = lights[i].color * m.specular *
+                       std::pow(std::max(glm::dot(normal, halfway), 0.0), m.shininess);
         }
         color += diffuse + specular;
-        if (log) *log << "  light " << i << ": visible, N.L " << fmt(lambert) << ", diffuse " << fmt(diffuse) << ", specular " << fmt(specular) << "\n";
+        if (log)
+            *log << "  light " << i << ": visible, N.L " << fmt(lambert) << ", diffuse "
+                 << fmt(diffuse) << ", specular " << fmt(specular) << "\n";
     }
     return color;
 }
@@ -184,14 +205,19 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
         return glm::dvec3(0.0);
     }
     Hit blocker;
-    if (findClosest(ray, blocker) && blocker.id != obj::kSphere * obj::kStride + glow.sphere && blocker.t < tc) {
-        if (log) *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t) << " is in front of the sun)\n";
+    if (findClosest(ray, blocker) && blocker.id != obj::kSphere * obj::kStride + glow.sphere &&
+        blocker.t < tc) {
+        if (log)
+            *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)
+                 << " is in front of the sun)\n";
         return glm::dvec3(0.0);
     }
     const double dist = glm::length(ray.origin + tc * ray.dir - c);
     const double x = std::max(dist - r, 0.0) / (double(glow.size) * r);
     if (x >= 1.0) {
-        if (log) *log << "glow: none (passes " << fmt(dist) << " from the sun's centre, beyond the halo)\n";
+        if (log)
+            *log << "glow: none (passes " << fmt(dist)
+                 << " from the sun's centre, beyond the halo)\n";
         return glm::dvec3(0.0);
     }
     const double fade = 1.0 - x;
@@ -210,4 +236,4 @@ glm::dvec3 ReferenceTracer::Impl::applyColorMode(const glm::dvec3& c, int mode) 
     default: return c;
     }
 }
-} // namespace raylab
+}  // namespace raylab

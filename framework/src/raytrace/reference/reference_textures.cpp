@@ -15,7 +15,8 @@ namespace {
 Image flippedRows(const Image& image) {
     Image out(image.width, image.height);
     for (int y = 0; y < image.height; ++y)
-        std::copy(image.pixel(0, y), image.pixel(0, y) + std::size_t(image.width) * 4, out.pixel(0, image.height - 1 - y));
+        std::copy(image.pixel(0, y), image.pixel(0, y) + std::size_t(image.width) * 4,
+                  out.pixel(0, image.height - 1 - y));
     return out;
 }
 
@@ -33,16 +34,37 @@ void cubeCoordinates(const glm::dvec3& r, int& face, double& s, double& t) {
     double sc, tc, ma;
     if (ax >= ay && ax >= az) {
         ma = ax;
-        if (r.x >= 0.0) { face = 0; sc = -r.z; tc = -r.y; }
-        else            { face = 1; sc = r.z;  tc = -r.y; }
+        if (r.x >= 0.0) {
+            face = 0;
+            sc = -r.z;
+            tc = -r.y;
+        } else {
+            face = 1;
+            sc = r.z;
+            tc = -r.y;
+        }
     } else if (ay >= az) {
         ma = ay;
-        if (r.y >= 0.0) { face = 2; sc = r.x; tc = r.z; }
-        else            { face = 3; sc = r.x; tc = -r.z; }
+        if (r.y >= 0.0) {
+            face = 2;
+            sc = r.x;
+            tc = r.z;
+        } else {
+            face = 3;
+            sc = r.x;
+            tc = -r.z;
+        }
     } else {
         ma = az;
-        if (r.z >= 0.0) { face = 4; sc = r.x;  tc = -r.y; }
-        else            { face = 5; sc = -r.x; tc = -r.y; }
+        if (r.z >= 0.0) {
+            face = 4;
+            sc = r.x;
+            tc = -r.y;
+        } else {
+            face = 5;
+            sc = -r.x;
+            tc = -r.y;
+        }
     }
     s = 0.5 * (sc / ma + 1.0);
     t = 0.5 * (tc / ma + 1.0);
@@ -61,7 +83,7 @@ glm::dvec3 cubeDirection(int face, double sc, double tc) {
     }
 }
 
-} // namespace
+}  // namespace
 
 TextureLayers::TextureLayers(const std::vector<std::filesystem::path>& files) {
     std::vector<Image> images;
@@ -70,7 +92,8 @@ TextureLayers::TextureLayers(const std::vector<std::filesystem::path>& files) {
         width_ = std::max(width_, images.back().width);
         height_ = std::max(height_, images.back().height);
     }
-    for (const Image& image : images) layers_.push_back(flippedRows(resampledBilinear(image, width_, height_)));
+    for (const Image& image : images)
+        layers_.push_back(flippedRows(resampledBilinear(image, width_, height_)));
 }
 
 glm::dvec4 TextureLayers::sample(int layer, const glm::dvec2& uv) const {
@@ -92,11 +115,13 @@ SkyCube::SkyCube(const std::array<std::filesystem::path, 6>& faces) {
         faces_[i] = loadPng(faces[i]);
         const Image& img = faces_[i];
         if (img.width != img.height)
-            throw Error("sky box face " + displayPath(faces[i]) + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+            throw Error("sky box face " + displayPath(faces[i]) + " is " +
+                        std::to_string(img.width) + "x" + std::to_string(img.height) +
                         ", faces must be square");
         if (i > 0 && img.width != faces_[0].width)
-            throw Error("sky box face " + displayPath(faces[i]) + " is " + std::to_string(img.width) + " pixels wide, " +
-                        displayPath(faces[0]) + " is " + std::to_string(faces_[0].width) + ": faces must have one size");
+            throw Error("sky box face " + displayPath(faces[i]) + " is " +
+                        std::to_string(img.width) + " pixels wide, " + displayPath(faces[0]) +
+                        " is " + std::to_string(faces_[0].width) + ": faces must have one size");
     }
     size_ = faces_[0].width;
 }
@@ -106,7 +131,8 @@ glm::dvec4 SkyCube::texel(int face, int i, int j) const {
         // Beyond the edge (seamless filtering): the texel centre's direction,
         // looked up again, lands on the neighbouring face next to the edge.
         const double n = double(size_);
-        glm::dvec3 dir = cubeDirection(face, 2.0 * (double(i) + 0.5) / n - 1.0, 2.0 * (double(j) + 0.5) / n - 1.0);
+        glm::dvec3 dir = cubeDirection(face, 2.0 * (double(i) + 0.5) / n - 1.0,
+                                       2.0 * (double(j) + 0.5) / n - 1.0);
         double s, t;
         cubeCoordinates(dir, face, s, t);
         i = std::clamp(int(std::floor(s * n)), 0, size_ - 1);
@@ -123,8 +149,8 @@ glm::dvec4 SkyCube::sample(const glm::dvec3& dir) const {
     const double fx = std::floor(x), fy = std::floor(y);
     const double a = x - fx, b = y - fy;
     const int i = int(fx), j = int(fy);
-    return (1 - a) * (1 - b) * texel(face, i, j) + a * (1 - b) * texel(face, i + 1, j) + (1 - a) * b * texel(face, i, j + 1) +
-           a * b * texel(face, i + 1, j + 1);
+    return (1 - a) * (1 - b) * texel(face, i, j) + a * (1 - b) * texel(face, i + 1, j) +
+           (1 - a) * b * texel(face, i, j + 1) + a * b * texel(face, i + 1, j + 1);
 }
 
-} // namespace raylab::reference
+}  // namespace raylab::reference

@@ -34,7 +34,8 @@ public:
 
 private:
     int width_ = 0, height_ = 0;
-    std::vector<Image> layers_;  // each width_ x height_, row 0 = the picture's BOTTOM row (GL row 0)
+    std::vector<Image>
+        layers_;  // each width_ x height_, row 0 = the picture's BOTTOM row (GL row 0)
 };
 
 class SkyCube {
@@ -53,9 +54,10 @@ public:
     int size() const { return size_; }
 
 private:
-    glm::dvec4 texel(int face, int i, int j) const;  // i along s, j along t, may lie outside the face
+    glm::dvec4 texel(int face, int i,
+                     int j) const;  // i along s, j along t, may lie outside the face
     int size_ = 0;
     std::array<Image, 6> faces_;  // row 0 = t = 0
 };
 
-} // namespace raylab::reference
+}  // namespace raylab::reference

@@ -33,8 +33,10 @@ ReferenceFeatures ReferenceFeatures::forStage(const StageInfo& stage) {
 PrimaryRay primaryRay(const Camera& camera, int width, int height, int x, int y) {
     // camera.cpp's forward/right/up/focal length, in double.
     const CameraPose& pose = camera.pose();
-    const double yaw = glm::radians(double(pose.yawDeg)), pitch = glm::radians(double(pose.pitchDeg));
-    const glm::dvec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch));
+    const double yaw = glm::radians(double(pose.yawDeg)),
+                 pitch = glm::radians(double(pose.pitchDeg));
+    const glm::dvec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                             -std::cos(yaw) * std::cos(pitch));
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
     const glm::dvec3 up = glm::cross(right, forward);
     const double focal = 1.0 / std::tan(glm::radians(double(camera.fovYDeg())) * 0.5);
@@ -49,21 +51,24 @@ PrimaryRay primaryRay(const Camera& camera, int width, int height, int x, int y)
     return ray;
 }
 
-Image referenceImage(const std::vector<ReferenceSample>& samples, int width, int height, long* nonFinite) {
+Image referenceImage(const std::vector<ReferenceSample>& samples, int width, int height,
+                     long* nonFinite) {
     std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4, 1.0f);
     for (std::size_t i = 0; i < samples.size() && i < std::size_t(width) * std::size_t(height); ++i)
         for (int c = 0; c < 3; ++c) rgba[i * 4 + std::size_t(c)] = float(samples[i].color[c]);
     return imageFromFloats(rgba, width, height, nonFinite);
 }
 
-void ReferenceTracer::Impl::recordPrimary(ReferenceSample& sample, const Hit& hit, const glm::dvec3& normal) const {
+void ReferenceTracer::Impl::recordPrimary(ReferenceSample& sample, const Hit& hit,
+                                          const glm::dvec3& normal) const {
     sample.depth = hit.t;
     sample.id = hit.id;
     sample.normal = normal;
 }
 
 // 01 main.frag: the flat colour of the nearest sphere.
-glm::dvec3 ReferenceTracer::Impl::traceFlat(const DRay& ray, ReferenceSample& sample, std::ostream* log) const {
+glm::dvec3 ReferenceTracer::Impl::traceFlat(const DRay& ray, ReferenceSample& sample,
+                                            std::ostream* log) const {
     sample.rays = 1;
     Hit hit;
     if (!findClosest(ray, hit)) {
@@ -72,18 +77,21 @@ glm::dvec3 ReferenceTracer::Impl::traceFlat(const DRay& ray, ReferenceSample& sa
     }
     const glm::dvec3 point = ray.origin + hit.t * ray.dir;
     const int kind = hit.id / obj::kStride, i = hit.id - kind * obj::kStride;
-    glm::dvec3 normal = kind == obj::kSphere ? glm::normalize(point - spheres[std::size_t(i)].center) : surfaceAt(ray, hit, nullptr).normal;
+    glm::dvec3 normal = kind == obj::kSphere
+                            ? glm::normalize(point - spheres[std::size_t(i)].center)
+                            : surfaceAt(ray, hit, nullptr).normal;
     recordPrimary(sample, hit, normal);
     const DMaterial& m = materials[std::size_t(materialOf(hit.id))];
     if (log)
-        *log << "ray 1: hits " << objectName(hit.id) << " '" << m.name << "' at t=" << fmt(hit.t) << " point " << fmt(point)
-             << ": flat colour " << fmt(m.diffuse) << "\n";
+        *log << "ray 1: hits " << objectName(hit.id) << " '" << m.name << "' at t=" << fmt(hit.t)
+             << " point " << fmt(point) << ": flat colour " << fmt(m.diffuse) << "\n";
     return m.diffuse;
 }
 
 // 04 trace.glsl (02/03 main.frag: the same with no secondary rays and
 // the background as sky).
-glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sample, std::ostream* log) const {
+glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sample,
+                                        std::ostream* log) const {
     PendingRay stack[kMaxDepth];
     int stackSize = 0;
     glm::dvec3 color(0.0);
@@ -95,12 +103,16 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
         ++sample.rays;
         bool pathGoesOn = false;
         Hit hit;
-        if (log) *log << "ray " << current.number << " (depth " << current.depth << ", weight " << weightText(current.weight) << "): ";
+        if (log)
+            *log << "ray " << current.number << " (depth " << current.depth << ", weight "
+                 << weightText(current.weight) << "): ";
         if (!findClosest(current.ray, hit)) {
             const glm::dvec3 skyRgb = skyColor(current.ray.dir);
             color += current.weight * skyRgb;
-            if (log) *log << "misses everything\n  miss: " << (features.textures && sky ? "sky " : "background ") << fmt(skyRgb)
-                          << ", adds colour " << fmt(current.weight * skyRgb) << "\n";
+            if (log)
+                *log << "misses everything\n  miss: "
+                     << (features.textures && sky ? "sky " : "background ") << fmt(skyRgb)
+                     << ", adds colour " << fmt(current.weight * skyRgb) << "\n";
         } else {
             std::ostringstream detail;  // texture and normal map lines, after the hit's line
             Surface s = surfaceAt(current.ray, hit, log ? &detail : nullptr);
@@ -113,14 +125,17 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
             if (n == 0) recordPrimary(sample, hit, s.normal);
             if (log) {
                 const DMaterial& m = materials[std::size_t(materialOf(hit.id))];
-                *log << "hits " << objectName(hit.id) << " '" << m.name << "' at t=" << fmt(hit.t) << " point " << fmt(point)
-                     << " normal " << fmt(s.normal) << (entering ? " entering" : " leaving") << "\n"
+                *log << "hits " << objectName(hit.id) << " '" << m.name << "' at t=" << fmt(hit.t)
+                     << " point " << fmt(point) << " normal " << fmt(s.normal)
+                     << (entering ? " entering" : " leaving") << "\n"
                      << detail.str();
             }
             const DMaterial& m = s.material;
             const glm::dvec3 local = blinnPhong(point, normal, -current.ray.dir, m, log);
             color += current.weight * local;
-            if (log) *log << "  adds colour " << fmt(current.weight * local) << " (Blinn-Phong " << fmt(local) << ")\n";
+            if (log)
+                *log << "  adds colour " << fmt(current.weight * local) << " (Blinn-Phong "
+                     << fmt(local) << ")\n";
 
             if (m.type != Material::Type::Plastic && current.depth < maxDepth) {
                 const double cosIncident = -glm::dot(current.ray.dir, normal);
@@ -131,7 +146,8 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                     if (log) what = "  mirror: reflectance " + fmt(reflectance);
                 } else if (m.type == Material::Type::Metal) {
                     reflectance = fresnelConductor(cosIncident, m.n, m.k);
-                    if (log) what = "  metal: F=" + fmt(reflectance) + " (cos " + fmt(cosIncident) + ")";
+                    if (log)
+                        what = "  metal: F=" + fmt(reflectance) + " (cos " + fmt(cosIncident) + ")";
                 } else {
                     const double eta = entering ? 1.0 / m.ior : m.ior;
                     const glm::dvec3 refracted = refract(current.ray.dir, normal, eta);
@@ -142,31 +158,37 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                         F = fresnelDielectric(cosOutside, m.ior);
                         if (log) what = "  glass: F=" + fmt(F) + " (cos " + fmt(cosOutside) + ")";
                         if (stackSize < kMaxDepth) {
-                            stack[stackSize] = PendingRay{DRay{offsetRayOrigin(point, -normal), refracted}, current.weight * (1.0 - F),
-                                                          current.depth + 1, ++numbered};
+                            stack[stackSize] = PendingRay{
+                                DRay{offsetRayOrigin(point, -normal), refracted},
+                                current.weight * (1.0 - F), current.depth + 1, ++numbered};
                             ++stackSize;
                             sample.maxStack = std::max(sample.maxStack, stackSize);
-                            if (log) what += ", pushes refracted ray " + std::to_string(numbered) + " (weight " + weightText(current.weight * (1.0 - F)) + ")";
+                            if (log)
+                                what += ", pushes refracted ray " + std::to_string(numbered) +
+                                        " (weight " + weightText(current.weight * (1.0 - F)) + ")";
                         } else {
                             sample.stackOverflow = true;
-                            if (log) what += ", stack full (" + std::to_string(kMaxDepth) + "): refracted ray dropped";
+                            if (log)
+                                what += ", stack full (" + std::to_string(kMaxDepth) +
+                                        "): refracted ray dropped";
                         }
                     } else if (log) {
                         what = "  glass: total internal reflection (F=1)";
                     }
                     reflectance = glm::dvec3(F);
                 }
-                current = PendingRay{DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)}, current.weight * reflectance,
-                                     current.depth + 1, ++numbered};
+                current = PendingRay{
+                    DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)},
+                    current.weight * reflectance, current.depth + 1, ++numbered};
                 pathGoesOn = true;
-                if (log) *log << what << ", follows reflected ray " << current.number << " (weight " << weightText(current.weight) << ")\n";
+                if (log)
+                    *log << what << ", follows reflected ray " << current.number << " (weight "
+                         << weightText(current.weight) << ")\n";
             } else if (log) {
-                if (m.type == Material::Type::Plastic)
-                    *log << "  plastic: the path ends\n";
+                if (m.type == Material::Type::Plastic) *log << "  plastic: the path ends\n";
                 else if (!features.recursion)
                     *log << "  no reflected or refracted rays before stage 04: the path ends\n";
-                else
-                    *log << "  depth limit " << maxDepth << " reached: the path ends\n";
+                else *log << "  depth limit " << maxDepth << " reached: the path ends\n";
             }
         }
         if (!pathGoesOn) {
@@ -185,7 +207,9 @@ ReferenceSample ReferenceTracer::Impl::traceSample(const DRay& ray, std::ostream
     if (features.textures && settings.glow) color += sunGlow(ray, log);
     if (features.colorModes && settings.colorMode > 0 && settings.colorMode < kColorModeCount) {
         const glm::dvec3 shown = applyColorMode(color, settings.colorMode);
-        if (log) *log << "colour mode " << kColorModes[settings.colorMode] << ": " << fmt(color) << " -> " << fmt(shown) << "\n";
+        if (log)
+            *log << "colour mode " << kColorModes[settings.colorMode] << ": " << fmt(color)
+                 << " -> " << fmt(shown) << "\n";
         color = shown;
     }
     sample.color = color;
@@ -197,12 +221,15 @@ ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log)
     return impl_->traceSample(DRay{ray.origin, glm::normalize(ray.dir)}, log);
 }
 
-std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, int width, int height) const {
+std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, int width,
+                                                         int height) const {
     std::vector<ReferenceSample> samples(std::size_t(width) * std::size_t(height));
     std::atomic<int> nextRow{0};
     auto work = [&] {
         for (int y = nextRow++; y < height; y = nextRow++)
-            for (int x = 0; x < width; ++x) samples[std::size_t(y) * std::size_t(width) + std::size_t(x)] = trace(primaryRay(camera, width, height, x, y));
+            for (int x = 0; x < width; ++x)
+                samples[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+                    trace(primaryRay(camera, width, height, x, y));
     };
     const int threads = std::max(1, std::min(int(std::thread::hardware_concurrency()), height));
     std::vector<std::thread> pool;
@@ -212,4 +239,4 @@ std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, i
     return samples;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -11,9 +11,9 @@
 // reference frame agree within the graders' tolerance.
 #include "camera.h"
 #include "image.h"
+#include "render_settings.h"
 #include "scene.h"
 #include "stage_catalog.h"
-#include "render_settings.h"
 
 #include <glm/glm.hpp>
 
@@ -36,13 +36,14 @@ struct ReferenceFeatures {
 
 // What one primary ray found.
 struct ReferenceSample {
-    glm::dvec3 color{0.0};      // the pixel's colour (after glow and colour mode), not clamped
-    double depth = 0.0;         // hit distance t along the primary ray; 0 when it hit nothing
-    glm::dvec3 normal{0.0};     // unit outward normal at the primary hit (after normal mapping); 0 for none
-    int id = -1;                // object id of the primary hit (kind * 1024 + index, as in GLSL); -1 for none
-    int rays = 0;               // rays traced for this pixel (primary, reflected, refracted; not shadow rays)
-    int maxStack = 0;           // most rays waiting on the stack at once
-    bool stackOverflow = false; // a refracted ray was dropped because the stack was full
+    glm::dvec3 color{0.0};  // the pixel's colour (after glow and colour mode), not clamped
+    double depth = 0.0;     // hit distance t along the primary ray; 0 when it hit nothing
+    glm::dvec3 normal{
+        0.0};      // unit outward normal at the primary hit (after normal mapping); 0 for none
+    int id = -1;   // object id of the primary hit (kind * 1024 + index, as in GLSL); -1 for none
+    int rays = 0;  // rays traced for this pixel (primary, reflected, refracted; not shadow rays)
+    int maxStack = 0;            // most rays waiting on the stack at once
+    bool stackOverflow = false;  // a refracted ray was dropped because the stack was full
 };
 
 struct PrimaryRay {
@@ -58,13 +59,15 @@ PrimaryRay primaryRay(const Camera& camera, int width, int height, int x, int y)
 // SAMPLES (traceImage's) as an 8-bit picture, converted exactly as checks
 // and grading convert GPU frames (imageFromFloats: clamp, scale, round);
 // *NONFINITE counts NaN/Inf pixels when given.
-Image referenceImage(const std::vector<ReferenceSample>& samples, int width, int height, long* nonFinite = nullptr);
+Image referenceImage(const std::vector<ReferenceSample>& samples, int width, int height,
+                     long* nonFinite = nullptr);
 
 class ReferenceTracer {
 public:
     // Loads the scene's textures and sky box. Positions of moving objects
     // are taken at TIMESECONDS. Throws Error on a missing picture.
-    ReferenceTracer(const Scene& scene, const ReferenceFeatures& features, float timeSeconds, const RenderSettings& settings);
+    ReferenceTracer(const Scene& scene, const ReferenceFeatures& features, float timeSeconds,
+                    const RenderSettings& settings);
     ~ReferenceTracer();
 
     // Traces one primary ray. With LOG, writes the path bounce by bounce:
@@ -80,4 +83,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-} // namespace raylab
+}  // namespace raylab

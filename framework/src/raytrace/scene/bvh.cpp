@@ -34,9 +34,9 @@ namespace {
 
 struct Builder {
     const int maxLeaf;
-    std::vector<Aabb> boxes;       // per item
+    std::vector<Aabb> boxes;  // per item
     std::vector<glm::vec3> centres;
-    std::vector<int> order;        // item indices, partitioned in place
+    std::vector<int> order;  // item indices, partitioned in place
     std::vector<BvhNode> nodes;
     int depth = 0;
 
@@ -61,7 +61,8 @@ struct Builder {
     int split(int begin, int end, const Aabb& box) {
         const int n = end - begin;
         Aabb centreBox;
-        for (int i = begin; i < end; ++i) centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
+        for (int i = begin; i < end; ++i)
+            centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
         float bestCost = std::numeric_limits<float>::max();
         int bestAxis = -1, bestBin = 0;
         for (int axis = 0; axis < 3; ++axis) {
@@ -77,24 +78,38 @@ struct Builder {
             for (int cut = 1; cut < kBins; ++cut) {
                 Aabb left, right;
                 int nl = 0, nr = 0;
-                for (int b = 0; b < cut; ++b) { if (counts[b]) left.grow(bins[b]); nl += counts[b]; }
-                for (int b = cut; b < kBins; ++b) { if (counts[b]) right.grow(bins[b]); nr += counts[b]; }
+                for (int b = 0; b < cut; ++b) {
+                    if (counts[b]) left.grow(bins[b]);
+                    nl += counts[b];
+                }
+                for (int b = cut; b < kBins; ++b) {
+                    if (counts[b]) right.grow(bins[b]);
+                    nr += counts[b];
+                }
                 if (nl == 0 || nr == 0) continue;
                 float cost = left.area() * float(nl) + right.area() * float(nr);
-                if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestBin = cut; }
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = cut;
+                }
             }
         }
-        if (bestAxis < 0) return n <= maxLeaf ? -1 : begin + n / 2;  // all centres equal: split by count
+        if (bestAxis < 0)
+            return n <= maxLeaf ? -1 : begin + n / 2;  // all centres equal: split by count
         // Cost of a leaf vs. of traversing two children (box test ~ 1 object test).
         if (n <= maxLeaf && box.area() * float(n) <= box.area() + bestCost) return -1;
-        auto mid = std::partition(order.begin() + begin, order.begin() + end,
-                                  [&](int item) { return binOf(item, bestAxis, centreBox) < bestBin; });
+        auto mid = std::partition(order.begin() + begin, order.begin() + end, [&](int item) {
+            return binOf(item, bestAxis, centreBox) < bestBin;
+        });
         return int(mid - order.begin());
     }
 
     void build(int nodeIndex, int begin, int end, int level) {
         depth = std::max(depth, level);
-        if (level > kBvhMaxDepth) throw Error("BVH deeper than " + std::to_string(kBvhMaxDepth) + " levels: degenerate scene?");
+        if (level > kBvhMaxDepth)
+            throw Error("BVH deeper than " + std::to_string(kBvhMaxDepth) +
+                        " levels: degenerate scene?");
         Aabb box = boundsOf(begin, end);
         nodes[std::size_t(nodeIndex)].box = box;
         int mid = end - begin <= 1 ? -1 : split(begin, end, box);
@@ -113,7 +128,7 @@ struct Builder {
     }
 };
 
-} // namespace
+}  // namespace
 
 Bvh buildBvh(const Scene& scene, int maxLeaf) {
     Bvh bvh;
@@ -132,4 +147,4 @@ Bvh buildBvh(const Scene& scene, int maxLeaf) {
     return bvh;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -27,8 +27,14 @@ namespace raylab {
 struct Aabb {
     glm::vec3 lo{1e30f};
     glm::vec3 hi{-1e30f};
-    void grow(const Aabb& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
-    void grow(glm::vec3 p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void grow(const Aabb& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    void grow(glm::vec3 p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     glm::vec3 centre() const { return 0.5f * (lo + hi); }
     float area() const;  // surface area (0 for an empty box)
     bool contains(const Aabb& b) const;
@@ -60,4 +66,4 @@ Bvh buildBvh(const Scene& scene, int maxLeaf = 2);
 // at least this (checked when the scene is loaded).
 inline constexpr int kBvhMaxDepth = 32;
 
-} // namespace raylab
+}  // namespace raylab

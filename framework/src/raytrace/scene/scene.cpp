@@ -19,7 +19,12 @@ namespace {
 std::string lineColumn(const std::string& text, std::size_t byte) {
     int line = 1, column = 1;
     for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
     }
     return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
@@ -47,7 +52,9 @@ void readMaterials(const SceneReader& r, const json& doc, Scene& scene) {
     if (!materials.is_object()) r.fail("materials", "expected an object of named materials");
     for (const auto& [name, m] : materials.items()) {
         std::string where = "materials." + name;
-        r.allowOnly(m, where, {"ambient", "diffuse", "specular", "shininess", "type", "ior", "n", "k", "texture", "normal_map"});
+        r.allowOnly(m, where,
+                    {"ambient", "diffuse", "specular", "shininess", "type", "ior", "n", "k",
+                     "texture", "normal_map"});
         Material mat;
         mat.name = name;
         mat.ambient = r.color(r.member(m, where, "ambient"), where + ".ambient");
@@ -57,16 +64,20 @@ void readMaterials(const SceneReader& r, const json& doc, Scene& scene) {
         mat.type = materialType(r, m, where);
         if (mat.type == Material::Type::Glass) {
             mat.ior = r.positive(r.member(m, where, "ior"), where + ".ior");
-            if (mat.ior < 1.0f || mat.ior > 4.0f) r.fail(where + ".ior", "index of refraction must lie in [1, 4]");
+            if (mat.ior < 1.0f || mat.ior > 4.0f)
+                r.fail(where + ".ior", "index of refraction must lie in [1, 4]");
         } else if (mat.type == Material::Type::Metal) {
             mat.n = r.vec3(r.member(m, where, "n"), where + ".n");
             mat.k = r.vec3(r.member(m, where, "k"), where + ".k");
             for (int c = 0; c < 3; ++c)
-                if (mat.n[c] <= 0.0f || mat.k[c] < 0.0f) r.fail(where, "n must be positive and k not negative");
+                if (mat.n[c] <= 0.0f || mat.k[c] < 0.0f)
+                    r.fail(where, "n must be positive and k not negative");
         }
-        if (m.contains("texture")) mat.texture = textureLayer(scene, r.existingFile(m["texture"], where + ".texture"));
+        if (m.contains("texture"))
+            mat.texture = textureLayer(scene, r.existingFile(m["texture"], where + ".texture"));
         if (m.contains("normal_map"))
-            mat.normalMap = textureLayer(scene, r.existingFile(m["normal_map"], where + ".normal_map"));
+            mat.normalMap =
+                textureLayer(scene, r.existingFile(m["normal_map"], where + ".normal_map"));
         scene.materials.push_back(mat);
     }
 }
@@ -87,9 +98,11 @@ void readLights(const SceneReader& r, const json& doc, Scene& scene) {
 void readSkyBox(const SceneReader& r, const json& doc, Scene& scene) {
     if (!doc.contains("sky_box")) return;
     const json& faces = doc["sky_box"];
-    if (!faces.is_array() || faces.size() != 6) r.fail("sky_box", "expected six image files: +x, -x, +y, -y, +z, -z");
+    if (!faces.is_array() || faces.size() != 6)
+        r.fail("sky_box", "expected six image files: +x, -x, +y, -y, +z, -z");
     std::array<std::filesystem::path, 6> files;
-    for (std::size_t i = 0; i < 6; ++i) files[i] = r.existingFile(faces[i], "sky_box[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < 6; ++i)
+        files[i] = r.existingFile(faces[i], "sky_box[" + std::to_string(i) + "]");
     scene.skyBox = files;
 }
 
@@ -98,26 +111,30 @@ void readGlow(const SceneReader& r, const json& doc, Scene& scene) {
     const json& g = doc["glow"];
     r.allowOnly(g, "glow", {"sphere", "color", "size"});
     const json& sphere = r.member(g, "glow", "sphere");
-    if (!sphere.is_number_integer() || sphere.get<long long>() < 0 || sphere.get<long long>() >= (long long)scene.spheres.size())
-        r.fail("glow.sphere", "expected the index of a sphere (0.." + std::to_string(scene.spheres.size()) + ")");
+    if (!sphere.is_number_integer() || sphere.get<long long>() < 0 ||
+        sphere.get<long long>() >= (long long)scene.spheres.size())
+        r.fail("glow.sphere",
+               "expected the index of a sphere (0.." + std::to_string(scene.spheres.size()) + ")");
     scene.glow.sphere = sphere.get<int>();
     if (g.contains("color")) scene.glow.color = r.color(g["color"], "glow.color");
     if (g.contains("size")) scene.glow.size = r.positive(g["size"], "glow.size");
 }
 
-} // namespace
+}  // namespace
 
 Scene loadScene(const std::filesystem::path& file) {
     Scene scene;
     scene.file = displayPath(file);
     std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) throw Error("scene file " + scene.file + " does not exist");
+    if (!std::filesystem::exists(file, ec))
+        throw Error("scene file " + scene.file + " does not exist");
     std::string text = readTextFile(file);
     json doc;
     try {
         doc = json::parse(text);
     } catch (const json::parse_error& e) {
-        throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": JSON syntax error");
+        throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) +
+                    ": JSON syntax error");
     } catch (const json::out_of_range&) {
         // nlohmann::json reports a number too large for a double ("1e500") as
         // out_of_range (406), not parse_error: without this it escaped as a
@@ -126,8 +143,9 @@ Scene loadScene(const std::filesystem::path& file) {
     }
     SceneReader r{scene.file, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
-    r.allowOnly(doc, "", {"background", "camera", "materials", "lights", "spheres", "planes", "discs", "triangles", "rectangles", "boxes",
-                          "tori", "sky_box", "glow"});
+    r.allowOnly(doc, "",
+                {"background", "camera", "materials", "lights", "spheres", "planes", "discs",
+                 "triangles", "rectangles", "boxes", "tori", "sky_box", "glow"});
     scene.background = r.color(r.member(doc, "scene", "background"), "background");
     const json& cam = r.member(doc, "scene", "camera");
     r.allowOnly(cam, "camera", {"position", "yaw", "pitch", "fov_y"});
@@ -146,4 +164,4 @@ Scene loadScene(const std::filesystem::path& file) {
     return scene;
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -28,14 +28,14 @@ struct Material {
     enum class Type { Plastic = 0, Mirror = 1, Glass = 2, Metal = 3 };
     std::string name;
     Type type = Type::Plastic;
-    float ior = 1.5f;          // glass: index of refraction
+    float ior = 1.5f;            // glass: index of refraction
     glm::vec3 n{0.0f}, k{0.0f};  // metal: complex index n + ik per RGB channel
     glm::vec3 ambient{0.0f};
-    glm::vec3 diffuse{1.0f};   // also the flat colour of stage 01
+    glm::vec3 diffuse{1.0f};  // also the flat colour of stage 01
     glm::vec3 specular{0.0f};
-    float shininess = 30.0f;   // the seed's exponent
-    int texture = -1;          // layer in Scene::textures multiplying ambient and diffuse, -1: none
-    int normalMap = -1;        // layer in Scene::textures, -1: none (stage 07)
+    float shininess = 30.0f;  // the seed's exponent
+    int texture = -1;         // layer in Scene::textures multiplying ambient and diffuse, -1: none
+    int normalMap = -1;       // layer in Scene::textures, -1: none (stage 07)
 };
 
 struct PointLight {
@@ -118,4 +118,4 @@ struct Scene {
 // flat colour: a material of its own with that diffuse colour).
 Scene loadScene(const std::filesystem::path& file);
 
-} // namespace raylab
+}  // namespace raylab

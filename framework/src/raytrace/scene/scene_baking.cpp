@@ -19,36 +19,47 @@ std::string literal(float v) {
     return s;
 }
 
-std::string vec3Literal(glm::vec3 v) { return "vec3(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ")"; }
+std::string vec3Literal(glm::vec3 v) {
+    return "vec3(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ")";
+}
 std::string vec4Literal(glm::vec4 v) {
-    return "vec4(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ", " + literal(v.w) + ")";
+    return "vec4(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ", " +
+           literal(v.w) + ")";
 }
 
 // "const TYPE NAME[N] = TYPE[N](a, b, ...);" - with one dummy element when
 // the list is empty (the shader still declares the array).
 template <class T>
-std::string constArray(const char* type, const char* name, const std::vector<T>& values, const std::function<std::string(const T&)>& format,
+std::string constArray(const char* type, const char* name, const std::vector<T>& values,
+                       const std::function<std::string(const T&)>& format,
                        const std::string& dummy) {
     std::string n = std::to_string(std::max<std::size_t>(1, values.size()));
-    std::string out = std::string("const ") + type + " " + name + "[" + n + "] = " + type + "[" + n + "](";
+    std::string out =
+        std::string("const ") + type + " " + name + "[" + n + "] = " + type + "[" + n + "](";
     if (values.empty()) out += dummy;
     for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + format(values[i]);
     return out + ");\n";
 }
 
 std::string floats(const char* name, const std::vector<float>& v) {
-    return constArray<float>("float", name, v, [](const float& x) { return literal(x); }, "0.0");
+    return constArray<float>(
+        "float", name, v, [](const float& x) { return literal(x); }, "0.0");
 }
 std::string ints(const char* name, const std::vector<int>& v) {
-    return constArray<int>("int", name, v, [](const int& x) { return std::to_string(x); }, "0");
+    return constArray<int>(
+        "int", name, v, [](const int& x) { return std::to_string(x); }, "0");
 }
 std::string vec3s(const char* name, const std::vector<glm::vec3>& v) {
-    return constArray<glm::vec3>("vec3", name, v, [](const glm::vec3& x) { return vec3Literal(x); }, "vec3(0.0)");
+    return constArray<glm::vec3>(
+        "vec3", name, v, [](const glm::vec3& x) { return vec3Literal(x); }, "vec3(0.0)");
 }
 std::string vec4s(const char* name, const std::vector<glm::vec4>& v) {
-    return constArray<glm::vec4>("vec4", name, v, [](const glm::vec4& x) { return vec4Literal(x); }, "vec4(0.0)");
+    return constArray<glm::vec4>(
+        "vec4", name, v, [](const glm::vec4& x) { return vec4Literal(x); }, "vec4(0.0)");
 }
-std::string constInt(const char* name, int v) { return std::string("const int ") + name + " = " + std::to_string(v) + ";\n"; }
+std::string constInt(const char* name, int v) {
+    return std::string("const int ") + name + " = " + std::to_string(v) + ";\n";
+}
 
 template <class T, class F>
 auto gather(const std::vector<T>& list, F f) {
@@ -57,14 +68,18 @@ auto gather(const std::vector<T>& list, F f) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string bakedSceneGlsl(const Scene& scene) {
-    std::string g = "// The scene, compiled in (framework/src/raytrace/scene/scene_baking.cpp): " + scene.file + "\n";
+    std::string g =
+        "// The scene, compiled in (framework/src/raytrace/scene/scene_baking.cpp): " + scene.file +
+        "\n";
     g += "const vec3 uBackground = " + vec3Literal(scene.background) + ";\n";
 
     g += constInt("uSphereCount", int(scene.spheres.size()));
-    g += vec3s("uSphereColors", gather(scene.spheres, [&](const Sphere& s) { return scene.materials[std::size_t(s.material)].diffuse; }));
+    g += vec3s("uSphereColors", gather(scene.spheres, [&](const Sphere& s) {
+                   return scene.materials[std::size_t(s.material)].diffuse;
+               }));
     g += ints("uSphereMaterial", gather(scene.spheres, [](const Sphere& s) { return s.material; }));
 
     const auto& m = scene.materials;
@@ -80,27 +95,34 @@ std::string bakedSceneGlsl(const Scene& scene) {
     g += ints("uMatNormalMap", gather(m, [](const Material& x) { return x.normalMap; }));
 
     g += constInt("uLightCount", int(scene.lights.size()));
-    g += vec3s("uLightPositions", gather(scene.lights, [](const PointLight& l) { return l.position; }));
+    g += vec3s("uLightPositions",
+               gather(scene.lights, [](const PointLight& l) { return l.position; }));
     g += vec3s("uLightColors", gather(scene.lights, [](const PointLight& l) { return l.color; }));
 
     g += constInt("uPlaneCount", int(scene.planes.size()));
-    g += vec4s("uPlanes", gather(scene.planes, [](const Plane& p) { return glm::vec4(p.normal, glm::dot(p.normal, p.point)); }));
+    g += vec4s("uPlanes", gather(scene.planes, [](const Plane& p) {
+                   return glm::vec4(p.normal, glm::dot(p.normal, p.point));
+               }));
     g += floats("uPlaneTileSize", gather(scene.planes, [](const Plane& p) { return p.tileSize; }));
     g += ints("uPlaneMaterial", gather(scene.planes, [](const Plane& p) { return p.material; }));
 
     g += constInt("uDiscCount", int(scene.discs.size()));
-    g += vec4s("uDiscs", gather(scene.discs, [](const Disc& d) { return glm::vec4(d.center, d.radius); }));
+    g += vec4s("uDiscs",
+               gather(scene.discs, [](const Disc& d) { return glm::vec4(d.center, d.radius); }));
     g += vec3s("uDiscNormals", gather(scene.discs, [](const Disc& d) { return d.normal; }));
     g += ints("uDiscMaterial", gather(scene.discs, [](const Disc& d) { return d.material; }));
 
     std::vector<glm::vec3> vertices;
-    for (const Triangle& t : scene.triangles) vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
+    for (const Triangle& t : scene.triangles)
+        vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
     g += constInt("uTriangleCount", int(scene.triangles.size()));
     g += vec3s("uTriangleVertices", vertices);
-    g += ints("uTriangleMaterial", gather(scene.triangles, [](const Triangle& t) { return t.material; }));
+    g += ints("uTriangleMaterial",
+              gather(scene.triangles, [](const Triangle& t) { return t.material; }));
 
     g += constInt("uTorusCount", int(scene.tori.size()));
-    g += vec4s("uTori", gather(scene.tori, [](const Torus& t) { return glm::vec4(t.center, t.majorRadius); }));
+    g += vec4s("uTori", gather(scene.tori,
+                               [](const Torus& t) { return glm::vec4(t.center, t.majorRadius); }));
     g += floats("uTorusMinor", gather(scene.tori, [](const Torus& t) { return t.minorRadius; }));
     g += ints("uTorusMaterial", gather(scene.tori, [](const Torus& t) { return t.material; }));
 
@@ -112,7 +134,9 @@ std::string bakedSceneGlsl(const Scene& scene) {
 }
 
 std::vector<std::string> bakedSceneDefines(const Scene& scene) {
-    auto size = [](const char* name, std::size_t n) { return std::string(name) + " " + std::to_string(std::max<std::size_t>(1, n)); };
+    auto size = [](const char* name, std::size_t n) {
+        return std::string(name) + " " + std::to_string(std::max<std::size_t>(1, n));
+    };
     return {"SCENE_BAKED",
             size("MAX_SPHERES", scene.spheres.size()),
             size("MAX_MATERIALS", scene.materials.size()),
@@ -123,4 +147,4 @@ std::vector<std::string> bakedSceneDefines(const Scene& scene) {
             size("MAX_TORI", scene.tori.size())};
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -25,4 +25,4 @@ std::string bakedSceneGlsl(const Scene& scene);
 // (at least 1: GLSL has no empty arrays).
 std::vector<std::string> bakedSceneDefines(const Scene& scene);
 
-} // namespace raylab
+}  // namespace raylab

@@ -34,7 +34,8 @@ glm::vec3 SceneReader::vec3(const json& v, const std::string& where) const {
 glm::vec3 SceneReader::direction(const json& v, const std::string& where) const {
     glm::vec3 d = vec3(v, where);
     float length = glm::length(d);
-    if (!(length > 1e-6f) || !std::isfinite(length)) fail(where, "expected a direction, not a zero vector");
+    if (!(length > 1e-6f) || !std::isfinite(length))
+        fail(where, "expected a direction, not a zero vector");
     return d / length;
 }
 
@@ -53,11 +54,13 @@ std::string SceneReader::string(const json& v, const std::string& where) const {
 std::filesystem::path SceneReader::existingFile(const json& v, const std::string& where) const {
     std::filesystem::path p = folder / string(v, where);
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec)) fail(where, "file " + displayPath(p) + " does not exist");
+    if (!std::filesystem::is_regular_file(p, ec))
+        fail(where, "file " + displayPath(p) + " does not exist");
     return p.lexically_normal();
 }
 
-void SceneReader::allowOnly(const json& obj, const std::string& where, std::initializer_list<const char*> known) const {
+void SceneReader::allowOnly(const json& obj, const std::string& where,
+                            std::initializer_list<const char*> known) const {
     if (!obj.is_object()) return;  // member() says "expected an object" where it matters
     for (const auto& [key, value] : obj.items()) {
         if (key == "comment") continue;
@@ -67,7 +70,8 @@ void SceneReader::allowOnly(const json& obj, const std::string& where, std::init
             ok |= key == k;
             list += (list.empty() ? "" : ", ") + std::string(k);
         }
-        if (!ok) fail(where.empty() ? key : where + "." + key, "unknown key (known here: " + list + ")");
+        if (!ok)
+            fail(where.empty() ? key : where + "." + key, "unknown key (known here: " + list + ")");
     }
 }
 
@@ -79,4 +83,4 @@ const json& SceneReader::optionalList(const json& doc, const char* key) const {
     return list;
 }
 
-} // namespace raylab
+}  // namespace raylab

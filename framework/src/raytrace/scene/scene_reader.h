@@ -32,7 +32,8 @@ struct SceneReader {
     std::filesystem::path existingFile(const json& v, const std::string& where) const;
     // Fails on a key that is not in KNOWN (or "comment"): a typo such as
     // "tile_szie" must not be dropped silently.
-    void allowOnly(const json& obj, const std::string& where, std::initializer_list<const char*> known) const;
+    void allowOnly(const json& obj, const std::string& where,
+                   std::initializer_list<const char*> known) const;
     // The list under KEY, or an empty list when the file has none.
     const json& optionalList(const json& doc, const char* key) const;
 };
@@ -41,4 +42,4 @@ struct SceneReader {
 // made of triangles) and tori. Materials must already be read.
 void readShapes(const SceneReader& r, const json& doc, Scene& scene);
 
-} // namespace raylab
+}  // namespace raylab

@@ -11,16 +11,21 @@ namespace raylab {
 
 namespace {
 
-std::string item(const char* list, std::size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; }
+std::string item(const char* list, std::size_t i) {
+    return std::string(list) + "[" + std::to_string(i) + "]";
+}
 
 // "material": a name from "materials", or "color": a flat colour (a material
 // of its own with that diffuse colour).
 int materialOf(const SceneReader& r, const json& obj, const std::string& where, Scene& scene) {
     if (obj.is_object() && obj.contains("material")) {
-        if (!obj["material"].is_string()) r.fail(where + ".material", "expected the name of a material");
+        if (!obj["material"].is_string())
+            r.fail(where + ".material", "expected the name of a material");
         std::string name = obj["material"].get<std::string>();
-        auto it = std::find_if(scene.materials.begin(), scene.materials.end(), [&](const Material& m) { return m.name == name; });
-        if (it == scene.materials.end()) r.fail(where + ".material", "unknown material \"" + name + "\"");
+        auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
+                               [&](const Material& m) { return m.name == name; });
+        if (it == scene.materials.end())
+            r.fail(where + ".material", "unknown material \"" + name + "\"");
         return int(it - scene.materials.begin());
     }
     Material flat;
@@ -61,7 +66,8 @@ void readPlanes(const SceneReader& r, const json& doc, Scene& scene) {
         Plane p;
         p.point = r.vec3(r.member(planes[i], where, "point"), where + ".point");
         p.normal = r.direction(r.member(planes[i], where, "normal"), where + ".normal");
-        if (planes[i].contains("tile_size")) p.tileSize = r.positive(planes[i]["tile_size"], where + ".tile_size");
+        if (planes[i].contains("tile_size"))
+            p.tileSize = r.positive(planes[i]["tile_size"], where + ".tile_size");
         p.material = materialOf(r, planes[i], where, scene);
         scene.planes.push_back(p);
     }
@@ -81,8 +87,10 @@ void readDiscs(const SceneReader& r, const json& doc, Scene& scene) {
     }
 }
 
-void addTriangle(const SceneReader& r, const std::string& where, Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, int material) {
-    if (!(glm::length(glm::cross(b - a, c - a)) > 1e-8f)) r.fail(where, "degenerate: the corners lie on one line");
+void addTriangle(const SceneReader& r, const std::string& where, Scene& scene, glm::vec3 a,
+                 glm::vec3 b, glm::vec3 c, int material) {
+    if (!(glm::length(glm::cross(b - a, c - a)) > 1e-8f))
+        r.fail(where, "degenerate: the corners lie on one line");
     scene.triangles.push_back(Triangle{{a, b, c}, material});
 }
 
@@ -92,10 +100,12 @@ void readTriangles(const SceneReader& r, const json& doc, Scene& scene) {
         std::string where = item("triangles", i);
         r.allowOnly(triangles[i], where, {"vertices", "material", "color"});
         const json& v = r.member(triangles[i], where, "vertices");
-        if (!v.is_array() || v.size() != 3) r.fail(where + ".vertices", "expected three [x, y, z] corners");
+        if (!v.is_array() || v.size() != 3)
+            r.fail(where + ".vertices", "expected three [x, y, z] corners");
         int material = materialOf(r, triangles[i], where, scene);
-        addTriangle(r, where, scene, r.vec3(v[0], where + ".vertices[0]"), r.vec3(v[1], where + ".vertices[1]"),
-                    r.vec3(v[2], where + ".vertices[2]"), material);
+        addTriangle(r, where, scene, r.vec3(v[0], where + ".vertices[0]"),
+                    r.vec3(v[1], where + ".vertices[1]"), r.vec3(v[2], where + ".vertices[2]"),
+                    material);
     }
 }
 
@@ -126,7 +136,9 @@ void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
         glm::vec3 size = r.vec3(r.member(boxes[i], where, "size"), where + ".size");
         for (int c = 0; c < 3; ++c)
             if (!(size[c] > 0.0f)) r.fail(where + ".size", "every side must be positive");
-        float turn = boxes[i].contains("rotation_y") ? r.number(boxes[i]["rotation_y"], where + ".rotation_y") : 0.0f;
+        float turn = boxes[i].contains("rotation_y")
+                         ? r.number(boxes[i]["rotation_y"], where + ".rotation_y")
+                         : 0.0f;
         int material = materialOf(r, boxes[i], where, scene);
         glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(turn), glm::vec3(0, 1, 0));
         auto corner = [&](int x, int y, int z) {
@@ -157,13 +169,16 @@ void readTori(const SceneReader& r, const json& doc, Scene& scene) {
     for (std::size_t i = 0; i < tori.size(); ++i) {
         std::string where = item("tori", i);
         const json& t = tori[i];
-        r.allowOnly(t, where, {"center", "axis", "major_radius", "minor_radius", "spin", "material", "color"});
+        r.allowOnly(
+            t, where,
+            {"center", "axis", "major_radius", "minor_radius", "spin", "material", "color"});
         Torus torus;
         torus.center = r.vec3(r.member(t, where, "center"), where + ".center");
         torus.axis = r.direction(r.member(t, where, "axis"), where + ".axis");
         torus.majorRadius = r.positive(r.member(t, where, "major_radius"), where + ".major_radius");
         torus.minorRadius = r.positive(r.member(t, where, "minor_radius"), where + ".minor_radius");
-        if (torus.minorRadius >= torus.majorRadius) r.fail(where, "minor_radius must be smaller than major_radius");
+        if (torus.minorRadius >= torus.majorRadius)
+            r.fail(where, "minor_radius must be smaller than major_radius");
         if (t.contains("spin")) {
             std::string sw = where + ".spin";
             r.allowOnly(t["spin"], sw, {"axis", "period"});
@@ -175,12 +190,13 @@ void readTori(const SceneReader& r, const json& doc, Scene& scene) {
     }
 }
 
-} // namespace
+}  // namespace
 
 glm::vec3 Torus::axisAt(float t) const {
     if (spinPeriod <= 0.0f) return axis;
     float angle = 6.28318530718f * std::fmod(t / spinPeriod, 1.0f);
-    return glm::normalize(glm::vec3(glm::rotate(glm::mat4(1.0f), angle, spinAxis) * glm::vec4(axis, 0.0f)));
+    return glm::normalize(
+        glm::vec3(glm::rotate(glm::mat4(1.0f), angle, spinAxis) * glm::vec4(axis, 0.0f)));
 }
 
 // Texture coordinates exist on spheres, planes and discs; a tangent (for
@@ -189,13 +205,21 @@ void checkTexturesFit(const SceneReader& r, const Scene& scene) {
     auto check = [&](const char* list, std::size_t i, int material, bool uv, bool tangent) {
         const Material& m = scene.materials[std::size_t(material)];
         std::string where = item(list, i) + ".material";
-        if (m.texture >= 0 && !uv) r.fail(where, "material \"" + m.name + "\" has a texture, but " + list + " have no texture coordinates (spheres, planes and discs do)");
-        if (m.normalMap >= 0 && !tangent) r.fail(where, "material \"" + m.name + "\" has a normal map, but only spheres take normal maps");
+        if (m.texture >= 0 && !uv)
+            r.fail(where, "material \"" + m.name + "\" has a texture, but " + list +
+                              " have no texture coordinates (spheres, planes and discs do)");
+        if (m.normalMap >= 0 && !tangent)
+            r.fail(where, "material \"" + m.name +
+                              "\" has a normal map, but only spheres take normal maps");
     };
-    for (std::size_t i = 0; i < scene.planes.size(); ++i) check("planes", i, scene.planes[i].material, true, false);
-    for (std::size_t i = 0; i < scene.discs.size(); ++i) check("discs", i, scene.discs[i].material, true, false);
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) check("triangles", i, scene.triangles[i].material, false, false);
-    for (std::size_t i = 0; i < scene.tori.size(); ++i) check("tori", i, scene.tori[i].material, false, false);
+    for (std::size_t i = 0; i < scene.planes.size(); ++i)
+        check("planes", i, scene.planes[i].material, true, false);
+    for (std::size_t i = 0; i < scene.discs.size(); ++i)
+        check("discs", i, scene.discs[i].material, true, false);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        check("triangles", i, scene.triangles[i].material, false, false);
+    for (std::size_t i = 0; i < scene.tori.size(); ++i)
+        check("tori", i, scene.tori[i].material, false, false);
 }
 
 void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
@@ -209,4 +233,4 @@ void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
     checkTexturesFit(r, scene);
 }
 
-} // namespace raylab
+}  // namespace raylab

@@ -94,7 +94,8 @@ TEST(CourseTemplate, BadStageFilesNameFileAndKey) {
         std::string from, to, message;
     };
     const std::vector<Case> cases = {
-        {"\"track\": \"raytrace\",", "", "solution/03-shadows/stage.json: track: missing"},
+        {"\"track\": \"raytrace\",", "",
+         "solution/03-shadows/stage.json: stage: missing \"track\""},
         {"\"builds_on\": \"02-shading\"", "\"builds_on\": \"02-shadingg\"",
          "solution/03-shadows/stage.json: builds_on: no stage '02-shadingg'"},
         {"\"features\": [\"shading\", \"shadows\"]", "\"features\": [\"shading\", \"shadow\"]",

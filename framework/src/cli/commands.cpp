@@ -2,6 +2,7 @@
 // defines a Command, plus one line here.
 #include "commands.h"
 #include "command.h"
+#include "gl_context.h"
 
 #include <string>
 
@@ -27,16 +28,12 @@ const std::vector<Command>& commandTable() {
     return table;
 }
 
-namespace {
-std::string gCommandLine;
-}  // namespace
-
-void rememberCommandLine(int argc, char** argv) {
-    gCommandLine.clear();
-    for (int i = 0; i < argc; ++i)
-        gCommandLine += (i ? " " : "") + std::string(i ? argv[i] : "raylab");
+std::string programCommandLine() {
+    const std::vector<std::string>& args = programArguments();
+    std::string line;
+    for (std::size_t i = 0; i < args.size(); ++i)
+        line += (i ? " " + args[i] : std::string("raylab"));
+    return line;
 }
-
-const std::string& programCommandLine() { return gCommandLine; }
 
 }  // namespace raylab

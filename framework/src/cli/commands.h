@@ -82,9 +82,9 @@ struct BenchOptions {
 };
 int cmdBench(const BenchOptions& bench);
 
-// The command line as typed ("raylab bench --out x"), for reports.
-void rememberCommandLine(int argc, char** argv);
-const std::string& programCommandLine();
+// The command line as typed ("raylab bench --out x"), for reports: the
+// arguments main() registered with rememberProgramArguments.
+std::string programCommandLine();
 
 // True when a window can be opened (X11 or Wayland display set).
 bool displayAvailable();

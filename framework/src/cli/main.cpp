@@ -13,7 +13,6 @@ using namespace raylab;
 
 int main(int argc, char** argv) {
     rememberProgramArguments(argc, argv);
-    rememberCommandLine(argc, argv);
     CLI::App app{
         "RayLab: build a real-time GPU ray tracer stage by stage, and grade it headlessly."};
     app.require_subcommand(1);

@@ -1,10 +1,9 @@
 #include "stage_catalog.h"
 
 #include "error.h"
+#include "json_reader.h"
 #include "paths.h"
 #include "render_settings.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -13,7 +12,6 @@
 namespace raylab {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 namespace {
 
@@ -31,37 +29,12 @@ const std::set<std::string> kKnownFeatures = {
 };
 
 // Reads typed values out of one stage.json with "FILE: KEY: ..." errors.
-struct StageReader {
-    std::string file;
-
-    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-        throw Error(file + ": " + key + ": " + what);
-    }
-    void onlyKeys(const json& obj, const std::string& where,
-                  std::initializer_list<const char*> allowed) const {
-        for (const auto& [key, value] : obj.items()) {
-            (void)value;
-            bool ok = std::any_of(allowed.begin(), allowed.end(),
-                                  [&](const char* a) { return key == a; });
-            if (!ok) fail(where.empty() ? key : where + "." + key, "unknown key");
-        }
-    }
-    const json& member(const json& obj, const std::string& where, const char* key) const {
-        if (!obj.contains(key)) fail(where.empty() ? key : where + "." + key, "missing");
-        return obj[key];
-    }
-    const json& object(const json& v, const std::string& key) const {
-        if (!v.is_object()) fail(key, "expected an object");
-        return v;
-    }
+// The stage file's value kinds on top of JsonReader's (json_reader.h).
+struct StageReader : JsonReader {
     std::string text(const json& v, const std::string& key) const {
-        if (!v.is_string() || v.get<std::string>().empty())
-            fail(key, "expected a non-empty string");
-        return v.get<std::string>();
-    }
-    float number(const json& v, const std::string& key) const {
-        if (!v.is_number()) fail(key, "expected a number");
-        return v.get<float>();
+        std::string s = string(v, key);
+        if (s.empty()) fail(key, "expected a non-empty string");
+        return s;
     }
     int count(const json& v, const std::string& key) const {
         if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000)
@@ -87,8 +60,7 @@ struct StageReader {
     }
 
     StageProgram program(const json& v) const {
-        object(v, "program");
-        onlyKeys(v, "program", {"vertex", "geometry", "fragment"});
+        allowOnly(v, "program", {"vertex", "geometry", "fragment"});
         StageProgram p;
         p.vertex = text(member(v, "program", "vertex"), "program.vertex");
         if (v.contains("geometry")) p.geometry = text(v["geometry"], "program.geometry");
@@ -97,10 +69,10 @@ struct StageReader {
     }
 
     StageLimits limits(const json& v) const {
-        object(v, "limits");
-        onlyKeys(v, "limits",
-                 {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori",
-                  "textures", "sky_box"});
+        if (!v.is_object()) fail("limits", "expected an object");
+        allowOnly(v, "limits",
+                  {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori",
+                   "textures", "sky_box"});
         StageLimits l;
         auto c = [&](const char* key, int fallback) {
             return optional(v, "limits", key, fallback,
@@ -120,17 +92,16 @@ struct StageReader {
     }
 
     CheckView view(const json& v, const std::string& where) const {
-        object(v, where);
-        onlyKeys(v, where,
-                 {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps",
-                  "color_mode", "scene"});
+        allowOnly(v, where,
+                  {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps",
+                   "color_mode", "scene"});
         CheckView c;
         c.name = text(member(v, where, "name"), where + ".name");
         c.why = text(member(v, where, "why"), where + ".why");
         if (v.contains("camera")) {
-            const json& cam = object(v["camera"], where + ".camera");
+            const json& cam = v["camera"];
             const std::string at = where + ".camera";
-            onlyKeys(cam, at, {"position", "yaw", "pitch"});
+            allowOnly(cam, at, {"position", "yaw", "pitch"});
             const json& p = member(cam, at, "position");
             if (!p.is_array() || p.size() != 3) fail(at + ".position", "expected [x, y, z]");
             CameraPose pose;
@@ -238,26 +209,27 @@ std::string stageList() {
 
 StageInfo readStageFile(const fs::path& file) {
     const std::string shown = displayPath(file);
-    StageReader r{shown};
+    StageReader r{{shown}};
     const json doc = parseFile(file, shown);
     if (!doc.is_object()) r.fail("(top level)", "expected an object");
-    r.onlyKeys(doc, "",
-               {"id", "title", "track", "builds_on", "scene", "program", "limits", "features",
-                "function_checks", "mistakes", "check_views", "defines"});
+    r.allowOnly(doc, "",
+                {"id", "title", "track", "builds_on", "scene", "program", "limits", "features",
+                 "function_checks", "mistakes", "check_views", "defines"});
     StageInfo s;
-    s.id = r.text(r.member(doc, "", "id"), "id");
+    s.id = r.text(r.member(doc, "stage", "id"), "id");
     if (s.id != file.parent_path().filename().string())
         r.fail("id", "'" + s.id + "' is not the folder's name '" +
                          file.parent_path().filename().string() + "'");
-    s.title = r.text(r.member(doc, "", "title"), "title");
-    s.track = r.text(r.member(doc, "", "track"), "track");
-    const json& on = r.member(doc, "", "builds_on");
+    s.title = r.text(r.member(doc, "stage", "title"), "title");
+    s.track = r.text(r.member(doc, "stage", "track"), "track");
+    const json& on = r.member(doc, "stage", "builds_on");
     if (!on.is_null()) s.buildsOn = r.text(on, "builds_on");
     if (s.buildsOn == s.id) r.fail("builds_on", "a stage cannot build on itself");
-    s.scene = r.text(r.member(doc, "", "scene"), "scene");
-    s.program = r.program(r.member(doc, "", "program"));
-    s.limits = r.limits(r.member(doc, "", "limits"));
-    const std::vector<std::string> features = r.strings(r.member(doc, "", "features"), "features");
+    s.scene = r.text(r.member(doc, "stage", "scene"), "scene");
+    s.program = r.program(r.member(doc, "stage", "program"));
+    s.limits = r.limits(r.member(doc, "stage", "limits"));
+    const std::vector<std::string> features =
+        r.strings(r.member(doc, "stage", "features"), "features");
     for (std::size_t i = 0; i < features.size(); ++i) {
         if (!kKnownFeatures.count(features[i])) {
             std::string known;
@@ -267,11 +239,11 @@ StageInfo readStageFile(const fs::path& file) {
         }
         s.features.insert(features[i]);
     }
-    s.functionChecks = r.strings(r.member(doc, "", "function_checks"), "function_checks");
-    s.mistakes = r.text(r.member(doc, "", "mistakes"), "mistakes");
+    s.functionChecks = r.strings(r.member(doc, "stage", "function_checks"), "function_checks");
+    s.mistakes = r.text(r.member(doc, "stage", "mistakes"), "mistakes");
     if (s.mistakes.is_absolute() || s.mistakes.lexically_normal().string().rfind("..", 0) == 0)
         r.fail("mistakes", "expected a folder inside the project, relative to its root");
-    const json& views = r.member(doc, "", "check_views");
+    const json& views = r.member(doc, "stage", "check_views");
     if (!views.is_array() || views.empty())
         r.fail("check_views", "expected a non-empty list of views");
     for (std::size_t i = 0; i < views.size(); ++i) {

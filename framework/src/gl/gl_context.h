@@ -11,6 +11,7 @@
 //  - auto:   egl, or osmesa when EGL is not available.
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -32,8 +33,10 @@ std::unique_ptr<GlContext> createOsMesaContext();  // throws Error; requires the
 // with libOSMesa preloaded and `--backend osmesa`, so call it early.
 std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
 
-// main() registers its arguments here so that the process can be re-executed.
+// main() registers its arguments here so that the process can be re-executed
+// (and reports can quote the command line).
 void rememberProgramArguments(int argc, char** argv);
+const std::vector<std::string>& programArguments();
 
 // True when this process's linked GL 1.1 symbols are OSMesa's (it was
 // re-executed with libOSMesa preloaded).

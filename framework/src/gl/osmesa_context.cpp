@@ -118,6 +118,8 @@ void reexecWithOsMesa() {
 
 void rememberProgramArguments(int argc, char** argv) { gArguments.assign(argv, argv + argc); }
 
+const std::vector<std::string>& programArguments() { return gArguments; }
+
 std::unique_ptr<GlContext> createOsMesaContext() {
     if (!inOsMesaProcess())
         throw Error("the OSMesa backend needs its own process (use --backend osmesa)");

@@ -141,7 +141,7 @@ Scene loadScene(const std::filesystem::path& file) {
         // non-Error exception (found by tests/fuzz/fuzz_scene).
         throw Error(scene.file + ": JSON number out of range (larger than a double can hold)");
     }
-    SceneReader r{scene.file, file.parent_path()};
+    SceneReader r{{scene.file}, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
     r.allowOnly(doc, "",
                 {"background", "camera", "materials", "lights", "spheres", "planes", "discs",

@@ -6,20 +6,6 @@
 
 namespace raylab {
 
-const json& SceneReader::member(const json& obj, const std::string& where, const char* key) const {
-    if (!obj.is_object()) fail(where, "expected an object");
-    auto it = obj.find(key);
-    if (it == obj.end()) fail(where, std::string("missing \"") + key + "\"");
-    return *it;
-}
-
-float SceneReader::number(const json& v, const std::string& where) const {
-    if (!v.is_number()) fail(where, "expected a number");
-    double d = v.get<double>();
-    if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(where, "number out of range");
-    return float(d);
-}
-
 float SceneReader::positive(const json& v, const std::string& where) const {
     float f = number(v, where);
     if (!(f > 0.0f)) fail(where, "expected a positive number");
@@ -46,41 +32,12 @@ glm::vec3 SceneReader::color(const json& v, const std::string& where) const {
     return c;
 }
 
-std::string SceneReader::string(const json& v, const std::string& where) const {
-    if (!v.is_string()) fail(where, "expected a string");
-    return v.get<std::string>();
-}
-
 std::filesystem::path SceneReader::existingFile(const json& v, const std::string& where) const {
     std::filesystem::path p = folder / string(v, where);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec))
         fail(where, "file " + displayPath(p) + " does not exist");
     return p.lexically_normal();
-}
-
-void SceneReader::allowOnly(const json& obj, const std::string& where,
-                            std::initializer_list<const char*> known) const {
-    if (!obj.is_object()) return;  // member() says "expected an object" where it matters
-    for (const auto& [key, value] : obj.items()) {
-        if (key == "comment") continue;
-        bool ok = false;
-        std::string list;
-        for (const char* k : known) {
-            ok |= key == k;
-            list += (list.empty() ? "" : ", ") + std::string(k);
-        }
-        if (!ok)
-            fail(where.empty() ? key : where + "." + key, "unknown key (known here: " + list + ")");
-    }
-}
-
-const json& SceneReader::optionalList(const json& doc, const char* key) const {
-    static const json empty = json::array();
-    if (!doc.contains(key)) return empty;
-    const json& list = doc[key];
-    if (!list.is_array()) fail(key, "expected a list");
-    return list;
 }
 
 }  // namespace raylab

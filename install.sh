@@ -22,6 +22,7 @@ packages=(
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL (surfaceless Mesa, llvmpipe)
   libosmesa6-dev                                   # headless OSMesa backend
   libcli11-dev nlohmann-json3-dev                  # command line, scene files
+  libtinyobjloader-dev                             # OBJ meshes (fur track)
   libimgui-dev                                     # on-screen overlay (Dear ImGui + its SDL2/OpenGL3 backends)
   libgtest-dev libgmock-dev                        # tests
   glslang-tools                                    # Khronos reference GLSL compiler (tests)

@@ -9,6 +9,14 @@ void labTodo()
     gLabTodoReached = true;
 }
 
+// A stub reached earlier in the pipeline: vertex and geometry shaders pass a
+// flat flag on to the fragment shader, which calls this with it.
+void labTodoIf(bool reachedEarlier)
+{
+    if (reachedEarlier) gLabTodoReached = true;
+}
+
+#ifdef RAYLAB_FRAGMENT_SHADER
 // Call last in main(): adds the stripes where a stub was reached.
 vec3 labOverlay(vec3 color)
 {
@@ -16,3 +24,4 @@ vec3 labOverlay(vec3 color)
     bool stripe = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 12.0), 2.0) == 0.0;
     return stripe ? mix(color, vec3(1.0, 0.0, 1.0), 0.75) : color;
 }
+#endif

@@ -64,7 +64,7 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
          "--stage 05 --solution --scene " + quote(dir / "many-triangles.json"),
          "triangles: 36 triangles, but stage 05-primitives supports at most 32"},
         {"color-mode", "--stage 08 --solution --color-mode XYZ",
-         "--color-mode must be one of RGB, BRB, BRR, RBB, GGR"},
+         "--color-mode must be RGB, BRB, BRR, RBB or GGR"},
         {"too-many-lights", "--stage 02 --solution --scene " + quote(dir / "many-lights.json"),
          "lights: 9 lights, but stage 02-shading supports at most 4"},
         {"size-format", "--stage 01 --solution --size 800by600",

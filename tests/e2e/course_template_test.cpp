@@ -111,7 +111,7 @@ TEST(CourseTemplate, BadStageFilesNameFileAndKey) {
         {"\"builds_on\": \"02-shading\"", "\"builds_on\": \"03-shadows\"",
          "solution/03-shadows/stage.json: builds_on: a stage cannot build on itself"},
         {"\"scene\": \"stage02.json\",", "\"scene\": \"stage02.json\"",
-         "solution/03-shadows/stage.json: not valid JSON"},
+         "solution/03-shadows/stage.json: line 7, column 11: JSON syntax error"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

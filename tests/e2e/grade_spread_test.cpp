@@ -73,10 +73,8 @@ TEST(GradeSpread, SolutionAtTwoImageSizesIsNotComparablePixelByPixel) {
     std::string worstView;
     for (const char* id : {"05", "06", "07"}) {
         const raylab::StageInfo& stage = raylab::findStage(id);
-        raylab::Scene scene =
-            raylab::loadScene(raylab::projectRoot() / "assets" / "scenes" / stage.scene);
-        raylab::ViewRenderers small(stage, raylab::solutionSources(stage), scene, "", 160, 120);
-        raylab::ViewRenderers big(stage, raylab::solutionSources(stage), scene, "", 320, 240);
+        raylab::ViewRenderers small(stage, raylab::solutionSources(stage), "", 160, 120);
+        raylab::ViewRenderers big(stage, raylab::solutionSources(stage), "", 320, 240);
         for (const raylab::CheckView& view : stage.checkViews) {
             double share = raylab::compareImages(small.render(view), halve(big.render(view)),
                                                  tolerance.channel)

@@ -49,10 +49,9 @@ ViewRenderers& gpuFor(const StageInfo& stage) {
     static std::map<std::string, std::unique_ptr<ViewRenderers>> renderers;
     auto it = renderers.find(stage.id);
     if (it == renderers.end()) {
-        Scene scene = loadScene(projectRoot() / "assets" / "scenes" / stage.scene);
         it = renderers
                  .emplace(stage.id, std::make_unique<ViewRenderers>(stage, solutionSources(stage),
-                                                                    scene, "", kWidth, kHeight))
+                                                                    "", kWidth, kHeight))
                  .first;
     }
     return *it->second;

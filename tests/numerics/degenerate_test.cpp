@@ -108,7 +108,7 @@ TEST(DegenerateNumerics, EyeInsideTheGlassSphereRendersAFullFrameWithoutNaN) {
 TEST(DegenerateNumerics, RayLyingInAPlaneMissesIt) {
     FunctionSpec spec;
     spec.name = "intersectPlane";
-    spec.includes = {"intersect_plane.glsl"};
+    spec.includes = {"ray.glsl", "intersect_plane.glsl"};
     spec.call = "vec4(intersectPlane(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec3 normals[] = {{0, 1, 0},
                              {1, 0, 0},
@@ -166,7 +166,7 @@ TEST(DegenerateNumerics, DegenerateTrianglesAreNeverHitByEitherMethod) {
     };
     FunctionSpec spec;
     spec.name = "intersectTriangle";
-    spec.includes = {"intersect_triangle.glsl"};
+    spec.includes = {"ray.glsl", "intersect_triangle.glsl"};
     spec.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, "
                 "a3.xyz), 0.0, 0.0, 1.0)";
     const dvec3 eyes[] = {{0, 0, 10}, {5, 5, 5}, {-3, 2, -4}, {0.5, 30, 3}};

@@ -146,7 +146,7 @@ TEST(FresnelNumerics, LeavingGlassTheAirSideCosineIsRightNearTheCriticalAngleAnd
     // total internal reflection (if F = 1 were not taken there).
     FunctionSpec spec;
     spec.name = "fresnelDielectric";
-    spec.includes = {"fresnel.glsl"};
+    spec.includes = {"ray.glsl", "fresnel.glsl"};
     spec.call = "vec4(fresnelDielectric(a0.x, a0.y), 0.0, 0.0, 1.0)";
     std::vector<double> cosines;
     for (double deg = 42.0; deg < 90.0; deg += 0.25) {
@@ -176,7 +176,7 @@ TEST(FresnelNumerics,
     const dvec3 n(0.143, 0.375, 1.442), k(3.983, 2.386, 1.603);
     FunctionSpec spec;
     spec.name = "fresnelConductor";
-    spec.includes = {"fresnel.glsl"};
+    spec.includes = {"ray.glsl", "fresnel.glsl"};
     spec.call = "vec4(fresnelConductor(a0.x, a1.xyz, a2.xyz), 1.0)";
     constexpr int kSteps = 2000;
     std::vector<double> cosines;

@@ -82,8 +82,13 @@ Figures measure(Surface surface, double scale, bool naive) {
 
     FunctionSpec spec;
     spec.name = "acne";
-    spec.includes = {"scene_objects.glsl",   "intersect_sphere.glsl", "intersect_plane.glsl",
-                     "intersect_torus.glsl", "ray_offset.glsl",       "numerics_acne.glsl"};
+    spec.includes = {"ray.glsl",
+                     "scene_objects.glsl",
+                     "intersect_sphere.glsl",
+                     "intersect_plane.glsl",
+                     "intersect_torus.glsl",
+                     "ray_offset.glsl",
+                     "numerics_acne.glsl"};
     spec.call = plane   ? "planeAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)"
                 : torus ? "torusAcne(a0.xyz, a1.xyz, a2.x, a2.y, a3.xyz)"
                         : "sphereAcne(a0.xyz, a1.xyz, a2.xyz, a2.w, a3.xyz)";

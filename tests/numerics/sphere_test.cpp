@@ -59,7 +59,7 @@ struct Figures {
 Figures measure(double ratio, bool naive) {
     FunctionSpec spec;
     spec.name = "intersectSphere";
-    spec.includes = {"intersect_sphere.glsl"};
+    spec.includes = {"ray.glsl", "intersect_sphere.glsl"};
     spec.call = "vec4(intersectSphere(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     // The eye near the world origin (as in every scene), the sphere RATIO
     // radii away in a tilted direction; all inputs are float numbers.

@@ -73,7 +73,7 @@ struct Figures {
 Figures measure(double distance, bool closedForm) {
     FunctionSpec spec;
     spec.name = "intersectTorusLocal";
-    spec.includes = {"scene_objects.glsl", "intersect_torus.glsl"};
+    spec.includes = {"ray.glsl", "scene_objects.glsl", "intersect_torus.glsl"};
     spec.call = "vec4(intersectTorusLocal(Ray(a0.xyz, a1.xyz), a2.x, a2.y), 0.0, 0.0, 1.0)";
     // The eye looks at the torus from a tilted direction; rays aim at a grid
     // over a square a little larger than the torus (misses and grazes too).

@@ -214,7 +214,7 @@ std::vector<glm::vec4> runTriangles(const Mesh& mesh, const std::vector<AimedRay
                                     bool naive) {
     FunctionSpec spec;
     spec.name = "intersectTriangle";
-    spec.includes = {"intersect_triangle.glsl"};
+    spec.includes = {"ray.glsl", "intersect_triangle.glsl"};
     spec.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, "
                 "a3.xyz), 0.0, 0.0, 1.0)";
     for (const AimedRay& r : rays)

@@ -40,8 +40,10 @@ std::map<std::string, std::string> generateStage(const StageInfo& stage,
     const fs::path own = projectRoot() / "solution" / stage.id;
     const fs::path framework = projectRoot() / "framework";
     std::map<std::string, std::string> files;
-    for (const std::string& entry :
-         {stage.program.vertex, stage.program.geometry, stage.program.fragment}) {
+    std::vector<std::string> entries;
+    for (const auto& [key, program] : stage.allPrograms())
+        entries.insert(entries.end(), {program->vertex, program->geometry, program->fragment});
+    for (const std::string& entry : entries) {
         if (entry.empty()) continue;
         ShaderSource src = assembleShader(entry, sources.search, stage.defines());
         for (const fs::path& f : src.files) {

@@ -37,7 +37,7 @@ inline std::uint8_t toByte(double v) {
     return static_cast<std::uint8_t>(std::lround(clamp01(v) * 255.0));
 }
 
-// Every texture is opaque: alpha is always 255.
+// Opaque pixels (alpha 255); only the fin strands (fur.cpp) write their own alpha.
 inline void setPixel(Image& image, int x, int y, Rgb c) {
     std::uint8_t* p = image.pixel(x, y);
     p[0] = toByte(c.r);

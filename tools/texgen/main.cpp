@@ -1,5 +1,6 @@
 // raylab-texgen: writes the procedural textures the ray tracer's later stages
-// use (planets, sky box, floor patterns). Nothing is downloaded: every pixel
+// use (planets, sky box, floor patterns) and the fur track's (coat colour,
+// fur pattern, fin strands). Nothing is downloaded: every pixel
 // comes from the generators in this folder, deterministically, so the
 // committed files in assets/textures/ can be checked by regenerating them.
 //

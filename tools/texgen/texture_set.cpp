@@ -1,6 +1,7 @@
 #include "texture_set.h"
 
 #include "cube_map.h"
+#include "fur.h"
 #include "patterns.h"
 #include "planets.h"
 #include "sky.h"
@@ -25,6 +26,9 @@ std::vector<NamedImage> generateAllTextures() {
         all.push_back({std::string("sky_") + kCubeFaceNames[i] + ".png", std::move(sky[i])});
     all.push_back({"tiles.png", tiles(256)});
     all.push_back({"marble.png", marble(256)});
+    all.push_back({"fur_color.png", furColor(256)});
+    all.push_back({"fur_pattern.png", furPattern(128)});
+    all.push_back({"fur_fin.png", furFin(128, 64)});
     return all;
 }
 

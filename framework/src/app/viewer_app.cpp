@@ -3,7 +3,7 @@
 #include "error.h"
 #include "paths.h"
 #include "settings_keys.h"
-#include "tracks.h"
+#include "track_registry.h"
 
 #include <algorithm>
 #include <cstdio>

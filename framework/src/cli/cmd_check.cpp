@@ -5,7 +5,6 @@
 #include "function_checks.h"
 #include "image_compare.h"
 #include "paths.h"
-#include "stage_renderer.h"
 #include "view_renderers.h"
 
 #include <cstdio>
@@ -27,11 +26,11 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
     // Frames read as grading reads them (view_renderers.h).
-    ViewRenderers students(stage, setup.sources, setup.scene, options.scene, w, h);
+    ViewRenderers students(stage, setup.sources, options.scene, w, h);
     std::unique_ptr<ViewRenderers> references;
     if (against.empty())
-        references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), setup.scene,
-                                                     options.scene, w, h);
+        references =
+            std::make_unique<ViewRenderers>(stage, solutionSources(stage), options.scene, w, h);
     reportOpenTodos(students.forView(stage.checkViews.front())
                         .openTodos());  // a compile error stops here, before any output
 
@@ -83,6 +82,16 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         (ok ? passed : failed) += 1;
         std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
                     f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
+    }
+    for (const std::string& name : stage.countChecks) {
+        // Counted from the check views' cameras: a number the GPU produced
+        // against the same number worked out on the CPU.
+        CountOutcome c = runCountCheck(students, name, stage.checkViews);
+        bool ok = c.total > 0 && c.passed == c.total;
+        (ok ? passed : failed) += 1;
+        std::printf("  %s %-18s %d/%d views%s%s\n", ok ? "PASS" : "FAIL", c.name.c_str(), c.passed,
+                    c.total,
+                    ok ? "; " : "; first failure: ", (ok ? c.example : c.firstFailure).c_str());
     }
     std::printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

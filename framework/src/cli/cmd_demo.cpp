@@ -10,6 +10,7 @@
 #include "gl_loader.h"
 #include "paths.h"
 #include "stage_renderer.h"
+#include "track_registry.h"
 #include "viewer_app.h"
 
 #include <cstdio>
@@ -50,6 +51,7 @@ std::string frameName(int i) {
 
 int cmdDemo(const DemoOptions& demo) {
     const StageInfo& stage = demo.stage.empty() ? demoStage() : findStage(demo.stage);
+    requireRayTracingStage(stage, "raylab demo --stage");
     StageOptions options;
     options.stage = stage.id;
     options.solution = true;

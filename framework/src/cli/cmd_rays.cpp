@@ -6,6 +6,7 @@
 #include "debug_views.h"
 #include "error.h"
 #include "ray_dump.h"
+#include "track_registry.h"
 
 #include <cstdio>
 
@@ -19,6 +20,7 @@ int cmdRays(const StageOptions& options, const std::string& outFile, Backend bac
     if (!std::filesystem::is_directory(dir, ec))
         throw Error("--out '" + outFile + "': folder " + dir.string() + " does not exist");
     StageSetup setup = resolveStageOptions(options);
+    requireRayTracingStage(*setup.stage, "raylab rays");
 
     auto context = createHeadlessContext(backend);
     const int w = setup.size.width, h = setup.size.height;

@@ -5,7 +5,7 @@
 #include "error.h"
 #include "paths.h"
 #include "reference_tracer.h"
-#include "stage_renderer.h"
+#include "track_registry.h"
 
 #include <cstdio>
 
@@ -28,11 +28,11 @@ bool checkOutputFile(const std::filesystem::path& out) {
 // The frame drawn as `raylab render` always drew it (8-bit colour).
 int renderColorPng(const StageSetup& setup, const RenderOptions& render) {
     auto context = createHeadlessContext(render.backend);
-    StageRenderer renderer(*setup.stage, setup.sources, setup.scene, setup.size.width,
-                           setup.size.height);
-    reportOpenTodos(renderer.openTodos());
-    renderer.render(setup.camera, setup.time, setup.settings);
-    writePngAtomic(renderer.read(), render.outFile);
+    auto renderer = makeTrackRenderer(setup, setup.size.width, setup.size.height,
+                                      PixelFormat::Rgba8, RendererUse::Generic);
+    reportOpenTodos(renderer->openTodos());
+    renderer->render(setup.camera, setup.time, setup.settings);
+    writePngAtomic(renderer->read(), render.outFile);
     std::printf("raylab: wrote %s (%dx%d, stage %s, %s, %s backend)\n", render.outFile.c_str(),
                 setup.size.width, setup.size.height, setup.stage->id.c_str(),
                 setup.sources.label.c_str(), context->backendName().c_str());
@@ -45,12 +45,12 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
     const int w = setup.size.width, h = setup.size.height;
     std::vector<float> rgba;
     if (view == DebugView::Color) {
-        StageRenderer renderer(*setup.stage, setup.sources, setup.scene, w, h,
-                               PixelFormat::Rgba32F);
-        reportOpenTodos(renderer.openTodos());
-        renderer.render(setup.camera, setup.time, setup.settings);
-        rgba = renderer.target().readFloats();
+        auto renderer = makeTrackRenderer(setup, w, h, PixelFormat::Rgba32F, RendererUse::Generic);
+        reportOpenTodos(renderer->openTodos());
+        renderer->render(setup.camera, setup.time, setup.settings);
+        rgba = renderer->readFloats();
     } else {
+        requireRayTracingStage(*setup.stage, std::string("--view ") + debugViewName(view));
         GpuView gv = view == DebugView::Depth    ? GpuView::Depth
                      : view == DebugView::Normal ? GpuView::Normal
                                                  : GpuView::Id;
@@ -64,6 +64,7 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
 }
 
 ViewData referenceView(DebugView view, const StageSetup& setup, std::string* source) {
+    requireRayTracingStage(*setup.stage, "the reference tracer (--reference)");
     ReferenceTracer tracer(setup.scene, ReferenceFeatures::forStage(*setup.stage), setup.time,
                            setup.settings);
     std::vector<ReferenceSample> samples =

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "error.h"
 #include "reference_tracer.h"
+#include "track_registry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,7 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
     int x = 0, y = 0;
     parsePixel(pixel, x, y);
     StageSetup setup = resolveStageOptions(options);
+    requireRayTracingStage(*setup.stage, "raylab trace");
     const int w = setup.size.width, h = setup.size.height;
     if (x < 0 || y < 0 || x >= w || y >= h)
         throw Error("--pixel " + pixel + ": outside the " + std::to_string(w) + "x" +

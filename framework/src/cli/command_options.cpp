@@ -4,7 +4,7 @@ namespace raylab {
 
 CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
     cmd.add_option("--stage", o.stage,
-                   "stage id or number, e.g. 01-raycast or 01 (see `raylab stages`)")
+                   "stage id or number, e.g. 01-raycast, 01 or f2 (see `raylab stages`)")
         ->required();
     CLI::Option* lab =
         cmd.add_option("--lab", o.labDir,
@@ -28,6 +28,16 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
                      "start without normal maps (stage 07 on; key N)");
         cmd.add_option("--color-mode", o.colorMode,
                        "colour mode RGB, BRB, BRR, RBB or GGR (stage 08; Up/Down)")
+            ->capture_default_str();
+        cmd.add_option(
+            "--shells", o.shells,
+            "fur track: shells drawn, the skin included (default: the scene's; keys [ ])");
+        cmd.add_option("--fur-length", o.furLength,
+                       "fur track: a factor on the scene's fur length (keys - =)")
+            ->capture_default_str();
+        cmd.add_flag("--no-fins", o.noFins, "fur track: start without fins (stage f3 on; key F)");
+        cmd.add_option("--technique", o.technique,
+                       "fur track: shells_and_fins or fur_shader (stage f4; key T)")
             ->capture_default_str();
     }
     return lab;

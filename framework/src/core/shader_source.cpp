@@ -172,6 +172,14 @@ ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path
     a.emit(kGlslVersionLine, kGenerated, 1);
     int n = 2;
     for (const std::string& d : defines) a.emit("#define " + d, kGenerated, n++);
+    // The pipeline stage, from the entry's extension: shared files (lab_todo.glsl)
+    // offer fragment-only code such as gl_FragCoord to fragment shaders only.
+    const std::string ext = fs::path(entry).extension().string();
+    const char* stage = ext == ".vert"   ? "RAYLAB_VERTEX_SHADER"
+                        : ext == ".geom" ? "RAYLAB_GEOMETRY_SHADER"
+                        : ext == ".frag" ? "RAYLAB_FRAGMENT_SHADER"
+                                         : nullptr;
+    if (stage) a.emit(std::string("#define ") + stage, kGenerated, n++);
     // The constants GLSL and C++ share (shader_constants.h), then the caller's prelude.
     std::istringstream lines(shader::constantsGlsl() + prelude);
     for (std::string line; std::getline(lines, line);) a.emit(line, kGenerated, n++);

@@ -34,7 +34,9 @@ inline constexpr const char* kGlslVersionLine = "#version 330 core";
 // must be plain relative names inside the search path (no "..", no absolute
 // paths). Throws Error naming the including file and line on any problem.
 // The shared constants (shader_constants.h) follow the defines, then PRELUDE
-// (generated GLSL, e.g. a scene's constants).
+// (generated GLSL, e.g. a scene's constants). An entry ending in .vert, .geom
+// or .frag also gets RAYLAB_VERTEX_SHADER, RAYLAB_GEOMETRY_SHADER or
+// RAYLAB_FRAGMENT_SHADER defined.
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
                             const std::vector<std::string>& defines,
                             const std::string& prelude = {});

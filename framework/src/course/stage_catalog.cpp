@@ -25,7 +25,17 @@ const std::set<std::string> kKnownFeatures = {
     "textures",     // textures, sky box, glow
     "normal_maps",  //
     "color_modes",  // the seed's colour modes (Up/Down)
-    "demo",         // the stage `raylab demo` and `raylab bench` run
+    "demo",         // the stage `raylab demo` and `raylab bench` run (of its track)
+    // The fur track:
+    "mesh",        // a lit, textured triangle mesh (rasterised)
+    "shells",      // the fur as shells: the mesh drawn again and again, a layer further out
+    "fins",        // fins at silhouette edges from a geometry shader ("fins" program)
+    "fur_shader",  // strands from a geometry shader per triangle ("strands" program)
+};
+
+// The count checks a track's renderer can run (track_renderer.h).
+const std::set<std::string> kKnownCountChecks = {
+    "fin_count",  // fins the geometry shader emits = silhouette edges counted on the CPU
 };
 
 // Reads typed values out of one stage.json with "FILE: KEY: ..." errors.
@@ -59,12 +69,12 @@ struct StageReader : JsonReader {
         return obj.contains(key) ? read(obj[key], where + "." + key) : fallback;
     }
 
-    StageProgram program(const json& v) const {
-        allowOnly(v, "program", {"vertex", "geometry", "fragment"});
+    StageProgram program(const json& v, const std::string& where = "program") const {
+        allowOnly(v, where, {"vertex", "geometry", "fragment"});
         StageProgram p;
-        p.vertex = text(member(v, "program", "vertex"), "program.vertex");
-        if (v.contains("geometry")) p.geometry = text(v["geometry"], "program.geometry");
-        p.fragment = text(member(v, "program", "fragment"), "program.fragment");
+        p.vertex = text(member(v, where, "vertex"), where + ".vertex");
+        if (v.contains("geometry")) p.geometry = text(v["geometry"], where + ".geometry");
+        p.fragment = text(member(v, where, "fragment"), where + ".fragment");
         return p;
     }
 
@@ -94,7 +104,7 @@ struct StageReader : JsonReader {
     CheckView view(const json& v, const std::string& where) const {
         allowOnly(v, where,
                   {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps",
-                   "color_mode", "scene"});
+                   "color_mode", "scene", "shells", "fins", "technique"});
         CheckView c;
         c.name = text(member(v, where, "name"), where + ".name");
         c.why = text(member(v, where, "why"), where + ".why");
@@ -136,17 +146,24 @@ struct StageReader : JsonReader {
             c.colorMode = int(it - std::begin(kColorModes));
         }
         if (v.contains("scene")) c.scene = text(v["scene"], where + ".scene");
+        c.fins = b("fins", true);
+        c.shells = optional(v, where, "shells", 0, [&](const json& x, const std::string& k) {
+            int n = count(x, k);
+            if (n < 1 || n > RenderSettings::kMaxShells)
+                fail(k, "expected a shell count from 1 to " +
+                            std::to_string(RenderSettings::kMaxShells));
+            return n;
+        });
+        if (v.contains("technique")) {
+            const std::string t = text(v["technique"], where + ".technique");
+            auto it = std::find(std::begin(kFurTechniques), std::end(kFurTechniques), t);
+            if (it == std::end(kFurTechniques))
+                fail(where + ".technique", "expected shells_and_fins or fur_shader");
+            c.furTechnique = int(it - std::begin(kFurTechniques));
+        }
         return c;
     }
 };
-
-json parseFile(const fs::path& file, const std::string& shown) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error(shown + ": cannot read the file");
-    try {
-        return json::parse(in);
-    } catch (const json::exception& e) { throw Error(shown + ": not valid JSON: " + e.what()); }
-}
 
 // Kahn's order: a stage comes after the one it builds on; ties by id, so a
 // track reads in the order of its ids. Tracks follow their first stage's id.
@@ -210,11 +227,12 @@ std::string stageList() {
 StageInfo readStageFile(const fs::path& file) {
     const std::string shown = displayPath(file);
     StageReader r{{shown}};
-    const json doc = parseFile(file, shown);
+    const json doc = parseJsonFile(file, shown);
     if (!doc.is_object()) r.fail("(top level)", "expected an object");
     r.allowOnly(doc, "",
-                {"id", "title", "track", "builds_on", "scene", "program", "limits", "features",
-                 "function_checks", "mistakes", "check_views", "defines"});
+                {"id", "title", "track", "builds_on", "scene", "program", "programs", "limits",
+                 "features", "function_checks", "count_checks", "mistakes", "check_views",
+                 "defines"});
     StageInfo s;
     s.id = r.text(r.member(doc, "stage", "id"), "id");
     if (s.id != file.parent_path().filename().string())
@@ -227,6 +245,12 @@ StageInfo readStageFile(const fs::path& file) {
     if (s.buildsOn == s.id) r.fail("builds_on", "a stage cannot build on itself");
     s.scene = r.text(r.member(doc, "stage", "scene"), "scene");
     s.program = r.program(r.member(doc, "stage", "program"));
+    if (doc.contains("programs")) {
+        const json& more = doc["programs"];
+        if (!more.is_object()) r.fail("programs", "expected an object of named programs");
+        for (auto it = more.begin(); it != more.end(); ++it)
+            s.programs[it.key()] = r.program(it.value(), "programs." + it.key());
+    }
     s.limits = r.limits(r.member(doc, "stage", "limits"));
     const std::vector<std::string> features =
         r.strings(r.member(doc, "stage", "features"), "features");
@@ -240,6 +264,13 @@ StageInfo readStageFile(const fs::path& file) {
         s.features.insert(features[i]);
     }
     s.functionChecks = r.strings(r.member(doc, "stage", "function_checks"), "function_checks");
+    if (doc.contains("count_checks")) {
+        s.countChecks = r.strings(doc["count_checks"], "count_checks");
+        for (std::size_t i = 0; i < s.countChecks.size(); ++i)
+            if (!kKnownCountChecks.count(s.countChecks[i]))
+                r.fail("count_checks[" + std::to_string(i) + "]",
+                       "unknown count check '" + s.countChecks[i] + "' (known: fin_count)");
+    }
     s.mistakes = r.text(r.member(doc, "stage", "mistakes"), "mistakes");
     if (s.mistakes.is_absolute() || s.mistakes.lexically_normal().string().rfind("..", 0) == 0)
         r.fail("mistakes", "expected a folder inside the project, relative to its root");
@@ -286,17 +317,25 @@ const StageInfo& findStage(const std::string& idOrNumber) {
         const bool numberMatches = digits && !n.empty() && n.size() <= 3 &&
                                    n.find_first_not_of("0123456789") == std::string::npos &&
                                    std::stoi(idOrNumber) == std::stoi(n);
-        if (idOrNumber == s.id || numberMatches) return s;
+        if (idOrNumber == s.id || idOrNumber == n || numberMatches) return s;
     }
     throw Error("unknown stage '" + idOrNumber + "' (stages: " + stageList() + ")");
 }
 
-const StageInfo& demoStage() {
+const StageInfo& demoStage(const std::string& track) {
     const StageInfo* demo = nullptr;
     for (const StageInfo& s : allStages())
-        if (s.has("demo")) demo = &s;
-    if (!demo) throw Error("no stage has the \"demo\" feature (solution/*/stage.json)");
+        if (s.has("demo") && s.track == track) demo = &s;
+    if (!demo)
+        throw Error("no stage of track '" + track +
+                    "' has the \"demo\" feature (solution/*/stage.json)");
     return *demo;
+}
+
+std::vector<std::pair<std::string, const StageProgram*>> StageInfo::allPrograms() const {
+    std::vector<std::pair<std::string, const StageProgram*>> all = {{"program", &program}};
+    for (const auto& [name, p] : programs) all.emplace_back("programs." + name, &p);
+    return all;
 }
 
 }  // namespace raylab

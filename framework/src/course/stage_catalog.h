@@ -6,6 +6,7 @@
 #include "camera.h"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -25,6 +26,10 @@ struct CheckView {
     bool normalMaps = true;
     int colorMode = 0;
     std::string scene;  // empty: the stage's scene; else a file under assets/scenes/
+    // The fur track's switches (render_settings.h).
+    int shells = 0;  // 0: the scene's shell count
+    bool fins = true;
+    int furTechnique = 0;  // index into kFurTechniques
 };
 
 // The shader files a stage's program is built from (names on its search path).
@@ -54,9 +59,13 @@ struct StageInfo {
     std::string buildsOn;  // the stage whose files this one inherits; empty for none
     std::string scene;     // default scene, relative to assets/scenes/
     StageProgram program;
+    // More programs a track's renderer draws with, by name (the fur track's
+    // "fins" and "strands"); their files are the stage's like the main one's.
+    std::map<std::string, StageProgram> programs;
     StageLimits limits;
     std::set<std::string> features;           // see kKnownFeatures in stage_catalog.cpp
     std::vector<std::string> functionChecks;  // names of function checks (function_checks.h)
+    std::vector<std::string> countChecks;     // names of count checks (track_renderer.h)
     std::filesystem::path mistakes;  // the mistakes catalogue, relative to the project root
     std::vector<CheckView> checkViews;
     std::vector<std::string> extraDefines;  // besides the limits ("defines" in stage.json)
@@ -69,6 +78,8 @@ struct StageInfo {
     // GLSL has no empty arrays) and the extra defines.
     std::vector<std::string> defines() const;
     std::filesystem::path folder() const;  // solution/<id>
+    // The main program and the named ones, with their stage.json keys.
+    std::vector<std::pair<std::string, const StageProgram*>> allPrograms() const;
 };
 
 // Reads one stage.json. Throws Error("FILE: KEY: what is wrong").
@@ -77,10 +88,11 @@ StageInfo readStageFile(const std::filesystem::path& file);
 // Every stage, track by track, each track in `builds_on` order.
 const std::vector<StageInfo>& allStages();
 
-// Accepts "01-raycast", "01" or "1". Throws Error listing the stage ids.
+// Accepts "01-raycast", "01", "1", or "f2" for "f2-shells". Throws Error listing the stage ids.
 const StageInfo& findStage(const std::string& idOrNumber);
 
-// The stage `raylab demo` and `raylab bench` run: the last with the "demo" feature.
-const StageInfo& demoStage();
+// The stage `raylab demo` and `raylab bench` run for TRACK: its last stage
+// with the "demo" feature.
+const StageInfo& demoStage(const std::string& track = "raytrace");
 
 }  // namespace raylab

@@ -1,11 +1,10 @@
 #pragma once
 // What the framework asks of a track's renderer. Each course track (the ray
-// tracer; later the real-time fur track) draws its stages its own way, and a
-// new track adds a renderer (and a line in app/tracks.cpp) instead of
-// branching inside an existing one. Today the window (`raylab run`, the
-// demo's window) draws through this interface; headless rendering, the
-// checks, grading and the bench still make the ray tracer's StageRenderer
-// directly (see framework/README.md, "Add a track").
+// tracer, the real-time fur) draws its stages its own way, and a new track
+// adds a renderer (and a line in tracks/track_registry.cpp) instead of
+// branching inside an existing one. The window, headless rendering, the
+// checks and grading draw through this interface (framework/README.md,
+// "Add a track").
 #include "camera.h"
 #include "image.h"
 #include "pixel_format.h"
@@ -13,9 +12,18 @@
 #include "shader_source.h"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace raylab {
+
+// One view's result of a count check (stage.json "count_checks"): a number
+// the GPU produced, compared with the same number worked out on the CPU.
+struct CountResult {
+    bool applies = true;  // false: this view does not draw what is counted (fins off)
+    bool passed = false;
+    std::string detail;  // "the geometry shader emitted 212 fins; 212 edges are silhouettes"
+};
 
 class TrackRenderer {
 public:
@@ -26,6 +34,9 @@ public:
                         const RenderSettings& settings) = 0;
     // The last frame, as a picture, and its size.
     virtual Image read() const = 0;
+    // The last frame as RGBA floats, top row first (a float target keeps NaN
+    // and Inf, which grading must see).
+    virtual std::vector<float> readFloats() const = 0;
     virtual int width() const = 0;
     virtual int height() const = 0;
     // Copies the last frame to the window's screen, scaled to its size.
@@ -40,6 +51,11 @@ public:
     virtual const std::vector<std::filesystem::path>& sourceFiles() const = 0;
     // Stubs of the lab that are still unsolved (empty for the solution).
     virtual const std::vector<OpenTodo>& openTodos() const = 0;
+
+    // Runs the count check NAME for one view. Throws Error for a name this
+    // track does not know.
+    virtual CountResult countCheck(const std::string& name, const Camera& camera, float timeSeconds,
+                                   const RenderSettings& settings);
 };
 
 }  // namespace raylab

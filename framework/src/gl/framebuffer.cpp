@@ -27,10 +27,18 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+    // A depth buffer for the tracks that rasterise meshes (the ray tracer
+    // draws one canvas and leaves the depth test off).
+    glGenRenderbuffers(1, &depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &fbo_);
+        glDeleteRenderbuffers(1, &depth_);
         glDeleteTextures(1, &color_);
         throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
                     " framebuffer (status 0x" + std::to_string(status) + ")");
@@ -39,6 +47,7 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
 
 Framebuffer::~Framebuffer() {
     glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(1, &depth_);
     glDeleteTextures(1, &color_);
 }
 

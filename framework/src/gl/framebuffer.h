@@ -31,6 +31,7 @@ private:
     PixelFormat format_;
     GLuint fbo_ = 0;
     GLuint color_ = 0;
+    GLuint depth_ = 0;  // 24-bit depth renderbuffer
 };
 
 }  // namespace raylab

@@ -24,7 +24,10 @@ namespace {
     X(GetShaderInfoLog) X(GetShaderiv) X(GetUniformLocation) X(LinkProgram) X(ShaderSource)        \
     X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform3fv) X(Uniform4fv)                \
     X(Uniform1fv) X(Uniform1iv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)              \
-    X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)
+    X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)                            \
+    X(GenRenderbuffers) X(BindRenderbuffer) X(RenderbufferStorage) X(FramebufferRenderbuffer)      \
+    X(DeleteRenderbuffers) X(BlendFuncSeparate) X(GenQueries) X(BeginQuery) X(EndQuery)            \
+    X(GetQueryObjectui64v) X(DeleteQueries)
 // clang-format on
 
 bool allLoaded(std::string* missing) {

@@ -47,27 +47,37 @@ GLuint compile(GLenum kind, const ShaderSource& source) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment) {
-    GLuint vs = compile(GL_VERTEX_SHADER, vertex);
-    GLuint fs = 0;
+ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment)
+    : ShaderProgram(vertex, nullptr, fragment) {}
+
+ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
+                             const ShaderSource& fragment)
+    : ShaderProgram(vertex, &geometry, fragment) {}
+
+ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geometry,
+                             const ShaderSource& fragment) {
+    // Compiled in pipeline order, so the first error reported is the first
+    // a reader meets; what compiled is deleted when a later stage fails.
+    std::vector<GLuint> shaders;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, fragment);
+        shaders.push_back(compile(GL_VERTEX_SHADER, vertex));
+        if (geometry) shaders.push_back(compile(GL_GEOMETRY_SHADER, *geometry));
+        shaders.push_back(compile(GL_FRAGMENT_SHADER, fragment));
     } catch (...) {
-        glDeleteShader(vs);
+        for (GLuint sh : shaders) glDeleteShader(sh);
         throw;
     }
     id_ = glCreateProgram();
-    glAttachShader(id_, vs);
-    glAttachShader(id_, fs);
+    for (GLuint sh : shaders) glAttachShader(id_, sh);
     glLinkProgram(id_);
-    glDetachShader(id_, vs);
-    glDetachShader(id_, fs);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    for (GLuint sh : shaders) {
+        glDetachShader(id_, sh);
+        glDeleteShader(sh);
+    }
     GLint ok = GL_FALSE;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (!ok) {
-        std::string log = mapCompilerLog(infoLog(id_, true), fragment);
+        std::string log = mapCompilerLog(infoLog(id_, true), geometry ? *geometry : fragment);
         glDeleteProgram(id_);
         throw ShaderError("link error: " + firstErrorLine(log), log);
     }

@@ -1,5 +1,6 @@
 #pragma once
-// A linked GLSL program built from two assembled shaders. Compile and link
+// A linked GLSL program built from assembled shaders (vertex, optional
+// geometry, fragment). Compile and link
 // errors are reported with the students' file names and lines.
 #include "gl.h"
 #include "shader_source.h"
@@ -24,6 +25,9 @@ private:
 class ShaderProgram {
 public:
     ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment);
+    // With a geometry shader between them.
+    ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
+                  const ShaderSource& fragment);
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
@@ -33,6 +37,8 @@ public:
     GLint uniform(const std::string& name) const;
 
 private:
+    ShaderProgram(const ShaderSource& vertex, const ShaderSource* geometry,
+                  const ShaderSource& fragment);
     GLuint id_ = 0;
     mutable std::unordered_map<std::string, GLint> uniforms_;
 };

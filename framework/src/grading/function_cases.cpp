@@ -2,6 +2,8 @@
 // references follow the course's conventions exactly (T_MIN, NO_HIT = -1,
 // which side counts), so any disagreement is the student's (or float's).
 #include "function_checks.h"
+#include "function_compare.h"
+#include "fur_function_cases.h"
 
 #include "reference_intersect.h"
 #include "reference_shading.h"
@@ -22,13 +24,11 @@ using glm::dvec4;
 
 using reference::kNoHit;
 
-std::string num(double v) { return significant(v, 6); }
+std::string num(double v) { return caseNumber(v); }
 
 std::string hitText(double t) { return t < 0.0 ? "no hit" : "t = " + num(t); }
 
-bool finite(const dvec4& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
+bool finite(const dvec4& v) { return allFinite(v); }
 
 // Hit distances: hit or miss must agree (unless on the boundary), t within a
 // relative 1e-4 - float32 gives about 1e-7, a wrong formula far more.
@@ -44,21 +44,6 @@ std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& wan
     }
     if (gotHit && std::fabs(got.x - want.x) > 1e-4 * std::max(1.0, want.x))
         return c.label + ": expected " + hitText(want.x) + ", got " + hitText(got.x);
-    return "";
-}
-
-std::string compareVector(const FunctionCase& c, const dvec4& got, const dvec4& want,
-                          int components, double tolerance) {
-    if (!finite(got)) return c.label + ": got NaN or Inf";
-    for (int i = 0; i < components; ++i)
-        if (std::fabs(got[i] - want[i]) > tolerance) {
-            std::string g, w;
-            for (int j = 0; j < components; ++j) {
-                g += (j ? ", " : "") + num(got[j]);
-                w += (j ? ", " : "") + num(want[j]);
-            }
-            return c.label + ": expected (" + w + "), got (" + g + ")";
-        }
     return "";
 }
 
@@ -96,7 +81,7 @@ FunctionCase rayCase(std::string label, dvec3 o, dvec3 d, dvec4 a2, dvec4 a3 = d
 FunctionSpec sphereSpec() {
     FunctionSpec s;
     s.name = "intersectSphere";
-    s.includes = {"intersect_sphere.glsl"};
+    s.includes = {"ray.glsl", "intersect_sphere.glsl"};
     s.call = "vec4(intersectSphere(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 unit(0, 0, 0, 1);
     s.cases = {
@@ -131,7 +116,7 @@ FunctionSpec sphereSpec() {
 FunctionSpec planeSpec() {
     FunctionSpec s;
     s.name = "intersectPlane";
-    s.includes = {"intersect_plane.glsl"};
+    s.includes = {"ray.glsl", "intersect_plane.glsl"};
     s.call = "vec4(intersectPlane(Ray(a0.xyz, a1.xyz), a2.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 floor(0, 1, 0, 0);
     s.cases = {
@@ -156,7 +141,7 @@ FunctionSpec planeSpec() {
 FunctionSpec discSpec() {
     FunctionSpec s;
     s.name = "intersectDisc";
-    s.includes = {"intersect_plane.glsl", "intersect_disc.glsl"};
+    s.includes = {"ray.glsl", "intersect_plane.glsl", "intersect_disc.glsl"};
     s.call = "vec4(intersectDisc(Ray(a0.xyz, a1.xyz), a2.xyz, a3.xyz, a2.w), 0.0, 0.0, 1.0)";
     const dvec4 disc(0, 1, 0, 2.0), up(0, 1, 0, 0);
     s.cases = {
@@ -192,7 +177,7 @@ FunctionCase triangleCase(std::string label, dvec3 o, dvec3 d, dvec3 a, dvec3 b,
 FunctionSpec triangleSpec() {
     FunctionSpec s;
     s.name = "intersectTriangle";
-    s.includes = {"intersect_triangle.glsl"};
+    s.includes = {"ray.glsl", "intersect_triangle.glsl"};
     s.call = "vec4(intersectTriangle(Ray(a0.xyz, a1.xyz), vec3(a0.w, a1.w, a2.w), a2.xyz, a3.xyz), "
              "0.0, 0.0, 1.0)";
     const dvec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);  // counter-clockwise seen from +z
@@ -222,7 +207,7 @@ FunctionSpec triangleSpec() {
 FunctionSpec torusNormalSpec() {
     FunctionSpec s;
     s.name = "torusNormalLocal";
-    s.includes = {"scene_objects.glsl", "intersect_torus.glsl"};
+    s.includes = {"ray.glsl", "scene_objects.glsl", "intersect_torus.glsl"};
     s.call = "vec4(torusNormalLocal(a0.xyz, a0.w, a1.x), 1.0)";
     const double R = 1.0, r = 0.25;
     for (int i = 0; i < 12; ++i) {
@@ -250,7 +235,7 @@ FunctionSpec torusNormalSpec() {
 FunctionSpec fresnelDielectricSpec() {
     FunctionSpec s;
     s.name = "fresnelDielectric";
-    s.includes = {"fresnel.glsl"};
+    s.includes = {"ray.glsl", "fresnel.glsl"};
     s.call = "vec4(fresnelDielectric(a0.x, a0.y), 0.0, 0.0, 1.0)";
     for (double ior : {1.33, 1.5, 2.4})
         for (double cosine : {1.0, 0.9, 0.6, 0.3, 0.1, 0.0}) {
@@ -274,7 +259,7 @@ FunctionSpec fresnelDielectricSpec() {
 FunctionSpec fresnelConductorSpec() {
     FunctionSpec s;
     s.name = "fresnelConductor";
-    s.includes = {"fresnel.glsl"};
+    s.includes = {"ray.glsl", "fresnel.glsl"};
     s.call = "vec4(fresnelConductor(a0.x, a1.xyz, a2.xyz), 1.0)";
     const dvec3 goldN(0.143, 0.375, 1.442), goldK(3.983, 2.386, 1.603),
         silverN(0.155, 0.117, 0.135), silverK(4.83, 3.12, 2.15);
@@ -308,7 +293,7 @@ std::string compareUv(const FunctionCase& c, const dvec4& got, const dvec4& want
 FunctionSpec sphereUvSpec() {
     FunctionSpec s;
     s.name = "sphereUV";
-    s.includes = {"sphere_uv.glsl"};
+    s.includes = {"ray.glsl", "sphere_uv.glsl"};
     s.call = "vec4(sphereUV(a0.xyz), 0.0, 1.0)";
     const std::pair<const char*, dvec3> dirs[] = {
         {"+x (u = 0.5)", {1, 0, 0}},
@@ -342,7 +327,7 @@ FunctionSpec sphereUvSpec() {
 FunctionSpec planeUvSpec() {
     FunctionSpec s;
     s.name = "planeUV";
-    s.includes = {"plane_uv.glsl"};
+    s.includes = {"ray.glsl", "plane_uv.glsl"};
     s.call = "vec4(planeUV(a0.xyz, a1.xyz, a2.xyz, a2.w), 0.0, 1.0)";
     const dvec3 up(0, 1, 0), tilted = glm::normalize(dvec3(0.3, 0.2, 1.0));
     struct Row {
@@ -376,9 +361,14 @@ FunctionSpec planeUvSpec() {
 }  // namespace
 
 const std::vector<FunctionSpec>& functionSpecs() {
-    static const std::vector<FunctionSpec> specs = {
-        sphereSpec(),   fresnelDielectricSpec(), fresnelConductorSpec(), planeSpec(),  discSpec(),
-        triangleSpec(), torusNormalSpec(),       sphereUvSpec(),         planeUvSpec()};
+    static const std::vector<FunctionSpec> specs = [] {
+        std::vector<FunctionSpec> all = {
+            sphereSpec(), fresnelDielectricSpec(), fresnelConductorSpec(), planeSpec(),
+            discSpec(),   triangleSpec(),          torusNormalSpec(),      sphereUvSpec(),
+            planeUvSpec()};
+        for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));
+        return all;
+    }();
     return specs;
 }
 

@@ -26,7 +26,7 @@ struct FunctionCase {
 
 struct FunctionSpec {
     std::string name;                   // the GLSL function, e.g. "intersectSphere"
-    std::vector<std::string> includes;  // harness includes after ray.glsl and lab_todo.glsl
+    std::vector<std::string> includes;  // harness includes after lab_todo.glsl
     std::string call;                   // GLSL expression: a vec4 from a0..a3
     std::vector<FunctionCase> cases;
     std::function<glm::dvec4(const FunctionCase&)> reference;

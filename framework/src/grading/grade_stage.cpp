@@ -23,10 +23,6 @@ namespace {
 constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
 constexpr double kZeroCreditShare = 0.10;
 
-Scene stageScene(const StageInfo& stage) {
-    return loadScene(projectRoot() / "assets" / "scenes" / stage.scene);
-}
-
 std::string relativeTo(const fs::path& p, const fs::path& base) {
     return p.lexically_relative(base).generic_string();
 }
@@ -41,8 +37,7 @@ double imageCredit(double badShare, bool passed) {
 void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::path& outDir) {
     const fs::path dir = outDir / "reference" / stage.id;
     fs::create_directories(dir);
-    ViewRenderers renderers(stage, solutionSources(stage), stageScene(stage), "", kGradeWidth,
-                            kGradeHeight);
+    ViewRenderers renderers(stage, solutionSources(stage), "", kGradeWidth, kGradeHeight);
     for (const CheckView& view : gradingViews(stage, seed))
         writePngAtomic(renderers.render(view), dir / (view.name + ".png"));
 }
@@ -58,11 +53,26 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
     StageSources sources = labSources(stage, labRoot);
     const std::vector<CheckView> views = gradingViews(stage, seed);
     const auto functions = functionSpecsFor(stage);
-    const double imagePoints = functions.empty() ? 100.0 : kImagePoints;
+    const std::size_t otherChecks = functions.size() + stage.countChecks.size();
+    const double imagePoints = otherChecks == 0 ? 100.0 : kImagePoints;
 
+    std::vector<CheckResult> countResults;  // after the function checks in the report
     try {
-        ViewRenderers renderers(stage, sources, stageScene(stage), "", kGradeWidth, kGradeHeight);
+        ViewRenderers renderers(stage, sources, "", kGradeWidth, kGradeHeight);
         const CompareTolerance tolerance;
+        for (const std::string& name : stage.countChecks) {
+            CountOutcome c = runCountCheck(renderers, name, views);
+            CheckResult check;
+            check.name = c.name;
+            check.kind = "count";
+            check.maxScore = kFunctionPoints / double(otherChecks);
+            check.passed = c.total > 0 && c.passed == c.total;
+            check.score = c.total ? check.maxScore * double(c.passed) / double(c.total) : 0.0;
+            check.output = std::to_string(c.passed) + "/" + std::to_string(c.total) +
+                           " views agree" +
+                           (c.firstFailure.empty() ? "" : "; first failure: " + c.firstFailure);
+            countResults.push_back(check);
+        }
         for (const CheckView& view : views) {
             CheckResult check;
             check.name = view.name;
@@ -101,13 +111,14 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
         CheckResult check;
         check.name = f.name;
         check.kind = "function";
-        check.maxScore = kFunctionPoints / double(functions.size());
+        check.maxScore = kFunctionPoints / double(otherChecks);
         check.passed = f.passed == f.total;
         check.score = f.total ? check.maxScore * double(f.passed) / double(f.total) : 0.0;
         check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
                        (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure);
         result.checks.push_back(check);
     }
+    for (CheckResult& c : countResults) result.checks.push_back(std::move(c));
     for (const CheckResult& c : result.checks) result.score += c.score;
     result.score = std::round(result.score * 100.0) / 100.0;
     return result;

@@ -1,7 +1,8 @@
 #include "grade_views.h"
 
+#include "json_reader.h"
 #include "paths.h"
-#include "scene.h"
+#include "stage_setup.h"
 
 #include <cstdint>
 
@@ -25,7 +26,7 @@ struct SeededRandom {
 
 // The scene file's own camera (views without a pose use it).
 CameraPose sceneCamera(const std::string& sceneFile) {
-    return loadScene(projectRoot() / "assets" / "scenes" / sceneFile).camera;
+    return loadSceneCamera(stageSceneFile(sceneFile)).pose;
 }
 
 std::uint64_t stageHash(const std::string& id) {

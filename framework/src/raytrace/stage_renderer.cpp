@@ -82,8 +82,8 @@ void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<gl
 StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene scene, int width,
                              int height, PixelFormat format, std::string fragmentEntry,
                              ShaderVariant variant)
-    : stage_(stage), sources_(std::move(sources)), scene_(std::move(scene)),
-      target_(std::make_unique<Framebuffer>(width, height, format)), variant_(std::move(variant)),
+    : TargetRenderer(width, height, format), stage_(stage), sources_(std::move(sources)),
+      scene_(std::move(scene)), variant_(std::move(variant)),
       fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
     // The tracer draws one full-screen canvas: a geometry stage has no place in it.
     if (!stage_.program.geometry.empty())

@@ -10,8 +10,8 @@
 #include "shader_program.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
+#include "target_renderer.h"
 #include "texture.h"
-#include "track_renderer.h"
 
 #include "bvh_buffers.h"
 
@@ -39,7 +39,7 @@ struct ShaderVariant {
 
 // The ray-tracing track's renderer: a full-screen canvas whose fragment
 // shader traces the scene.
-class StageRenderer : public TrackRenderer {
+class StageRenderer : public TargetRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene, missing file) or
     // ShaderError (compile/link error, mapped to file:line).
@@ -51,16 +51,6 @@ public:
 
     void render(const Camera& camera, float timeSeconds,
                 const RenderSettings& settings = {}) override;
-    Image read() const override { return target_->read(); }
-    const Framebuffer& target() const { return *target_; }
-    int width() const override { return target_->width(); }
-    int height() const override { return target_->height(); }
-    void blitToScreen(int screenWidth, int screenHeight) const override {
-        target_->blitToScreen(screenWidth, screenHeight);
-    }
-    void resize(int width, int height, PixelFormat format = PixelFormat::Rgba8) override {
-        target_ = std::make_unique<Framebuffer>(width, height, format);
-    }
     const Scene& scene() const { return scene_; }
     const ShaderVariant& variant() const { return variant_; }
 
@@ -77,7 +67,6 @@ private:
     const StageInfo& stage_;
     StageSources sources_;
     Scene scene_;
-    std::unique_ptr<Framebuffer> target_;
     Canvas canvas_;
     std::unique_ptr<ShaderProgram> program_;
     std::unique_ptr<TextureArray> textures_;

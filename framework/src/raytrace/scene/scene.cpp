@@ -16,19 +16,6 @@ glm::vec3 Motion::offsetAt(float t) const {
 
 namespace {
 
-std::string lineColumn(const std::string& text, std::size_t byte) {
-    int line = 1, column = 1;
-    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 // The texture layer of an image file; files used twice share a layer.
 int textureLayer(Scene& scene, const std::filesystem::path& file) {
     auto it = std::find(scene.textures.begin(), scene.textures.end(), file);
@@ -128,34 +115,16 @@ Scene loadScene(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec))
         throw Error("scene file " + scene.file + " does not exist");
-    std::string text = readTextFile(file);
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw Error(scene.file + ": " + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) +
-                    ": JSON syntax error");
-    } catch (const json::out_of_range&) {
-        // nlohmann::json reports a number too large for a double ("1e500") as
-        // out_of_range (406), not parse_error: without this it escaped as a
-        // non-Error exception (found by tests/fuzz/fuzz_scene).
-        throw Error(scene.file + ": JSON number out of range (larger than a double can hold)");
-    }
+    const json doc = parseJsonFile(file, scene.file);
     SceneReader r{{scene.file}, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
     r.allowOnly(doc, "",
                 {"background", "camera", "materials", "lights", "spheres", "planes", "discs",
                  "triangles", "rectangles", "boxes", "tori", "sky_box", "glow"});
     scene.background = r.color(r.member(doc, "scene", "background"), "background");
-    const json& cam = r.member(doc, "scene", "camera");
-    r.allowOnly(cam, "camera", {"position", "yaw", "pitch", "fov_y"});
-    scene.camera.position = r.vec3(r.member(cam, "camera", "position"), "camera.position");
-    scene.camera.yawDeg = r.number(r.member(cam, "camera", "yaw"), "camera.yaw");
-    scene.camera.pitchDeg = r.number(r.member(cam, "camera", "pitch"), "camera.pitch");
-    if (cam.contains("fov_y")) {
-        scene.fovYDeg = r.positive(cam["fov_y"], "camera.fov_y");
-        if (scene.fovYDeg >= 170.0f) r.fail("camera.fov_y", "must be below 170 degrees");
-    }
+    const SceneCamera camera = readSceneCamera(r, doc);
+    scene.camera = camera.pose;
+    scene.fovYDeg = camera.fovYDeg;
     readMaterials(r, doc, scene);
     readLights(r, doc, scene);
     readShapes(r, doc, scene);

@@ -8,14 +8,10 @@
 
 namespace raylab {
 
-// The scene's own value kinds on top of JsonReader's.
+// JsonReader with the scene's folder, for the files a scene names.
 struct SceneReader : JsonReader {
     std::filesystem::path folder;  // relative paths in the file start here
 
-    float positive(const json& v, const std::string& where) const;
-    glm::vec3 vec3(const json& v, const std::string& where) const;
-    glm::vec3 direction(const json& v, const std::string& where) const;  // normalised, not zero
-    glm::vec3 color(const json& v, const std::string& where) const;
     // A file named relative to the scene's folder, which must exist.
     std::filesystem::path existingFile(const json& v, const std::string& where) const;
 };

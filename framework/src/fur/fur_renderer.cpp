@@ -1,0 +1,267 @@
+#include "fur_renderer.h"
+
+#include "error.h"
+#include "mesh_shapes.h"
+#include "obj_mesh.h"
+#include "paths.h"
+#include "silhouette.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <set>
+
+namespace raylab {
+
+namespace {
+
+// Texture units, as fur_uniforms.glsl binds its samplers.
+constexpr int kColorUnit = 0, kPatternUnit = 1, kFinUnit = 2;
+
+// The near plane is a small share of the distance to the mesh, so depth
+// keeps its precision at any camera distance the scenes use.
+constexpr float kNear = 0.02f, kFar = 200.0f;
+
+std::string stageFile(const StageInfo& stage) { return displayPath(stage.folder() / "stage.json"); }
+
+const StageProgram& namedProgram(const StageInfo& stage, const char* name, const char* feature) {
+    auto it = stage.programs.find(name);
+    if (it == stage.programs.end())
+        throw Error(stageFile(stage) + ": programs." + name + ": the feature \"" + feature +
+                    "\" needs this program");
+    return it->second;
+}
+
+// "Over" blending for the see-through layers. The frame's own alpha stays 1
+// (it is a picture, not a layer to composite): a PNG with alpha below 1
+// would show whatever is behind it in a viewer.
+void blendOver() {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+}
+
+}  // namespace
+
+Mesh loadFurMesh(const FurScene& scene) {
+    Mesh m = scene.mesh.obj.empty() ? makeShape(scene.mesh.shape, scene.mesh.detail)
+                                    : loadObjMesh(scene.mesh.obj);
+    validateMesh(m);
+    return m;
+}
+
+struct FurRenderer::Frame {
+    glm::mat4 model, view, projection;
+    glm::vec3 eye;
+    float time;
+    float furLength;
+    RenderSettings settings;
+};
+
+FurRenderer::FurRenderer(const StageInfo& stage, StageSources sources, FurScene scene, int width,
+                         int height, PixelFormat format)
+    : TargetRenderer(width, height, format), stage_(stage), sources_(std::move(sources)),
+      scene_(std::move(scene)) {
+    if (!stage_.has("mesh"))
+        throw Error(stageFile(stage_) + ": features: a fur stage needs the \"mesh\" feature");
+    colorMap_ = std::make_unique<Texture2D>(scene_.fur.colorMap);
+    pattern_ = std::make_unique<Texture2D>(scene_.fur.pattern);
+    finMap_ = std::make_unique<Texture2D>(scene_.fur.finMap);
+    GLint maxVertices = 0, maxComponents = 0;
+    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
+    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
+    if (stage_.has("fur_shader"))
+        budget_ = raylab::strandBudget(maxVertices, maxComponents, scene_.fur.strandSegments);
+    setMesh(loadFurMesh(scene_));
+    rebuild();
+}
+
+void FurRenderer::setMesh(Mesh mesh) {
+    validateMesh(mesh);
+    mesh_ = std::move(mesh);
+    adjacency_ = stage_.has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
+    buffers_ = std::make_unique<MeshBuffers>(mesh_, stage_.has("fins") ? &adjacency_ : nullptr);
+}
+
+void FurRenderer::rebuild() {
+    std::vector<std::string> defines = stage_.defines();
+    if (stage_.has("fur_shader"))
+        for (const std::string& d : budget_.defines()) defines.push_back(d);
+    const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
+    std::vector<std::filesystem::path> files;
+    std::vector<OpenTodo> todos;
+    std::set<std::pair<std::string, int>> seen;
+    auto assemble = [&](const std::string& entry) {
+        ShaderSource s = assembleShader(entry, search, defines);
+        files.insert(files.end(), s.files.begin(), s.files.end());
+        for (const OpenTodo& t : findOpenTodos(s))
+            if (seen.insert({t.file, t.line}).second) todos.push_back(t);
+        return s;
+    };
+    auto build = [&](const StageProgram& p) {
+        ShaderSource vertex = assemble(p.vertex);
+        ShaderSource fragment = assemble(p.fragment);
+        if (p.geometry.empty()) return std::make_unique<ShaderProgram>(vertex, fragment);
+        ShaderSource geometry = assemble(p.geometry);
+        return std::make_unique<ShaderProgram>(vertex, geometry, fragment);
+    };
+    // Built into locals first: a failure leaves the previous programs in use.
+    auto shells = build(stage_.program);
+    auto fins = stage_.has("fins") ? build(namedProgram(stage_, "fins", "fins")) : nullptr;
+    auto strands =
+        stage_.has("fur_shader") ? build(namedProgram(stage_, "strands", "fur_shader")) : nullptr;
+    shells_ = std::move(shells);
+    fins_ = std::move(fins);
+    strands_ = std::move(strands);
+    files_ = std::move(files);
+    todos_ = std::move(todos);
+}
+
+void FurRenderer::setUniforms(const ShaderProgram& p, const Frame& f) const {
+    p.use();
+    glUniformMatrix4fv(p.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(f.model));
+    glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, glm::value_ptr(f.view));
+    glUniformMatrix4fv(p.uniform("uProjection"), 1, GL_FALSE, glm::value_ptr(f.projection));
+    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(f.eye));
+    glUniform3fv(p.uniform("uLightDir"), 1, glm::value_ptr(scene_.lightDirection));
+    glUniform3fv(p.uniform("uLightColor"), 1, glm::value_ptr(scene_.lightColor));
+    glUniform3fv(p.uniform("uAmbient"), 1, glm::value_ptr(scene_.ambient));
+    glUniform1f(p.uniform("uFurLength"), f.furLength);
+    glUniform1f(p.uniform("uPatternScale"), scene_.fur.patternScale);
+    glUniform1f(p.uniform("uShadowIntensity"), scene_.fur.shadowIntensity);
+    const glm::vec3 gravity(0.0f, -scene_.fur.gravity, 0.0f);
+    glUniform3fv(p.uniform("uGravity"), 1, glm::value_ptr(gravity));
+    glUniform1f(p.uniform("uStrandDensity"), scene_.fur.strandDensity);
+    glUniform1f(p.uniform("uTime"), f.time);
+    glUniform1i(p.uniform("uColorMap"), kColorUnit);
+    glUniform1i(p.uniform("uPattern"), kPatternUnit);
+    glUniform1i(p.uniform("uFinMap"), kFinUnit);
+}
+
+void FurRenderer::drawSkinAndShells(const Frame& f, int shells) {
+    const ShaderProgram& p = *shells_;
+    setUniforms(p, f);
+    glUniform1i(p.uniform("uShellCount"), shells);
+    // Draw 0 is the skin: opaque, it writes depth so that what it hides
+    // stays hidden. The shells after it are see-through: blended in the
+    // order they are drawn, which must be from the skin outwards (the
+    // shell program's shellLayer() decides which layer draw i is). They
+    // test depth but do not write it, so a shell never hides the shells
+    // drawn after it (lab guide f2, "Why the order matters").
+    for (int i = 0; i < shells; ++i) {
+        if (i == 1) {
+            glDepthMask(GL_FALSE);
+            blendOver();
+        }
+        glUniform1i(p.uniform("uShellIndex"), i);
+        buffers_->drawTriangles();
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void FurRenderer::drawFins(const Frame& f) {
+    setUniforms(*fins_, f);
+    // Fins are thin quads seen from either side; blended like the shells.
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_FALSE);
+    blendOver();
+    buffers_->drawEdgesWithAdjacency();
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_CULL_FACE);
+}
+
+void FurRenderer::drawStrands(const Frame& f) {
+    setUniforms(*strands_, f);
+    buffers_->drawTriangles();
+}
+
+FurRenderer::Frame FurRenderer::frameFor(const Camera& camera, float timeSeconds,
+                                         const RenderSettings& settings) const {
+    const CameraPose& pose = camera.pose();
+    Frame f;
+    f.model = scene_.modelMatrix(timeSeconds);
+    f.view = glm::lookAt(pose.position, pose.position + camera.forward(), camera.up());
+    f.projection =
+        glm::perspective(glm::radians(camera.fovYDeg()),
+                         float(target_->width()) / float(target_->height()), kNear, kFar);
+    f.eye = pose.position;
+    f.time = timeSeconds;
+    f.furLength = scene_.fur.length * settings.furLength;
+    f.settings = settings;
+    return f;
+}
+
+void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
+    const Frame f = frameFor(camera, timeSeconds, settings);
+
+    target_->bind();
+    glClearColor(scene_.background.r, scene_.background.g, scene_.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);  // a shell at the skin (layer 0 again) still draws
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    colorMap_->bind(kColorUnit);
+    pattern_->bind(kPatternUnit);
+    finMap_->bind(kFinUnit);
+
+    const bool furShader = stage_.has("fur_shader") && settings.furTechnique == 1;
+    const int shells = !stage_.has("shells") || furShader
+                           ? 1
+                           : (settings.shells > 0 ? settings.shells : scene_.fur.shells);
+    drawSkinAndShells(f, shells);
+    if (furShader) drawStrands(f);
+    else if (stage_.has("fins") && settings.fins) drawFins(f);
+
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+long FurRenderer::countFins(const Camera& camera, float timeSeconds,
+                            const RenderSettings& settings) {
+    if (!fins_) throw Error("stage " + stage_.id + " draws no fins");
+    const Frame f = frameFor(camera, timeSeconds, settings);
+    target_->bind();
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    drawFins(f);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    GLuint64 primitives = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
+    glDeleteQueries(1, &query);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return long(primitives / 2);
+}
+
+CountResult FurRenderer::countCheck(const std::string& name, const Camera& camera,
+                                    float timeSeconds, const RenderSettings& settings) {
+    if (name != "fin_count") return TrackRenderer::countCheck(name, camera, timeSeconds, settings);
+    CountResult r;
+    r.applies = fins_ && settings.fins && settings.furTechnique == 0;
+    if (!r.applies) return r;
+    const long gpu = countFins(camera, timeSeconds, settings);
+    const SilhouetteCount cpu =
+        countSilhouettes(mesh_, adjacency_, glm::dmat4(scene_.modelMatrix(timeSeconds)),
+                         glm::dvec3(camera.pose().position));
+    r.passed = gpu >= cpu.certain && gpu <= cpu.certain + cpu.uncertain;
+    r.detail = "the geometry shader emitted " + std::to_string(gpu) + " fins for " +
+               std::to_string(adjacency_.edgeCount()) + " edges; " + std::to_string(cpu.certain) +
+               " edges are silhouettes" +
+               (cpu.uncertain ? " (and " + std::to_string(cpu.uncertain) +
+                                    " edge-on ones may count either way)"
+                              : "");
+    return r;
+}
+
+std::size_t FurRenderer::gpuBytes(int furTechnique) const {
+    auto texels = [](const Texture2D& t) { return std::size_t(t.width()) * t.height() * 4; };
+    std::size_t bytes = buffers_->bytes() + texels(*colorMap_) + texels(*pattern_);
+    if (furTechnique == 0) bytes += texels(*finMap_);
+    else bytes -= buffers_->adjacencyBytes() + texels(*pattern_);  // strands read neither
+    return bytes;
+}
+
+}  // namespace raylab

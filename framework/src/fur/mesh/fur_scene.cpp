@@ -1,0 +1,129 @@
+#include "fur_scene.h"
+
+#include "error.h"
+#include "json_reader.h"
+#include "mesh_shapes.h"
+#include "paths.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+struct FurSceneReader : JsonReader {
+    std::filesystem::path folder;
+
+    std::filesystem::path existingFile(const json& v, const std::string& where) const {
+        std::filesystem::path p = (folder / string(v, where)).lexically_normal();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(p, ec))
+            fail(where, "file " + displayPath(p) + " does not exist");
+        return p;
+    }
+    int integer(const json& v, const std::string& where, int lo, int hi) const {
+        if (!v.is_number_integer()) fail(where, "expected a whole number");
+        long long i = v.get<long long>();
+        if (i < lo || i > hi)
+            fail(where, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+        return int(i);
+    }
+    float within(const json& v, const std::string& where, float lo, float hi) const {
+        float f = number(v, where);
+        if (f < lo || f > hi)
+            fail(where, "must be between " + std::to_string(lo).substr(0, 6) + " and " +
+                            std::to_string(hi).substr(0, 6));
+        return f;
+    }
+};
+
+void readMesh(const FurSceneReader& r, const json& doc, FurScene& s) {
+    const json& m = r.member(doc, "scene", "mesh");
+    r.allowOnly(m, "mesh", {"shape", "detail", "obj"});
+    if (m.contains("obj") == m.contains("shape"))
+        r.fail("mesh", "give either \"shape\" (sphere, torus, cube) or \"obj\" (a file)");
+    if (m.contains("obj")) {
+        s.mesh.obj = r.existingFile(m["obj"], "mesh.obj");
+        return;
+    }
+    s.mesh.shape = r.string(m["shape"], "mesh.shape");
+    const auto& names = shapeNames();
+    if (std::find(names.begin(), names.end(), s.mesh.shape) == names.end())
+        r.fail("mesh.shape", "unknown shape '" + s.mesh.shape + "' (known: sphere, torus, cube)");
+    if (m.contains("detail")) s.mesh.detail = r.integer(m["detail"], "mesh.detail", 2, 512);
+}
+
+void readFur(const FurSceneReader& r, const json& doc, FurScene& s) {
+    const json& f = r.member(doc, "scene", "fur");
+    r.allowOnly(f, "fur",
+                {"length", "shells", "pattern_scale", "shadow_intensity", "color_map", "pattern",
+                 "fin_map", "gravity", "strand_density", "strand_segments"});
+    FurParameters& p = s.fur;
+    if (f.contains("length")) p.length = r.positive(f["length"], "fur.length");
+    if (f.contains("shells")) p.shells = r.integer(f["shells"], "fur.shells", 1, 256);
+    if (f.contains("pattern_scale"))
+        p.patternScale = r.positive(f["pattern_scale"], "fur.pattern_scale");
+    if (f.contains("shadow_intensity"))
+        p.shadowIntensity = r.within(f["shadow_intensity"], "fur.shadow_intensity", 0.0f, 1.0f);
+    p.colorMap = r.existingFile(r.member(f, "fur", "color_map"), "fur.color_map");
+    p.pattern = r.existingFile(r.member(f, "fur", "pattern"), "fur.pattern");
+    p.finMap = r.existingFile(r.member(f, "fur", "fin_map"), "fur.fin_map");
+    if (f.contains("gravity")) p.gravity = r.within(f["gravity"], "fur.gravity", 0.0f, 2.0f);
+    if (f.contains("strand_density"))
+        p.strandDensity = r.positive(f["strand_density"], "fur.strand_density");
+    if (f.contains("strand_segments"))
+        p.strandSegments = r.integer(f["strand_segments"], "fur.strand_segments", 1, 16);
+}
+
+}  // namespace
+
+glm::mat4 FurScene::modelMatrix(float timeSeconds) const {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
+    m = glm::rotate(m, glm::radians(rotateDeg.y + spinDegPerSecond * timeSeconds),
+                    glm::vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(rotateDeg.x), glm::vec3(1, 0, 0));
+    m = glm::rotate(m, glm::radians(rotateDeg.z), glm::vec3(0, 0, 1));
+    return glm::scale(m, scale);
+}
+
+FurScene loadFurScene(const std::filesystem::path& file) {
+    FurScene s;
+    s.file = displayPath(file);
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw Error("scene file " + s.file + " does not exist");
+    const json doc = parseJsonFile(file, s.file);
+    FurSceneReader r{{s.file}, file.parent_path()};
+    if (!doc.is_object()) r.fail("scene", "expected an object");
+    r.allowOnly(doc, "", {"background", "camera", "mesh", "transform", "light", "fur"});
+    s.background = r.color(r.member(doc, "scene", "background"), "background");
+    const SceneCamera camera = readSceneCamera(r, doc);
+    s.camera = camera.pose;
+    s.fovYDeg = camera.fovYDeg;
+    readMesh(r, doc, s);
+    if (doc.contains("transform")) {
+        const json& t = doc["transform"];
+        r.allowOnly(t, "transform", {"translate", "rotate", "scale", "spin"});
+        if (t.contains("translate")) s.translate = r.vec3(t["translate"], "transform.translate");
+        if (t.contains("rotate")) s.rotateDeg = r.vec3(t["rotate"], "transform.rotate");
+        if (t.contains("scale")) {
+            s.scale = r.vec3(t["scale"], "transform.scale");
+            for (int i = 0; i < 3; ++i)
+                if (!(s.scale[i] > 0.0f))
+                    r.fail("transform.scale", "every factor must be positive (a mirror would "
+                                              "turn the triangles inside out)");
+        }
+        if (t.contains("spin")) s.spinDegPerSecond = r.number(t["spin"], "transform.spin");
+    }
+    const json& l = r.member(doc, "scene", "light");
+    r.allowOnly(l, "light", {"direction", "color", "ambient"});
+    s.lightDirection = r.direction(r.member(l, "light", "direction"), "light.direction");
+    if (l.contains("color")) s.lightColor = r.color(l["color"], "light.color");
+    if (l.contains("ambient")) s.ambient = r.color(l["ambient"], "light.ambient");
+    readFur(r, doc, s);
+    return s;
+}
+
+}  // namespace raylab

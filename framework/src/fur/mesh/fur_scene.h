@@ -1,0 +1,55 @@
+#pragma once
+// A fur scene (assets/scenes/fur/*.json): one mesh with a transform, a
+// directional light, the camera, and the fur's parameters and textures.
+// The format is in assets/scenes/README.md, "Fur scenes".
+#include "camera.h"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace raylab {
+
+struct FurMeshSpec {
+    std::string shape;  // "sphere", "torus", "cube" (mesh_shapes.h); empty when obj is set
+    int detail = 16;
+    std::filesystem::path obj;  // an OBJ file (obj_mesh.h)
+};
+
+struct FurParameters {
+    float length = 0.2f;           // world units at scale 1 (along the normal)
+    int shells = 30;               // layers drawn, the skin included
+    float patternScale = 8.0f;     // pattern tiles per unit of texture coordinate
+    float shadowIntensity = 0.6f;  // darkening at the root: 1 - intensity * (1 - layer)
+    std::filesystem::path colorMap, pattern, finMap;
+    // The fur shader (stage f4): strands bend along gravity by up to this
+    // share of their length, per unit area there are `strandDensity` roots,
+    // and each strand has `strandSegments` line segments.
+    float gravity = 0.3f;
+    float strandDensity = 600.0f;
+    int strandSegments = 4;
+};
+
+struct FurScene {
+    std::string file;  // as shown in messages
+    glm::vec3 background{0.1f};
+    CameraPose camera;
+    float fovYDeg = 45.0f;
+    FurMeshSpec mesh;
+    // Model transform: scale, then rotate (x, y, z degrees in that order),
+    // then translate; `spin` turns the model about y by degrees per second.
+    glm::vec3 translate{0.0f}, rotateDeg{0.0f}, scale{1.0f};
+    float spinDegPerSecond = 0.0f;
+    glm::vec3 lightDirection{0.0f, 1.0f, 0.0f};  // toward the light, unit length
+    glm::vec3 lightColor{1.0f}, ambient{0.15f};
+    FurParameters fur;
+
+    // The model matrix at TIME seconds.
+    glm::mat4 modelMatrix(float timeSeconds) const;
+};
+
+// Throws Error("FILE: where: what") with the file and JSON path.
+FurScene loadFurScene(const std::filesystem::path& file);
+
+}  // namespace raylab

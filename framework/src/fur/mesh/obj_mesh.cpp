@@ -1,0 +1,95 @@
+#include "obj_mesh.h"
+
+#include "error.h"
+#include "paths.h"
+
+#include <tiny_obj_loader.h>
+
+#include <map>
+#include <tuple>
+
+namespace raylab {
+
+Mesh loadObjMesh(const std::filesystem::path& file) {
+    const std::string name = displayPath(file);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) throw Error(name + ": file does not exist");
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    config.mtl_search_path = "";  // no materials: a missing .mtl must not fail the mesh
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(file.string(), config)) {
+        std::string why = reader.Error();
+        while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+        throw Error(name + ": not a readable OBJ file (" +
+                    (why.empty() ? std::string("no reason given") : why) + ")");
+    }
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+
+    // Does every face corner name a normal / a texture coordinate?
+    bool allNormals = true, allUvs = true;
+    std::size_t corners = 0;
+    for (const tinyobj::shape_t& shape : reader.GetShapes())
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            ++corners;
+            allNormals = allNormals && i.normal_index >= 0;
+            allUvs = allUvs && i.texcoord_index >= 0;
+        }
+    if (corners == 0) throw Error(name + ": the file has no faces (f lines)");
+
+    Mesh mesh;
+    mesh.name = file.filename().string();
+    std::map<std::tuple<int, int, int>, std::uint32_t> vertexOf;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f)
+            if (shape.mesh.num_face_vertices[f] != 3)
+                throw Error(name + ": face " + std::to_string(f + 1) + " of '" + shape.name +
+                            "' could not be split into triangles");
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            const int n = allNormals ? i.normal_index : -1, t = allUvs ? i.texcoord_index : -1;
+            auto key = std::make_tuple(i.vertex_index, n, t);
+            auto it = vertexOf.find(key);
+            if (it == vertexOf.end()) {
+                const std::size_t v = std::size_t(i.vertex_index);
+                if (3 * v + 2 >= attrib.vertices.size())
+                    throw Error(name + ": a face names vertex " + std::to_string(v + 1) +
+                                ", which does not exist");
+                if (n >= 0 && 3 * std::size_t(n) + 2 >= attrib.normals.size())
+                    throw Error(name + ": a face names normal " + std::to_string(n + 1) +
+                                ", which does not exist");
+                if (t >= 0 && 2 * std::size_t(t) + 1 >= attrib.texcoords.size())
+                    throw Error(name + ": a face names texture coordinate " +
+                                std::to_string(t + 1) + ", which does not exist");
+                it = vertexOf.emplace(key, std::uint32_t(mesh.positions.size())).first;
+                mesh.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                            attrib.vertices[3 * v + 2]);
+                if (n >= 0)
+                    mesh.normals.emplace_back(attrib.normals[3 * std::size_t(n)],
+                                              attrib.normals[3 * std::size_t(n) + 1],
+                                              attrib.normals[3 * std::size_t(n) + 2]);
+                if (t >= 0)
+                    mesh.uvs.emplace_back(attrib.texcoords[2 * std::size_t(t)],
+                                          attrib.texcoords[2 * std::size_t(t) + 1]);
+            }
+            mesh.indices.push_back(it->second);
+        }
+    }
+    if (allNormals) {
+        // Normals as written may not be unit length; a zero one is recomputed.
+        bool zero = false;
+        for (glm::vec3& n : mesh.normals) {
+            float l = glm::length(n);
+            if (l > 0.0f) n /= l;
+            else zero = true;
+        }
+        if (zero) computeSmoothNormals(mesh);
+    } else {
+        computeSmoothNormals(mesh);
+    }
+    if (!allUvs) computeSphericalUvs(mesh);
+    validateMesh(mesh);
+    return mesh;
+}
+
+}  // namespace raylab

@@ -1,0 +1,34 @@
+#pragma once
+// The silhouette test of the fin shader, in double precision: the reference
+// for the function check of isSilhouette() and for the fin count check (the
+// number of fins the geometry shader emits for a mesh and a camera).
+#include "adjacency.h"
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+// dot(PB, N_abc) * dot(PB, N_bcd) with N_abc = cross(B - A, C - B) and
+// N_bcd = cross(D - B, C - B), PB = B - P (the seed's formulas). Negative:
+// one triangle faces the eye P and the other faces away.
+double silhouetteProduct(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                         const glm::dvec3& c, const glm::dvec3& d);
+
+// Is the product so close to zero that float rounding may decide its sign?
+// True when |product| is below 1e-4 of the product of the factors' bounds
+// (|PB| |N| for each); a float test of either answer is then right.
+bool silhouetteUncertain(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                         const glm::dvec3& c, const glm::dvec3& d);
+
+struct SilhouetteCount {
+    long certain = 0;    // edges that are silhouettes beyond doubt
+    long uncertain = 0;  // edges too close to edge-on to call
+};
+
+// Silhouette edges of ADJACENCY's edges of MESH placed by MODEL, seen from EYE
+// (world space): a correct fin shader emits between `certain` and
+// `certain + uncertain` fins.
+SilhouetteCount countSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency,
+                                 const glm::dmat4& model, const glm::dvec3& eye);
+
+}  // namespace raylab

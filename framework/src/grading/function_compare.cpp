@@ -1,0 +1,30 @@
+#include "function_compare.h"
+
+#include "text_format.h"
+
+#include <cmath>
+
+namespace raylab {
+
+std::string caseNumber(double v) { return significant(v, 6); }
+
+bool allFinite(const glm::dvec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+std::string compareVector(const FunctionCase& c, const glm::dvec4& got, const glm::dvec4& want,
+                          int components, double tolerance) {
+    if (!allFinite(got)) return c.label + ": got NaN or Inf";
+    for (int i = 0; i < components; ++i)
+        if (std::fabs(got[i] - want[i]) > tolerance) {
+            std::string g, w;
+            for (int j = 0; j < components; ++j) {
+                g += (j ? ", " : "") + caseNumber(got[j]);
+                w += (j ? ", " : "") + caseNumber(want[j]);
+            }
+            return c.label + ": expected (" + w + "), got (" + g + ")";
+        }
+    return "";
+}
+
+}  // namespace raylab

@@ -1,0 +1,95 @@
+#include "stage_setup.h"
+
+#include "error.h"
+#include "json_reader.h"
+#include "paths.h"
+#include "track_registry.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace raylab {
+
+namespace {
+
+// The index of VALUE in NAMES, or Error("FLAG must be one of ...").
+template <std::size_t N>
+int choice(const char* flag, const std::string& value, const char* const (&names)[N]) {
+    std::string all;
+    for (std::size_t i = 0; i < N; ++i) {
+        if (value == names[i]) return int(i);
+        all += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + names[i];
+    }
+    throw Error(std::string(flag) + " must be " + all + " (not '" + value + "')");
+}
+
+}  // namespace
+
+StageSetup resolveStageOptions(const StageOptions& o) {
+    StageSetup s;
+    if (o.labGiven && o.solution) throw Error("--lab and --solution exclude each other");
+    if (!std::isfinite(o.time) || std::fabs(o.time) > 1e6f)
+        throw Error("--time must be a finite number of seconds");
+    s.stage = &findStage(o.stage);
+    s.sources = o.solution
+                    ? solutionSources(*s.stage)
+                    : labSources(*s.stage, o.labDir.empty() ? defaultLabRoot()
+                                                            : std::filesystem::path(o.labDir));
+    s.size = parseSize(o.size);
+    s.sceneFile = o.scene.empty() ? stageSceneFile(s.stage->scene) : std::filesystem::path(o.scene);
+    if (s.stage->track == "raytrace") s.scene = loadScene(s.sceneFile);
+    else checkTrackScene(*s.stage, s.sceneFile);
+    s.camera = cameraFor(o.camera.empty() ? std::nullopt
+                                          : std::optional<CameraPose>(parseCamera(o.camera)),
+                         s.sceneFile);
+    s.time = o.time;
+    s.settings.shadows = !o.noShadows;
+    if (o.maxDepth < 1 || o.maxDepth > RenderSettings::kMaxDepth)
+        throw Error("--depth must be between 1 and 8");
+    s.settings.maxDepth = o.maxDepth;
+    s.settings.glow = !o.noGlow;
+    s.settings.normalMaps = !o.noNormalMaps;
+    s.settings.colorMode = choice("--color-mode", o.colorMode, kColorModes);
+    if (o.shells < 0 || o.shells > RenderSettings::kMaxShells)
+        throw Error("--shells must be between 1 and " + std::to_string(RenderSettings::kMaxShells));
+    s.settings.shells = o.shells;
+    if (!(o.furLength > 0.0f) || o.furLength > 10.0f)
+        throw Error("--fur-length must be a factor above 0 and at most 10");
+    s.settings.furLength = o.furLength;
+    s.settings.fins = !o.noFins;
+    s.settings.furTechnique = choice("--technique", o.technique, kFurTechniques);
+    return s;
+}
+
+std::string demoSceneFile(const std::string& name) {
+    if (name == "lite" || name == "pro")
+        return (projectRoot() / "assets" / "scenes" / (name + ".json")).string();
+    return name;
+}
+
+Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene) {
+    return Camera(pose ? *pose : scene.camera, scene.fovYDeg);
+}
+
+Camera cameraFor(const std::optional<CameraPose>& pose, const std::filesystem::path& sceneFile) {
+    const SceneCamera c = loadSceneCamera(sceneFile);
+    return Camera(pose ? *pose : c.pose, c.fovYDeg);
+}
+
+std::filesystem::path stageSceneFile(const std::string& name) {
+    return projectRoot() / "assets" / "scenes" / name;
+}
+
+void reportOpenTodos(const std::vector<OpenTodo>& todos) {
+    static bool reported = false;
+    if (todos.empty() || reported) return;
+    reported = true;
+    std::fprintf(stderr,
+                 "raylab: %zu open TODO%s in this lab (in colour frames their pixels show magenta "
+                 "stripes):\n",
+                 todos.size(), todos.size() == 1 ? "" : "s");
+    for (const OpenTodo& t : todos)
+        std::fprintf(stderr, "  %s:%d: %s\n", t.file.c_str(), t.line, t.title.c_str());
+}
+
+}  // namespace raylab

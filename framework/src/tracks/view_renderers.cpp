@@ -1,0 +1,61 @@
+#include "view_renderers.h"
+
+#include "stage_setup.h"
+#include "track_registry.h"
+
+namespace raylab {
+
+ViewRenderers::ViewRenderers(const StageInfo& stage, StageSources sources,
+                             std::string sceneOverride, int width, int height)
+    : stage_(stage), sources_(std::move(sources)), sceneOverride_(std::move(sceneOverride)),
+      width_(width), height_(height) {}
+
+std::filesystem::path ViewRenderers::sceneFileOf(const CheckView& view) const {
+    if (!sceneOverride_.empty()) return sceneOverride_;  // an override puts every view in its scene
+    return stageSceneFile(view.scene.empty() ? stage_.scene : view.scene);
+}
+
+TrackRenderer& ViewRenderers::forView(const CheckView& view) {
+    const std::string key = sceneFileOf(view).string();
+    auto it = byScene_.find(key);
+    if (it != byScene_.end()) return *it->second;
+    auto renderer = makeTrackRenderer(stage_, sources_, key, width_, height_, PixelFormat::Rgba32F,
+                                      RendererUse::Generic);
+    return *byScene_.emplace(key, std::move(renderer)).first->second;
+}
+
+RenderSettings settingsOf(const CheckView& view) {
+    RenderSettings s{view.shadows, view.maxDepth, view.glow, view.normalMaps, view.colorMode};
+    s.shells = view.shells;
+    s.fins = view.fins;
+    s.furTechnique = view.furTechnique;
+    return s;
+}
+
+Image ViewRenderers::render(const CheckView& view, long* nonFinite) {
+    TrackRenderer& r = forView(view);
+    r.render(cameraFor(view.pose, sceneFileOf(view)), view.time, settingsOf(view));
+    return imageFromFloats(r.readFloats(), r.width(), r.height(), nonFinite);
+}
+
+CountResult ViewRenderers::countCheck(const std::string& name, const CheckView& view) {
+    TrackRenderer& r = forView(view);
+    return r.countCheck(name, cameraFor(view.pose, sceneFileOf(view)), view.time, settingsOf(view));
+}
+
+CountOutcome runCountCheck(ViewRenderers& renderers, const std::string& name,
+                           const std::vector<CheckView>& views) {
+    CountOutcome out;
+    out.name = name;
+    for (const CheckView& view : views) {
+        CountResult r = renderers.countCheck(name, view);
+        if (!r.applies) continue;
+        ++out.total;
+        if (out.example.empty()) out.example = "view " + view.name + ": " + r.detail;
+        if (r.passed) ++out.passed;
+        else if (out.firstFailure.empty()) out.firstFailure = "view " + view.name + ": " + r.detail;
+    }
+    return out;
+}
+
+}  // namespace raylab

@@ -1,0 +1,16 @@
+// The matrix that carries normals from object space to world space.
+//
+// A normal is not a point: it must stay perpendicular to the surface. The
+// model matrix keeps it so under rotations and uniform scaling, but a
+// non-uniform scale (a sphere squashed into an ellipsoid) tilts it off the
+// surface. The inverse of the transpose of the model matrix's upper-left
+// 3x3 keeps it perpendicular (guide, section 3).
+#include "lab_todo.glsl"
+
+mat3 normalMatrix(mat4 model)
+{
+    // TODO(f1.b): return the inverse transpose of the upper-left 3x3 of MODEL.
+    // Checked by: raylab check --stage f1 (view "squashed").
+    labTodo();
+    return mat3(1.0);
+}

@@ -1,0 +1,13 @@
+// The matrix that carries normals from object space to world space.
+//
+// A normal is not a point: it must stay perpendicular to the surface. The
+// model matrix keeps it so under rotations and uniform scaling, but a
+// non-uniform scale (a sphere squashed into an ellipsoid) tilts it off the
+// surface. The inverse of the transpose of the model matrix's upper-left
+// 3x3 keeps it perpendicular (guide, section 3).
+#include "lab_todo.glsl"
+
+mat3 normalMatrix(mat4 model)
+{
+    return transpose(inverse(mat3(model)));
+}

@@ -1,0 +1,13 @@
+// How opaque a pixel of a shell is. PATTERN is the fur pattern's value here
+// (0: no hair, 1: a tall hair). The skin (layer 0) is opaque; above it a
+// shell keeps the hairs, fading out toward the tips, so short hairs end in
+// the lower shells and the coat thins out at the top.
+#include "lab_todo.glsl"
+
+float shellAlpha(float pattern, float layer)
+{
+    // TODO(f2.c): 1 for the skin; else pattern * (1 - layer).
+    // Checked by: raylab check --stage f2 (function shellAlpha, all views).
+    labTodo();
+    return 1.0;
+}

@@ -1,0 +1,56 @@
+// Stage f3: a fin on every silhouette edge. The framework draws the mesh's
+// edges as GL_LINES_ADJACENCY: each invocation gets four vertices, the edge
+// B-C (1 and 2) and the far corners A (0) and D (3) of its two triangles.
+// For a silhouette edge it emits one quad standing on the edge - the fur
+// seen from the side, where the shells show gaps between them.
+layout(lines_adjacency) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+#include "fur_uniforms.glsl"
+#include "lab_todo.glsl"
+#include "silhouette.glsl"
+
+in vec3 vWorldPos[];
+in vec3 vNormal[];
+in vec2 vUv[];
+flat in int vLabTodo[];
+
+out vec2 gFinUv;   // u along the edge, v from the root (0) to the tip (1)
+out vec2 gSkinUv;  // the mesh's texture coordinate (for the colour)
+out vec3 gNormal;  // world space
+out float gFade;   // 1 where the eye grazes the surface, less where it looks down on it
+flat out int gLabTodo;
+
+void corner(vec3 p, vec2 finUv, int vertex, float fade)
+{
+    gl_Position = uProjection * uView * vec4(p, 1.0);
+    gFinUv = finUv;
+    gSkinUv = vUv[vertex];
+    gNormal = vNormal[vertex];
+    gFade = fade;
+    gLabTodo = gLabTodoReached || vLabTodo[vertex] != 0 ? 1 : 0;
+    EmitVertex();
+}
+
+void main()
+{
+    vec3 a = vWorldPos[0], b = vWorldPos[1], c = vWorldPos[2], d = vWorldPos[3];
+    if (!isSilhouette(uEye, a, b, c, d)) return;
+
+    vec3 topB = b + vNormal[1] * uFurLength;
+    vec3 topC = c + vNormal[2] * uFurLength;
+
+    // A fin seen face-on looks like a flat card: fade it where the eye looks
+    // down on the surface, keep it where the view grazes it.
+    vec3 n = vNormal[1] + vNormal[2];
+    vec3 toEye = normalize(uEye - 0.5 * (b + c));
+    float fade = dot(n, n) > 1e-12 ? 1.0 - abs(dot(toEye, normalize(n))) : 1.0;
+    // The strands keep their proportions: one repeat of the fin texture per
+    // fur length along the edge.
+    float u = length(c - b) / uFurLength;
+    corner(b, vec2(0.0, 0.0), 1, fade);
+    corner(c, vec2(u, 0.0), 2, fade);
+    corner(topB, vec2(0.0, 1.0), 1, fade);
+    corner(topC, vec2(u, 1.0), 2, fade);
+    EndPrimitive();
+}

@@ -1,0 +1,9 @@
+// Fur is darker at its roots, where the hairs above shade it: the colour is
+// scaled by 1 - intensity * (1 - layer) - by 1 - intensity at the skin and
+// by 1 at the tips.
+#include "lab_todo.glsl"
+
+float shellShadow(float layer, float intensity)
+{
+    return 1.0 - intensity * (1.0 - layer);
+}

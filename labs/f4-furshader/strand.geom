@@ -1,0 +1,80 @@
+// Stage f4, the fur shader: strands grown from each triangle by a geometry
+// shader. The framework draws the mesh's triangles; each invocation gets one
+// triangle and writes its strands as line strips.
+//
+// A geometry shader must declare the most vertices it writes, and the driver
+// bounds that (GL_MAX_GEOMETRY_OUTPUT_VERTICES) and the vertices times their
+// components (GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS). The framework reads
+// both limits and defines STRANDS_PER_TRIANGLE and STRAND_SEGMENTS to fit
+// (guide, section 5, "The output budget").
+layout(triangles) in;
+layout(line_strip, max_vertices = STRAND_MAX_VERTICES) out;
+
+#include "fur_uniforms.glsl"
+#include "lab_todo.glsl"
+#include "strand_point.glsl"
+
+in vec3 vWorldPos[];
+in vec3 vNormal[];
+in vec2 vUv[];
+flat in int vLabTodo[];
+
+// 17 components per vertex with gl_Position: the framework's budget counts them.
+out vec3 gWorldPos;
+out vec3 gTangent;  // along the strand, toward the tip
+out vec3 gNormal;   // the skin's normal at the root
+out vec2 gUv;       // the skin's texture coordinate at the root
+out float gS;       // 0 at the root, 1 at the tip
+flat out int gLabTodo;
+
+// A number in [0, 1) from an integer, the same on every GPU (no sin()).
+float hash01(uint x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return float(x >> 8) / 16777216.0;
+}
+
+void main()
+{
+    vec3 a = vWorldPos[0], b = vWorldPos[1], c = vWorldPos[2];
+    float area = 0.5 * length(cross(b - a, c - a));
+    // Roots in proportion to the area, so that small and large triangles
+    // carry equally dense fur; the fraction becomes one more strand with
+    // that probability.
+    float jitter = hash01(uint(gl_PrimitiveIDIn));
+    int count = min(int(area * uStrandDensity + jitter), STRANDS_PER_TRIANGLE);
+    int todo = gLabTodoReached || vLabTodo[0] != 0 ? 1 : 0;
+    for (int i = 0; i < STRANDS_PER_TRIANGLE; ++i) {
+        if (i >= count) break;
+        // Well-spread points of the unit square (the R2 sequence), folded
+        // into the triangle.
+        vec2 r = fract(vec2(0.7548776662, 0.5698402910) * float(i + 1) + jitter);
+        if (r.x + r.y > 1.0) r = 1.0 - r;
+        vec3 w = vec3(1.0 - r.x - r.y, r.x, r.y);
+        vec3 root = w.x * a + w.y * b + w.z * c;
+        vec3 normal = normalize(w.x * vNormal[0] + w.y * vNormal[1] + w.z * vNormal[2]);
+        vec2 uv = w.x * vUv[0] + w.y * vUv[1] + w.z * vUv[2];
+        vec3 p = strandPoint(root, normal, 0.0, uFurLength, uGravity);
+        for (int k = 0; k <= STRAND_SEGMENTS; ++k) {
+            float s = float(k) / float(STRAND_SEGMENTS);
+            // The tangent points to the next point (the last one keeps the
+            // previous segment's direction).
+            vec3 next = strandPoint(root, normal, min(s + 1.0 / float(STRAND_SEGMENTS), 1.0),
+                                    uFurLength, uGravity);
+            if (k < STRAND_SEGMENTS) gTangent = next - p;
+            gl_Position = uProjection * uView * vec4(p, 1.0);
+            gWorldPos = p;
+            gNormal = normal;
+            gUv = uv;
+            gS = s;
+            gLabTodo = todo | (gLabTodoReached ? 1 : 0);
+            EmitVertex();
+            p = next;
+        }
+        EndPrimitive();
+    }
+}

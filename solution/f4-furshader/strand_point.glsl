@@ -1,0 +1,20 @@
+// A point of one strand of the fur shader. The strand grows from ROOT along
+// the surface's NORMAL and bends toward GRAVITY, more and more toward its
+// tip: at S (0 at the root, 1 at the tip) it is at
+//     root + furLength * (s * normal + s^2 * gravity).
+// (s^2: the weight of the hair beyond each point grows toward the root, so
+// a strand leaves the skin straight and droops at the end.)
+#include "lab_todo.glsl"
+
+vec3 strandPoint(vec3 root, vec3 normal, float s, float furLength, vec3 gravity)
+{
+    // TODO(f4.a): return the point above. NORMAL may not be unit length.
+    // Checked by: raylab check --stage f4 (function strandPoint, views
+    // "fur-shader", "fur-shader-side").
+    //@solution
+    return root + furLength * (s * normalize(normal) + s * s * gravity);
+    //@stub
+    //@ labTodo();
+    //@ return root + s * vec3(0.0, furLength, 0.0);  // until then: straight up
+    //@end
+}

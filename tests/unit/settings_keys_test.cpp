@@ -41,3 +41,28 @@ TEST(SettingsKeys, OtherKeysAreNotSettings) {
     EXPECT_FALSE(applySettingsKey(s, SDLK_p).has_value());  // pause belongs to the window's clock
     EXPECT_TRUE(s.shadows && s.glow && s.normalMaps && s.maxDepth == 8 && s.colorMode == 0);
 }
+
+TEST(SettingsKeys, FurKeysChangeShellsLengthFinsTechniqueAndMesh) {
+    RenderSettings s;
+    s.shells = 30;
+    EXPECT_EQ(applySettingsKey(s, SDLK_RIGHTBRACKET, "fur").value_or(""), "shells 31");
+    for (int i = 0; i < 40; ++i) applySettingsKey(s, SDLK_LEFTBRACKET, "fur");
+    EXPECT_EQ(s.shells, 1) << "at least the skin";
+    EXPECT_EQ(applySettingsKey(s, SDLK_EQUALS, "fur").value_or(""), "fur length x1.25");
+    for (int i = 0; i < 20; ++i) applySettingsKey(s, SDLK_MINUS, "fur");
+    EXPECT_FLOAT_EQ(s.furLength, 0.25f);
+    EXPECT_EQ(applySettingsKey(s, SDLK_f, "fur").value_or(""), "fins off");
+    EXPECT_EQ(applySettingsKey(s, SDLK_t, "fur").value_or(""), "technique fur_shader");
+    EXPECT_EQ(applySettingsKey(s, SDLK_t, "fur").value_or(""), "technique shells_and_fins");
+    for (const char* expected : {"sphere", "torus", "cube", "the scene's"})
+        EXPECT_EQ(applySettingsKey(s, SDLK_m, "fur").value_or(""), std::string("mesh ") + expected);
+}
+
+TEST(SettingsKeys, EachTrackHasOnlyItsOwnKeys) {
+    RenderSettings s;
+    EXPECT_FALSE(applySettingsKey(s, SDLK_g, "fur").has_value()) << "glow is the ray tracer's";
+    EXPECT_FALSE(applySettingsKey(s, SDLK_f, "raytrace").has_value()) << "fins are the fur's";
+    const auto rows = settingsRows(s, "fur");
+    ASSERT_EQ(rows.size(), 5u);
+    EXPECT_EQ(rows[2].first, "[F] fins");
+}

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "paths.h"
 #include "settings_keys.h"
+#include "shader_program.h"
 #include "track_registry.h"
 
 #include <algorithm>
@@ -27,6 +28,7 @@ void ViewerApp::init() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
     renderer_ = makeTrackRenderer(setup_, w, h);
+    renderer_->completeSettings(setup_.settings);
     reportOpenTodos(renderer_->openTodos());
     watcher_.watch(renderer_->sourceFiles());
     time_ = setup_.time;
@@ -113,7 +115,7 @@ void ViewerApp::onEvent(const SDL_Event& event) {
 }
 
 void ViewerApp::onKey(SDL_Keycode key) {
-    if (auto echo = applySettingsKey(setup_.settings, key)) {
+    if (auto echo = applySettingsKey(setup_.settings, key, setup_.stage->track)) {
         std::printf("%s\n", echo->c_str());
         std::fflush(stdout);
         return;
@@ -152,16 +154,12 @@ void ViewerApp::drawOverlay() {
     char frame[64];
     std::snprintf(frame, sizeof frame, "%.1f ms (%.0f FPS)", frameMs_,
                   frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
-    overlay_->draw("RayLab " + setup_.stage->id + " - " + setup_.scene.file,
-                   {{"frame", frame},
-                    {"[1] shadows", onOff(s.shadows)},
-                    {"[G] glow", onOff(s.glow)},
-                    {"[N] normal maps", onOff(s.normalMaps)},
-                    {"[Left/Right] max depth", std::to_string(s.maxDepth)},
-                    {"[Up/Down] colour mode", kColorModes[s.colorMode]},
-                    {"[V] vsync", onOff(vsync())},
-                    {"[P] animation", paused_ ? "paused" : "running"},
-                    {"[H] hide this panel", ""}});
+    std::vector<std::pair<std::string, std::string>> rows = {{"frame", frame}};
+    for (auto& row : settingsRows(s, setup_.stage->track)) rows.push_back(std::move(row));
+    rows.insert(rows.end(), {{"[V] vsync", onOff(vsync())},
+                             {"[P] animation", paused_ ? "paused" : "running"},
+                             {"[H] hide this panel", ""}});
+    overlay_->draw("RayLab " + setup_.stage->id + " - " + displayPath(setup_.sceneFile), rows);
 }
 
 }  // namespace raylab

@@ -20,6 +20,7 @@ struct RenderSettings {
     float furLength = 1.0f;  // keys - and =: a factor on the scene's fur length
     bool fins = true;        // key F, --no-fins (from stage f3 on)
     int furTechnique = 0;    // key T, --technique (stage f4): index into kFurTechniques
+    int furMesh = 0;         // key M: 0 for the scene's mesh, else procedural shape furMesh - 1
 };
 
 // The two ways to draw fur the fur track compares.

@@ -52,6 +52,10 @@ public:
     // Stubs of the lab that are still unsolved (empty for the solution).
     virtual const std::vector<OpenTodo>& openTodos() const = 0;
 
+    // Fills in what SETTINGS leaves to the scene (the fur's shell count), so
+    // that the window's keys start from the values on screen.
+    virtual void completeSettings(RenderSettings&) const {}
+
     // Runs the count check NAME for one view. Throws Error for a name this
     // track does not know.
     virtual CountResult countCheck(const std::string& name, const Camera& camera, float timeSeconds,

@@ -193,6 +193,15 @@ FurRenderer::Frame FurRenderer::frameFor(const Camera& camera, float timeSeconds
 }
 
 void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSettings& settings) {
+    if (settings.furMesh != meshShown_) {  // the window's mesh key
+        const std::vector<std::string>& shapes = shapeNames();
+        const int i = settings.furMesh;
+        setMesh(
+            i > 0 && i <= int(shapes.size())
+                ? makeShape(shapes[std::size_t(i - 1)], defaultDetail(shapes[std::size_t(i - 1)]))
+                : loadFurMesh(scene_));
+        meshShown_ = settings.furMesh;
+    }
     const Frame f = frameFor(camera, timeSeconds, settings);
 
     target_->bind();

@@ -42,6 +42,10 @@ public:
     const std::vector<std::filesystem::path>& sourceFiles() const override { return files_; }
     const std::vector<OpenTodo>& openTodos() const override { return todos_; }
 
+    void completeSettings(RenderSettings& settings) const override {
+        if (settings.shells == 0) settings.shells = scene_.fur.shells;
+    }
+
     // "fin_count": the fins the geometry shader emits (countFins) against
     // the silhouette edges counted in double precision (silhouette.h).
     CountResult countCheck(const std::string& name, const Camera& camera, float timeSeconds,
@@ -81,6 +85,7 @@ private:
     StrandBudget budget_;
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
+    int meshShown_ = 0;  // RenderSettings::furMesh of the mesh in buffers_
 };
 
 }  // namespace raylab

@@ -169,19 +169,19 @@ FunctionSpec silhouetteSpec() {
                     caseNumber(eye.y) + ", " + caseNumber(eye.z) + ")",
                 eye, sphere.positions[adj.indices[e]], sphere.positions[adj.indices[e + 1]],
                 sphere.positions[adj.indices[e + 2]], sphere.positions[adj.indices[e + 3]]));
-    s.reference = [](const FunctionCase& c) {
-        const dvec3 eye(c.in[0].w, c.in[1].w, c.in[2].w);
-        return dvec4(silhouetteProduct(eye, dvec3(c.in[0]), dvec3(c.in[1]), dvec3(c.in[2]),
-                                       dvec3(c.in[3])) < 0.0
+    s.reference = [](const FunctionCase& row) {
+        const dvec3 eye(row.in[0].w, row.in[1].w, row.in[2].w);
+        return dvec4(silhouetteProduct(eye, dvec3(row.in[0]), dvec3(row.in[1]), dvec3(row.in[2]),
+                                       dvec3(row.in[3])) < 0.0
                          ? 1.0
                          : 0.0,
                      0, 0, 1);
     };
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
-        if (!allFinite(got)) return c.label + ": got NaN or Inf";
+    s.compare = [](const FunctionCase& row, const dvec4& got, const dvec4& want) -> std::string {
+        if (!allFinite(got)) return row.label + ": got NaN or Inf";
         const bool g = got.x > 0.5, w = want.x > 0.5;
-        if (g == w || c.hitOrMiss) return "";
-        return c.label + ": expected " + (w ? "a silhouette" : "no silhouette") + ", got " +
+        if (g == w || row.hitOrMiss) return "";
+        return row.label + ": expected " + (w ? "a silhouette" : "no silhouette") + ", got " +
                (g ? "a silhouette" : "none");
     };
     return s;

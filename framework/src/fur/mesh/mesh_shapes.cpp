@@ -106,6 +106,10 @@ Mesh makeShape(const std::string& shape, int detail) {
     return m;
 }
 
+int defaultDetail(const std::string& shape) {
+    return shape == "cube" ? 8 : shape == "torus" ? 24 : 32;
+}
+
 int detailForTriangles(const std::string& shape, long triangles) {
     double t = double(std::max(1L, triangles));
     double d = shape == "cube"    ? std::sqrt(t / 12.0)

@@ -23,6 +23,9 @@ Mesh makeShape(const std::string& shape, int detail);
 // The shapes makeShape knows, for messages and the window's mesh key.
 const std::vector<std::string>& shapeNames();
 
+// The tessellation the demo scenes use for SHAPE (a few thousand triangles).
+int defaultDetail(const std::string& shape);
+
 // The detail that gives SHAPE about TRIANGLES triangles (the bench's series).
 int detailForTriangles(const std::string& shape, long triangles);
 

@@ -41,7 +41,8 @@ void main()
     // normals (vNormal[1], vNormal[2]) by the fur length. The vertex
     // normals, not the triangle's: neighbouring fins then meet at the top
     // as they do at the root.
-    // Checked by: raylab check --stage f3 (views "side", "grazing").
+    // Checked by: raylab check --stage f3 (view "coarse": on a low-poly ball
+    // the two normals differ most).
     labTodo();
     vec3 topB = b + vec3(0.0, uFurLength, 0.0);  // until then: straight up
     vec3 topC = c + vec3(0.0, uFurLength, 0.0);

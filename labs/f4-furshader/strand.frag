@@ -23,7 +23,8 @@ void main()
     // TODO(f4.c): light the strand with kajiyaKay(): a strand is a thin
     // cylinder, so its direction is the strand's tangent (gTangent, not yet
     // unit length), not the skin's normal.
-    // Checked by: raylab check --stage f4 (view "fur-shader").
+    // Checked by: raylab check --stage f4 (view "fur-shader-shaggy": long
+    // drooping strands, whose tangents are far from the skin's normal).
     labTodo();
     vec2 light = vec2(1.0, 0.0);
     // The hairs on the far side of the body are in its shadow.

@@ -41,7 +41,8 @@ void main()
     // normals (vNormal[1], vNormal[2]) by the fur length. The vertex
     // normals, not the triangle's: neighbouring fins then meet at the top
     // as they do at the root.
-    // Checked by: raylab check --stage f3 (views "side", "grazing").
+    // Checked by: raylab check --stage f3 (view "coarse": on a low-poly ball
+    // the two normals differ most).
     //@solution
     vec3 topB = b + vNormal[1] * uFurLength;
     vec3 topC = c + vNormal[2] * uFurLength;

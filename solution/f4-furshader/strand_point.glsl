@@ -2,15 +2,16 @@
 // the surface's NORMAL and bends toward GRAVITY, more and more toward its
 // tip: at S (0 at the root, 1 at the tip) it is at
 //     root + furLength * (s * normal + s^2 * gravity).
-// (s^2: the weight of the hair beyond each point grows toward the root, so
-// a strand leaves the skin straight and droops at the end.)
+// (s^2: the strand's direction, the derivative normal + 2 s gravity, is the
+// normal itself at the root and turns toward gravity along the way, so a
+// strand leaves the skin straight and droops toward its tip.)
 #include "lab_todo.glsl"
 
 vec3 strandPoint(vec3 root, vec3 normal, float s, float furLength, vec3 gravity)
 {
     // TODO(f4.a): return the point above. NORMAL may not be unit length.
-    // Checked by: raylab check --stage f4 (function strandPoint, views
-    // "fur-shader", "fur-shader-side").
+    // Checked by: raylab check --stage f4 (function strandPoint, view
+    // "fur-shader-shaggy").
     //@solution
     return root + furLength * (s * normalize(normal) + s * s * gravity);
     //@stub

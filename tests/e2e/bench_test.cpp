@@ -91,3 +91,35 @@ TEST(Bench, BadInputFailsBeforeMeasuringAndWritesNothing) {
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("cannot make this folder"), std::string::npos) << r.err;
 }
+
+TEST(Bench, FurQuickRunWritesCsvTablePlotAndTheTechniquesLimits) {
+    ScratchDir dir;
+    CommandResult r = runRaylab("bench --track fur --quick --out " + quote((dir / "out").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    auto rows = readCsv(dir / "out/fur.csv");
+    ASSERT_EQ(rows.size(), 4u) << readFile(dir / "out/fur.csv");
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("mesh"), "sphere");
+        EXPECT_GT(num(row, "triangles"), 100.0);
+        EXPECT_GT(num(row, "frame_ms"), 0.0);
+        EXPECT_GT(num(row, "buffer_bytes"), 0.0);
+        EXPECT_GT(num(row, "rss_bytes"), 1e6);
+        if (row.at("technique") == "shells_and_fins") {
+            // 16 shells against 64: close, but not the same picture.
+            EXPECT_GT(num(row, "rmse"), 0.0);
+            EXPECT_LT(num(row, "rmse"), 0.1);
+        } else {
+            EXPECT_EQ(row.at("technique"), "fur_shader");
+            EXPECT_EQ(row.at("rmse"), "") << "strands are no approximation of the shells";
+        }
+    }
+    const std::string md = readFile(dir / "out/fur.md");
+    EXPECT_NE(md.find("raylab bench --track fur --quick"), std::string::npos);
+    EXPECT_NE(md.find("GL_MAX_GEOMETRY_OUTPUT_VERTICES"), std::string::npos);
+    EXPECT_NE(md.find("fur shader / shells+fins"), std::string::npos);
+    EXPECT_EQ(readFile(dir / "out/fur.png").substr(0, 4), "\x89PNG");
+    r = runRaylab("bench --track fur --quick --scenes lite --out " +
+                  quote((dir / "other").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_FALSE(fs::exists(dir / "other"));
+}

@@ -117,3 +117,31 @@ TEST(Demo, ASceneWithMoreObjectsThanTheShaderSupportsIsRefused) {
               std::string::npos)
         << r.err;
 }
+
+TEST(Demo, FurTrackDrawsBothTechniquesOnEachSceneAndTimesThem) {
+    ScratchDir dir;
+    CommandResult r = demoIn(dir, "--track fur --headless --frames 2 --size 80x60 --scene torus "
+                                  "--out fur");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("torus"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("fur shader"), std::string::npos) << r.out;
+    const fs::path a = dir / "fur" / "torus-shells_and_fins-frame-001.png";
+    const fs::path b = dir / "fur" / "torus-fur_shader-frame-001.png";
+    ASSERT_TRUE(fs::exists(a) && fs::exists(b)) << r.all();
+    EXPECT_NE(readFile(a), readFile(b)) << "the two techniques draw different pictures";
+    EXPECT_EQ(entries(dir / "fur"), 4);
+}
+
+TEST(Demo, FurTrackRefusesABadSceneBeforeAnyFolderIsMade) {
+    ScratchDir dir;
+    writeFile(dir / "bad.json", "{\"background\": [0, 0, 0]}");
+    for (const std::string& scene : {std::string("nowhere"), (dir / "bad.json").string()}) {
+        CommandResult r = demoIn(dir, "--track fur --headless --scene " + quote(scene));
+        EXPECT_EQ(r.exitCode, 2) << r.all();
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_EQ(entries(dir.path()), 1) << "only bad.json: no output folder";
+    CommandResult r = demoIn(dir, "--track knitting --headless");
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("--track must be raytrace or fur"), std::string::npos) << r.err;
+}

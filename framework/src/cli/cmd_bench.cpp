@@ -166,6 +166,9 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
 }  // namespace
 
 int cmdBench(const BenchOptions& options) {
+    if (options.track == "fur") return cmdBenchFur(options);
+    if (options.track != "raytrace")
+        throw Error("--track must be raytrace or fur (not '" + options.track + "')");
     if (options.outDir.empty()) throw Error("--out DIR is required");
     const StageInfo& stage = demoStage();
     std::vector<std::string> scenes =
@@ -243,6 +246,10 @@ Command benchCommand() {
                                "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
                 cmd.add_option("--frames", bench->frames,
                                "timed frames per setting (default 5, quick 1)");
+                cmd.add_option("--track", bench->track,
+                               "raytrace (speed against error, bench.*) or fur (shells and fins "
+                               "against the fur shader, fur.*)")
+                    ->capture_default_str();
                 auto backend = std::make_shared<BackendOption>(cmd);
                 return std::function<int()>([=] {
                     bench->backend = backend->resolve();

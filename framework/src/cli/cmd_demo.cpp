@@ -50,6 +50,9 @@ std::string frameName(int i) {
 }  // namespace
 
 int cmdDemo(const DemoOptions& demo) {
+    if (demo.track == "fur") return cmdDemoFur(demo);
+    if (demo.track != "raytrace")
+        throw Error("--track must be raytrace or fur (not '" + demo.track + "')");
     const StageInfo& stage = demo.stage.empty() ? demoStage() : findStage(demo.stage);
     requireRayTracingStage(stage, "raylab demo --stage");
     StageOptions options;
@@ -114,7 +117,13 @@ Command demoCommand() {
                            "show this stage's solution (default: the highest finished stage)");
             cmd.add_option("--size", demo->size, "image size WIDTHxHEIGHT")->capture_default_str();
             cmd.add_option("--scene", demo->scene,
-                           "lite, pro or a scene file (default: the stage's scene)");
+                           "lite, pro or a scene file (default: the stage's scene); with --track "
+                           "fur: sphere, torus, cube, shaggy, coarse, squashed or a file (default: "
+                           "the first four)");
+            cmd.add_option("--track", demo->track,
+                           "raytrace (the full ray tracer) or fur (shells and fins against the fur "
+                           "shader)")
+                ->capture_default_str();
             cmd.add_option("--out", demo->outDir,
                            "folder for the headless frames (default: a new raylab-demo-SCENE-TIME "
                            "folder here)");

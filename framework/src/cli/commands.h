@@ -44,8 +44,10 @@ struct DemoOptions {
     int maxDepth = RenderSettings::kMaxDepth;
     bool noBvh = false;
     Backend backend = Backend::Auto;
+    std::string track = "raytrace";  // "fur": cmd_demo_fur.cpp
 };
 int cmdDemo(const DemoOptions& demo);
+int cmdDemoFur(const DemoOptions& demo);
 
 struct CheckOptions {
     std::string againstDir;  // compare with these PNGs instead of the live solution
@@ -78,9 +80,11 @@ struct BenchOptions {
     std::string size;                 // empty: 800x600 (quick: 160x120)
     int frames = 0;                   // timed frames per setting; 0: 5 (quick: 1)
     Backend backend = Backend::Auto;
-    std::string commandLine;  // for the report
+    std::string commandLine;         // for the report
+    std::string track = "raytrace";  // "fur": the fur track's bench (cmd_bench_fur.cpp)
 };
 int cmdBench(const BenchOptions& bench);
+int cmdBenchFur(const BenchOptions& bench);
 
 // The command line as typed ("raylab bench --out x"), for reports: the
 // arguments main() registered with rememberProgramArguments.

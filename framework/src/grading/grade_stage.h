@@ -6,13 +6,15 @@
 // Points (documented for students in every labs/<stage>/README.md, "How you
 // are graded"):
 //   - a stage is worth 100 points: 70 for the image checks and 30 for the
-//     function checks, shared equally (100 for images where a stage has no
-//     function checks);
+//     function and count checks, shared equally (100 for images where a
+//     stage has neither);
 //   - an image check that passes (at most 0.5% of pixels differ, the metric
 //     of `raylab check`) earns its points; one that fails earns half of them
 //     scaled down linearly to nothing at 10% of pixels differing; a view with
 //     NaN or Inf pixels earns nothing;
-//   - a function check earns the share of its cases that agree.
+//   - a function check earns the share of its cases that agree, a count
+//     check (stage.json "count_checks") the share of views that agree; both
+//     share the 30 points.
 #include "grade_result.h"
 #include "stage_catalog.h"
 

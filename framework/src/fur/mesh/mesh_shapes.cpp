@@ -19,14 +19,20 @@ void addTriangle(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 // A (columns+1) x (rows+1) grid of vertices from POINT(u, v) with u, v in
 // [0, 1]; NORMAL likewise. SKIP(row, column) leaves out one triangle of a
 // cell (the sphere's pole fans): 0 keeps both, 1 drops the first, 2 the second.
+// WRAPU / WRAPV: the shape closes along u / v, so the last column / row is
+// the first one again - computed from 0, not 1, so that the seam's vertices
+// share their positions exactly (sin(2 pi) is not 0 in floating point) and
+// adjacency finds the neighbours across it.
 template <class Point, class Normal, class Skip>
-void addGrid(Mesh& m, int columns, int rows, Point point, Normal normal, Skip skip) {
+void addGrid(Mesh& m, int columns, int rows, bool wrapU, bool wrapV, Point point, Normal normal,
+             Skip skip) {
     const std::uint32_t base = std::uint32_t(m.positions.size());
     for (int r = 0; r <= rows; ++r)
         for (int c = 0; c <= columns; ++c) {
             double u = double(c) / columns, v = double(r) / rows;
-            m.positions.push_back(glm::vec3(point(u, v)));
-            m.normals.push_back(glm::vec3(glm::normalize(normal(u, v))));
+            double pu = wrapU && c == columns ? 0.0 : u, pv = wrapV && r == rows ? 0.0 : v;
+            m.positions.push_back(glm::vec3(point(pu, pv)));
+            m.normals.push_back(glm::vec3(glm::normalize(normal(pu, pv))));
             m.uvs.push_back(glm::vec2(float(u), float(v)));
         }
     auto at = [&](int r, int c) { return base + std::uint32_t(r * (columns + 1) + c); };
@@ -42,6 +48,8 @@ Mesh sphere(int detail) {
     Mesh m;
     // u runs around (longitude), v from the south pole (v = 0) to the north.
     auto p = [](double u, double v) {
+        // The poles exactly: sin(pi) is not 0 in floating point either.
+        if (v <= 0.0 || v >= 1.0) return glm::dvec3(0.0, v <= 0.0 ? -1.0 : 1.0, 0.0);
         double phi = 2.0 * kPi * u, theta = kPi * v;
         return glm::dvec3(-std::sin(theta) * std::sin(phi), -std::cos(theta),
                           -std::sin(theta) * std::cos(phi));
@@ -49,7 +57,7 @@ Mesh sphere(int detail) {
     // Row 0 touches the south pole, the last row the north pole: each of
     // their quads has one real triangle and one of zero area, left out.
     const int rows = detail;
-    addGrid(m, 2 * detail, rows, p, p, [rows](int r) {
+    addGrid(m, 2 * detail, rows, true, false, p, p, [rows](int r) {
         return r == 0 ? 1 : r == rows - 1 ? 2 : 0;
     });
     return m;
@@ -67,7 +75,7 @@ Mesh torus(int detail) {
         return glm::dvec3(std::cos(b) * std::cos(a), std::sin(b), -std::cos(b) * std::sin(a));
     };
     auto p = [&](double u, double v) { return centre(u) + tube * n(u, v); };
-    addGrid(m, 2 * detail, detail, p, n, [](int) { return 0; });
+    addGrid(m, 2 * detail, detail, true, true, p, n, [](int) { return 0; });
     return m;
 }
 
@@ -81,7 +89,7 @@ Mesh cube(int detail) {
                  {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}}};
     for (const Face& f : faces)
         addGrid(
-            m, detail, detail,
+            m, detail, detail, false, false,
             [&](double u, double v) { return f.n + (2.0 * u - 1.0) * f.u + (2.0 * v - 1.0) * f.v; },
             [&](double, double) { return f.n; }, [](int) { return 0; });
     return m;

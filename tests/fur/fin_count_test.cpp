@@ -1,0 +1,86 @@
+// The fin count check: the fins the geometry shader emits (a
+// GL_PRIMITIVES_GENERATED query) against the silhouette edges counted in
+// double precision, on every procedural mesh from several cameras - and the
+// same check failing for a silhouette test with the wrong sign.
+#include "error.h"
+#include "fur_renderer.h"
+#include "mesh_shapes.h"
+#include "stage_setup.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace raylab;
+using namespace raylab::test;
+
+namespace {
+
+// Cameras around the mesh at several heights and distances.
+std::vector<Camera> cameras() {
+    std::vector<Camera> out;
+    for (int i = 0; i < 6; ++i) {
+        const float yaw = 60.0f * float(i) + 7.0f;
+        const float distance = 2.6f + 0.5f * float(i % 3);
+        const float height = -1.5f + 0.6f * float(i);
+        const float r = glm::radians(yaw);
+        CameraPose pose;
+        // Yaw 0 looks down -z: stand at +z of the origin rotated by yaw, look back.
+        pose.position = glm::vec3(-std::sin(r) * distance, height, std::cos(r) * distance);
+        pose.yawDeg = yaw;
+        pose.pitchDeg = glm::degrees(std::atan2(-height, distance));
+        out.emplace_back(pose, 45.0f);
+    }
+    return out;
+}
+
+const StageInfo& finStage() { return findStage("f3"); }
+
+FurScene sphereScene() { return loadFurScene(stageSceneFile("fur/sphere.json")); }
+
+}  // namespace
+
+TEST(FinCount, EqualsTheSilhouetteCountOnEveryShapeFromEveryCamera) {
+    ensureGlContext();
+    FurRenderer r(finStage(), solutionSources(finStage()), sphereScene(), 64, 48);
+    int checked = 0;
+    for (const std::string& shape : shapeNames())
+        for (int detail : {3, 12}) {
+            r.setMesh(makeShape(shape, detail));
+            for (const Camera& camera : cameras()) {
+                const CountResult c = r.countCheck("fin_count", camera, 0.7f, {});
+                ASSERT_TRUE(c.applies);
+                EXPECT_TRUE(c.passed) << shape << " " << detail << ": " << c.detail;
+                ++checked;
+            }
+        }
+    EXPECT_EQ(checked, 36);
+    std::printf("[ figure   ] fin count = CPU silhouette count in %d of %d mesh/camera pairs\n",
+                checked, checked);
+}
+
+TEST(FinCount, FailsForAWrongSignSilhouetteTest) {
+    ensureGlContext();
+    ScratchDir lab;
+    writeSolvedLabs(lab.path());
+    replaceInFile(lab / "f3-fins" / "silhouette.glsl", "dot(pb, nAbc) * dot(pb, nBcd) < 0.0",
+                  "dot(pb, nAbc) * dot(pb, nBcd) > 0.0");
+    FurRenderer r(finStage(), labSources(finStage(), lab.path()), sphereScene(), 64, 48);
+    for (const std::string& shape : shapeNames()) {
+        r.setMesh(makeShape(shape, 12));
+        for (const Camera& camera : cameras()) {
+            const CountResult c = r.countCheck("fin_count", camera, 0.0f, {});
+            EXPECT_FALSE(c.passed) << shape << ": " << c.detail;
+        }
+    }
+}
+
+TEST(FinCount, DoesNotApplyWithoutFins) {
+    ensureGlContext();
+    FurRenderer r(finStage(), solutionSources(finStage()), sphereScene(), 32, 24);
+    RenderSettings off;
+    off.fins = false;
+    EXPECT_FALSE(r.countCheck("fin_count", cameras()[0], 0.0f, off).applies);
+    EXPECT_THROW(r.countCheck("strand_count", cameras()[0], 0.0f, {}), Error);
+}

@@ -1,0 +1,72 @@
+// Fur scene files: the shipped ones load, and mistakes are one line that
+// names the file and the key.
+#include "error.h"
+#include "fur_scene.h"
+#include "paths.h"
+#include "strand_budget.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace raylab;
+using namespace raylab::test;
+
+TEST(FurScene, TheShippedScenesLoad) {
+    int n = 0;
+    for (const auto& entry : fs::directory_iterator(projectRoot() / "assets/scenes/fur"))
+        if (entry.path().extension() == ".json") {
+            EXPECT_NO_THROW(loadFurScene(entry.path())) << entry.path();
+            ++n;
+        }
+    EXPECT_GE(n, 4);
+}
+
+TEST(FurScene, MistakesNameFileAndKey) {
+    ScratchDir dir;
+    const std::string textures = (projectRoot() / "assets/textures").string();
+    auto scene = [&](const std::string& mesh, const std::string& fur) {
+        return "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 3], \"yaw\": 0, "
+               "\"pitch\": 0}, \"mesh\": " +
+               mesh + ", \"light\": {\"direction\": [0, 1, 0]}, \"fur\": {" + fur +
+               "\"color_map\": \"" + textures + "/fur_color.png\", \"pattern\": \"" + textures +
+               "/fur_pattern.png\", \"fin_map\": \"" + textures + "/fur_fin.png\"}}";
+    };
+    struct Case {
+        std::string mesh, fur, message;
+    } cases[] = {
+        {"{\"shape\": \"sphere\"}", "", ""},
+        {"{\"shape\": \"teapot\"}", "", "mesh.shape: unknown shape 'teapot'"},
+        {"{\"shape\": \"sphere\", \"obj\": \"x.obj\"}", "", "mesh: give either"},
+        {"{\"obj\": \"nowhere.obj\"}", "", "mesh.obj: file"},
+        {"{\"shape\": \"sphere\", \"detail\": 1}", "", "mesh.detail: must be between 2 and 512"},
+        {"{\"shape\": \"sphere\"}", "\"shells\": 0, ", "fur.shells: must be between 1 and 256"},
+        {"{\"shape\": \"sphere\"}", "\"length\": -1, ", "fur.length: expected a positive number"},
+        {"{\"shape\": \"sphere\"}", "\"lenght\": 1, ", "fur.lenght: unknown key"},
+        {"{\"shape\": \"sphere\"}", "\"shadow_intensity\": 2, ", "fur.shadow_intensity"},
+    };
+    for (const Case& c : cases) {
+        writeFile(dir / "s.json", scene(c.mesh, c.fur));
+        std::string got;
+        try {
+            loadFurScene(dir / "s.json");
+        } catch (const Error& e) { got = e.what(); }
+        if (c.message.empty()) {
+            EXPECT_EQ(got, "") << c.mesh;
+        } else {
+            EXPECT_NE(got.find("s.json: " + c.message), std::string::npos)
+                << got << "\nexpected: " << c.message;
+            EXPECT_EQ(got.find('\n'), std::string::npos);
+        }
+    }
+}
+
+TEST(StrandBudget, FitsTheDriversLimits) {
+    // The GL minimums: 256 vertices, 1024 components.
+    StrandBudget b = strandBudget(256, 1024, 4);
+    EXPECT_EQ(b.strandsPerTriangle, 1024 / (5 * kStrandVertexComponents));
+    EXPECT_LE(b.maxVertices() * kStrandVertexComponents, 1024);
+    EXPECT_LE(b.maxVertices(), 256);
+    // A generous driver is capped at what the course asks for.
+    EXPECT_EQ(strandBudget(4096, 1 << 20, 4).strandsPerTriangle, kStrandsWanted);
+    EXPECT_THROW(strandBudget(4, 1024, 8), Error);
+}

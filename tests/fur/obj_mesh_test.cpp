@@ -1,0 +1,74 @@
+// OBJ files through tinyobjloader: what is computed when missing, and
+// one-line errors for what cannot be read.
+#include "adjacency.h"
+#include "error.h"
+#include "obj_mesh.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace raylab;
+using namespace raylab::test;
+
+namespace {
+
+// A unit cube of six quads, without normals or texture coordinates.
+const char* kCube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+std::string message(const fs::path& file) {
+    try {
+        loadObjMesh(file);
+    } catch (const Error& e) { return e.what(); }
+    return "";
+}
+
+}  // namespace
+
+TEST(ObjMesh, QuadsAreSplitAndMissingNormalsAndUvsComputed) {
+    ScratchDir dir;
+    writeFile(dir / "cube.obj", kCube);
+    const Mesh m = loadObjMesh(dir / "cube.obj");
+    EXPECT_EQ(m.triangleCount(), 12u);
+    EXPECT_EQ(m.vertexCount(), 8u) << "one vertex per position when the file has no more";
+    // Smooth normals of a cube's corner point out of the corner (area-weighted
+    // over its triangles, of which a corner has one or two per face: not
+    // exactly along the diagonal).
+    for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+        const glm::vec3 out = glm::normalize(m.positions[i] - glm::vec3(0.5f));
+        EXPECT_GT(glm::dot(m.normals[i], out), 0.9f) << i;
+        for (int k = 0; k < 3; ++k) EXPECT_GT(m.normals[i][k] * out[k], 0.0f) << i;
+        EXPECT_GE(m.uvs[i].x, 0.0f);
+        EXPECT_LE(m.uvs[i].y, 1.0f);
+    }
+    const EdgeAdjacency adj = buildEdgeAdjacency(m);
+    EXPECT_EQ(adj.boundaryEdges, 0);
+    EXPECT_EQ(adj.interiorEdges, 18);
+}
+
+TEST(ObjMesh, NormalsAndUvsInTheFileAreKeptAndNormalised) {
+    ScratchDir dir;
+    writeFile(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 2\n"
+                               "f 1/1/1 2/2/1 3/3/1\n");
+    const Mesh m = loadObjMesh(dir / "tri.obj");
+    ASSERT_EQ(m.vertexCount(), 3u);
+    EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));
+    EXPECT_EQ(m.uvs[1], glm::vec2(1, 0));
+}
+
+TEST(ObjMesh, BadFilesGiveOneLineErrorsNamingTheFile) {
+    ScratchDir dir;
+    EXPECT_NE(message(dir / "missing.obj").find("missing.obj: file does not exist"),
+              std::string::npos);
+    writeFile(dir / "empty.obj", "# nothing\nv 0 0 0\n");
+    EXPECT_NE(message(dir / "empty.obj").find("empty.obj: the file has no faces"),
+              std::string::npos);
+    writeFile(dir / "bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    const std::string bad = message(dir / "bad-index.obj");
+    EXPECT_NE(bad.find("bad-index.obj"), std::string::npos) << bad;
+    EXPECT_EQ(bad.find('\n'), std::string::npos) << bad;
+    writeFile(dir / "no-normals.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//4 2//4 3//4\n");
+    const std::string normals = message(dir / "no-normals.obj");
+    EXPECT_NE(normals.find("no-normals.obj"), std::string::npos) << normals;
+    EXPECT_EQ(normals.find('\n'), std::string::npos) << normals;
+}

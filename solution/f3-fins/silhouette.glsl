@@ -14,7 +14,7 @@ bool isSilhouette(vec3 eye, vec3 a, vec3 b, vec3 c, vec3 d)
     // TODO(f3.a): compute both dot products and test the sign of their
     // product as above. A degenerate triangle (zero normal) is no silhouette.
     // Checked by: raylab check --stage f3 (function isSilhouette, the fin
-    // count, views "side" and "grazing").
+    // count, every view with fins).
     //@solution
     vec3 pb = b - eye;
     vec3 bc = c - b;

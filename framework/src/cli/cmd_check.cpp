@@ -31,8 +31,9 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     if (against.empty())
         references =
             std::make_unique<ViewRenderers>(stage, solutionSources(stage), options.scene, w, h);
-    reportOpenTodos(students.forView(stage.checkViews.front())
-                        .openTodos());  // a compile error stops here, before any output
+    const std::vector<OpenTodo> todos =
+        students.forView(stage.checkViews.front()).openTodos();  // a compile error stops here
+    reportOpenTodos(todos);
 
     const CompareTolerance tolerance;
     std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(),
@@ -66,8 +67,14 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 : "");
         if (!ok) {
             std::printf("       this view checks: %s\n", view.why.c_str());
-            std::string hint = diagnose(mine, expected, tolerance.channel);
+            std::string hint =
+                diagnose(mine, expected, tolerance.channel, stage.track == "raytrace");
             if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
+            // A fact, not a guess: unfinished stubs change the picture.
+            if (!todos.empty() && hint.find("unfinished TODO") == std::string::npos)
+                std::printf("       note: %zu TODO%s of this lab %s still open (listed above)\n",
+                            todos.size(), todos.size() == 1 ? "" : "s",
+                            todos.size() == 1 ? "is" : "are");
         }
     }
     int failed = int(stage.checkViews.size()) - passed;

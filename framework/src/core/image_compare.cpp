@@ -72,7 +72,8 @@ Image diffHeatMap(const Image& a, const Image& b) {
     return heat;
 }
 
-std::string diagnose(const Image& mine, const Image& expected, int channelTolerance) {
+std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
+                     bool rayTracerCauses) {
     if (mine.width != expected.width || mine.height != expected.height) return "";
     long differing = 0, darker = 0, brighter = 0, magenta = 0, expectedMagenta = 0;
     auto isMagenta = [](const std::uint8_t* p) { return p[0] > 150 && p[2] > 150 && p[1] < 110; };
@@ -98,11 +99,11 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
                " of the image: an unfinished TODO is reached";
     if (differing == 0) return "";
     if (darker >= differing * 8 / 10)
-        return percent(darker, differing) +
-               " of the differing pixels are too dark (light missing, or shadow acne?)";
+        return percent(darker, differing) + " of the differing pixels are too dark" +
+               (rayTracerCauses ? " (light missing, or shadow acne?)" : "");
     if (brighter >= differing * 8 / 10)
-        return percent(brighter, differing) + " of the differing pixels are too bright (light that "
-                                              "should be blocked or weighted?)";
+        return percent(brighter, differing) + " of the differing pixels are too bright" +
+               (rayTracerCauses ? " (light that should be blocked or weighted?)" : "");
     return "";
 }
 

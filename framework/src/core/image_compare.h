@@ -34,7 +34,10 @@ std::string describe(const ImageDiff& diff);
 // A hint at what is wrong, for students ("" when nothing stands out):
 // magenta TODO stripes, mostly too dark (missing light, acne), mostly too
 // bright, or a whole region of another colour.
-std::string diagnose(const Image& mine, const Image& expected, int channelTolerance);
+// RAYTRACERCAUSES adds the ray tracer's usual causes to the darker / brighter
+// hints ("light missing, or shadow acne?"); other tracks get the fact alone.
+std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
+                     bool rayTracerCauses = true);
 
 // A heat map of the per-pixel difference (black = equal, red = max), for reports.
 Image diffHeatMap(const Image& a, const Image& b);

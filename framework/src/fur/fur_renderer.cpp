@@ -32,12 +32,11 @@ const StageProgram& namedProgram(const StageInfo& stage, const char* name, const
     return it->second;
 }
 
-// "Over" blending for the see-through layers. The frame's own alpha stays 1
-// (it is a picture, not a layer to composite): a PNG with alpha below 1
-// would show whatever is behind it in a viewer.
+// "Over" blending for the see-through layers (the frame's own alpha is
+// masked off in render()).
 void blendOver() {
     glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 }
 
 }  // namespace
@@ -207,6 +206,10 @@ void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSe
     target_->bind();
     glClearColor(scene_.background.r, scene_.background.g, scene_.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // The frame is a picture: its alpha stays the clear's 1. The shaders'
+    // alpha drives blending and discard only (a skin drawn with alpha 0.3
+    // must not make a see-through PNG).
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);  // a shell at the skin (layer 0 again) still draws
     glEnable(GL_CULL_FACE);
@@ -223,6 +226,7 @@ void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSe
     if (furShader) drawStrands(f);
     else if (stage_.has("fins") && settings.fins) drawFins(f);
 
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -89,7 +89,9 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             if (nonFinite)
                 check.output = std::to_string(nonFinite) +
                                " pixels are NaN or Inf (shown magenta); " + check.output;
-            std::string hint = check.passed ? "" : diagnose(mine, expected, tolerance.channel);
+            std::string hint = check.passed ? ""
+                                            : diagnose(mine, expected, tolerance.channel,
+                                                       stage.track == "raytrace");
             if (!hint.empty()) check.output += "; " + hint;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
             writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));

@@ -30,9 +30,13 @@ bool silhouetteUncertain(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
     // Each dot product is computed in float from float inputs: its error is
     // a small multiple of float's epsilon times its bound. Either factor
     // near zero makes the sign of the product a coin toss.
+    // A factor that is exactly zero (a degenerate triangle, the eye on B)
+    // is zero in float too: no silhouette, beyond doubt.
     const double tolerance = 1e-4;
-    return std::fabs(f.first) <= tolerance * f.bound1 ||
-           std::fabs(f.second) <= tolerance * f.bound2;
+    auto nearZero = [&](double v, double bound) {
+        return bound > 0.0 && std::fabs(v) <= tolerance * bound;
+    };
+    return nearZero(f.first, f.bound1) || nearZero(f.second, f.bound2);
 }
 
 SilhouetteCount countSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency,

@@ -15,8 +15,10 @@ double silhouetteProduct(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
                          const glm::dvec3& c, const glm::dvec3& d);
 
 // Is the product so close to zero that float rounding may decide its sign?
-// True when |product| is below 1e-4 of the product of the factors' bounds
-// (|PB| |N| for each); a float test of either answer is then right.
+// True when a factor is within 1e-4 of its bound (|PB| |N|) but not exactly
+// zero; a float test of either answer is then right. A factor that is
+// exactly zero (a degenerate triangle, the eye on B) is zero in float too,
+// and the product is then certainly no silhouette.
 bool silhouetteUncertain(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                          const glm::dvec3& c, const glm::dvec3& d);
 

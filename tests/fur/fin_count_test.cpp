@@ -84,3 +84,22 @@ TEST(FinCount, DoesNotApplyWithoutFins) {
     EXPECT_FALSE(r.countCheck("fin_count", cameras()[0], 0.0f, off).applies);
     EXPECT_THROW(r.countCheck("strand_count", cameras()[0], 0.0f, {}), Error);
 }
+
+// An OBJ file without normals or texture coordinates (assets/meshes/blob.obj)
+// draws, closed, and its fins agree with the CPU like the procedural meshes'.
+TEST(FinCount, HoldsOnTheObjExample) {
+    ensureGlContext();
+    const FurScene scene = loadFurScene(stageSceneFile("fur/blob.json"));
+    FurRenderer r(finStage(), solutionSources(finStage()), scene, 64, 48);
+    EXPECT_EQ(r.adjacency().boundaryEdges, 0) << "the blob is closed";
+    EXPECT_GT(r.mesh().triangleCount(), 900u);
+    for (const Camera& camera : cameras()) {
+        const CountResult c = r.countCheck("fin_count", camera, 0.3f, {});
+        EXPECT_TRUE(c.passed) << c.detail;
+    }
+    r.render(Camera(scene.camera, scene.fovYDeg), 0.0f, {});
+    const Image image = r.read();
+    int coloured = 0;  // pixels brighter than the dark background: the blob
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) coloured += image.rgba[i] > 60;
+    EXPECT_GT(coloured, 64 * 48 / 10);
+}

@@ -47,6 +47,13 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
         boxes += std::string(i ? "," : "") +
                  "{\"center\": [0, 0, 0], \"size\": [1, 1, 1], \"color\": [1, 1, 1]}";
     writeFile(dir / "many-triangles.json", boxes + "], \"spheres\": []}");
+    const std::string textures = (sourceDir() / "assets/textures").string();
+    writeFile(dir / "fur-no-obj.json",
+              "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 3], \"yaw\": 0, "
+              "\"pitch\": 0}, \"mesh\": {\"obj\": \"nowhere.obj\"}, \"light\": {\"direction\": "
+              "[0, 1, 0]}, \"fur\": {\"color_map\": \"" +
+                  textures + "/fur_color.png\", \"pattern\": \"" + textures +
+                  "/fur_pattern.png\", \"fin_map\": \"" + textures + "/fur_fin.png\"}}");
     const BadCase cases[] = {
         {"unknown-stage", "--stage 42", "unknown stage '42'"},
         {"unknown-stage-name", "--stage 01-raytrace", "unknown stage '01-raytrace'"},
@@ -78,6 +85,24 @@ TEST(BadInput, EachIsAOneLineErrorWithNoOutputFile) {
         {"depth-nine", "--stage 04 --solution --depth 9", "--depth must be between 1 and 8"},
         {"backend", "--stage 01 --solution --backend vulkan", "unknown backend 'vulkan'"},
         {"both-lab-and-solution", "--stage 01 --solution --lab", "exclude each other"},
+        // The fur track.
+        {"fur-shells", "--stage f2 --solution --shells 999", "--shells must be between 1 and 256"},
+        {"fur-length", "--stage f2 --solution --fur-length 0", "--fur-length must be a factor"},
+        {"fur-technique", "--stage f4 --solution --technique knitting",
+         "--technique must be shells_and_fins or fur_shader (not 'knitting')"},
+        {"fur-stage-with-a-ray-tracing-scene",
+         "--stage f1 --solution --scene " + quote(sourceDir() / "assets/scenes/lite.json"),
+         "lite.json: scene: a ray-tracing scene (it has spheres or materials, no mesh)"},
+        {"ray-tracing-stage-with-a-fur-scene",
+         "--stage 01 --solution --scene " + quote(sourceDir() / "assets/scenes/fur/sphere.json"),
+         "sphere.json: scene: a fur scene (it has a mesh or fur)"},
+        {"fur-obj-missing", "--stage f3 --solution --scene " + quote(dir / "fur-no-obj.json"),
+         "mesh.obj: file"},
+        {"fur-debug-view", "--stage f1 --solution --view depth",
+         "stage f1-mesh is on the fur track: --view depth draws ray-tracing stages only"},
+        {"fur-reference", "--stage f2 --solution --reference",
+         "stage f2-shells is on the fur track: the reference tracer (--reference) draws "
+         "ray-tracing stages only"},
     };
     for (const BadCase& c : cases) expectCleanFailure(dir, c);
 }

@@ -34,28 +34,64 @@ std::string compareVec3(const FunctionCase& c, const dvec4& got, const dvec4& wa
     return compareVector(c, got, want, 3, 1e-5 * std::max(1.0, glm::length(dvec3(want))));
 }
 
-FunctionSpec shellLayerSpec() {
+// One row of a function of two numbers: its label and the numbers (a0.x, a0.y).
+struct TwoNumbers {
+    const char* label;
+    double x, y;
+};
+
+// A function of two numbers with a scalar result: FUNCTION(a0.x, a0.y), or
+// with ARGS as the GLSL arguments (shellLayer takes ints).
+FunctionSpec twoNumberSpec(const char* name, const char* file, const std::string& args,
+                           const std::vector<TwoNumbers>& rows,
+                           double (*reference)(double, double)) {
     FunctionSpec s;
-    s.name = "shellLayer";
-    s.includes = {"shell_layer.glsl"};
-    s.call = "vec4(shellLayer(int(a0.x), int(a0.y)), 0.0, 0.0, 1.0)";
-    const struct {
-        const char* label;
-        int draw, count;
-    } rows[] = {{"first of 30 draws: the skin", 0, 30},
-                {"second of 30", 1, 30},
-                {"middle of 30", 15, 30},
-                {"last of 30: the tips", 29, 30},
-                {"last of 2", 1, 2},
-                {"one shell: only the skin", 0, 1},
-                {"third of 4", 2, 4},
-                {"last of 256", 255, 256}};
-    for (const auto& r : rows) s.cases.push_back(row(r.label, dvec4(r.draw, r.count, 0, 0)));
-    s.reference = [](const FunctionCase& c) {
-        return dvec4(fur_reference::shellLayer(int(c.in[0].x), int(c.in[0].y)), 0, 0, 1);
+    s.name = name;
+    s.includes = {file};
+    s.call = "vec4(" + std::string(name) + "(" + args + "), 0.0, 0.0, 1.0)";
+    for (const TwoNumbers& r : rows) s.cases.push_back(row(r.label, dvec4(r.x, r.y, 0, 0)));
+    s.reference = [reference](const FunctionCase& c) {
+        return dvec4(reference(c.in[0].x, c.in[0].y), 0, 0, 1);
     };
     s.compare = compareScalar;
     return s;
+}
+
+FunctionSpec shellLayerSpec() {
+    return twoNumberSpec(
+        "shellLayer", "shell_layer.glsl", "int(a0.x), int(a0.y)",
+        {{"first of 30 draws: the skin", 0, 30},
+         {"second of 30", 1, 30},
+         {"middle of 30", 15, 30},
+         {"last of 30: the tips", 29, 30},
+         {"last of 2", 1, 2},
+         {"one shell: only the skin", 0, 1},
+         {"third of 4", 2, 4},
+         {"last of 256", 255, 256}},
+        [](double draw, double count) { return fur_reference::shellLayer(int(draw), int(count)); });
+}
+
+FunctionSpec shellAlphaSpec() {
+    return twoNumberSpec("shellAlpha", "shell_alpha.glsl", "a0.x, a0.y",
+                         {{"skin over a gap: opaque all the same", 0.0, 0.0},
+                          {"skin under a hair", 0.8, 0.0},
+                          {"a tall hair half way up", 1.0, 0.5},
+                          {"a short hair near the root", 0.4, 0.1},
+                          {"a gap half way up", 0.0, 0.5},
+                          {"the tips: nothing left", 0.9, 1.0},
+                          {"just above the skin", 0.6, 1.0 / 29.0}},
+                         fur_reference::shellAlpha);
+}
+
+FunctionSpec shellShadowSpec() {
+    return twoNumberSpec("shellShadow", "shell_shadow.glsl", "a0.x, a0.y",
+                         {{"skin, intensity 0.6", 0.0, 0.6},
+                          {"tips, intensity 0.6", 1.0, 0.6},
+                          {"half way, intensity 0.6", 0.5, 0.6},
+                          {"no shadow at all", 0.3, 0.0},
+                          {"full shadow at the skin", 0.0, 1.0},
+                          {"a quarter up, intensity 0.3", 0.25, 0.3}},
+                         fur_reference::shellShadow);
 }
 
 FunctionSpec shellOffsetSpec() {
@@ -79,48 +115,6 @@ FunctionSpec shellOffsetSpec() {
         return dvec4(fur_reference::shellOffset(dvec3(c.in[0]), c.in[1].x, c.in[1].y), 1);
     };
     s.compare = compareVec3;
-    return s;
-}
-
-FunctionSpec shellAlphaSpec() {
-    FunctionSpec s;
-    s.name = "shellAlpha";
-    s.includes = {"shell_alpha.glsl"};
-    s.call = "vec4(shellAlpha(a0.x, a0.y), 0.0, 0.0, 1.0)";
-    const struct {
-        const char* label;
-        double pattern, layer;
-    } rows[] = {{"skin over a gap: opaque all the same", 0.0, 0.0},
-                {"skin under a hair", 0.8, 0.0},
-                {"a tall hair half way up", 1.0, 0.5},
-                {"a short hair near the root", 0.4, 0.1},
-                {"a gap half way up", 0.0, 0.5},
-                {"the tips: nothing left", 0.9, 1.0},
-                {"just above the skin", 0.6, 1.0 / 29.0}};
-    for (const auto& r : rows) s.cases.push_back(row(r.label, dvec4(r.pattern, r.layer, 0, 0)));
-    s.reference = [](const FunctionCase& c) {
-        return dvec4(fur_reference::shellAlpha(c.in[0].x, c.in[0].y), 0, 0, 1);
-    };
-    s.compare = compareScalar;
-    return s;
-}
-
-FunctionSpec shellShadowSpec() {
-    FunctionSpec s;
-    s.name = "shellShadow";
-    s.includes = {"shell_shadow.glsl"};
-    s.call = "vec4(shellShadow(a0.x, a0.y), 0.0, 0.0, 1.0)";
-    const struct {
-        const char* label;
-        double layer, intensity;
-    } rows[] = {{"skin, intensity 0.6", 0.0, 0.6},     {"tips, intensity 0.6", 1.0, 0.6},
-                {"half way, intensity 0.6", 0.5, 0.6}, {"no shadow at all", 0.3, 0.0},
-                {"full shadow at the skin", 0.0, 1.0}, {"a quarter up, intensity 0.3", 0.25, 0.3}};
-    for (const auto& r : rows) s.cases.push_back(row(r.label, dvec4(r.layer, r.intensity, 0, 0)));
-    s.reference = [](const FunctionCase& c) {
-        return dvec4(fur_reference::shellShadow(c.in[0].x, c.in[0].y), 0, 0, 1);
-    };
-    s.compare = compareScalar;
     return s;
 }
 

@@ -97,6 +97,9 @@ FurScene loadFurScene(const std::filesystem::path& file) {
     const json doc = parseJsonFile(file, s.file);
     FurSceneReader r{{s.file}, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
+    if (!doc.contains("mesh") && (doc.contains("spheres") || doc.contains("materials")))
+        r.fail("scene", "a ray-tracing scene (it has spheres or materials, no mesh): fur stages "
+                        "draw fur scenes (assets/scenes/fur/)");
     r.allowOnly(doc, "", {"background", "camera", "mesh", "transform", "light", "fur"});
     s.background = r.color(r.member(doc, "scene", "background"), "background");
     const SceneCamera camera = readSceneCamera(r, doc);

@@ -118,6 +118,9 @@ Scene loadScene(const std::filesystem::path& file) {
     const json doc = parseJsonFile(file, scene.file);
     SceneReader r{{scene.file}, file.parent_path()};
     if (!doc.is_object()) r.fail("scene", "expected an object");
+    if (doc.contains("mesh") || doc.contains("fur"))
+        r.fail("scene", "a fur scene (it has a mesh or fur): ray-tracing stages draw ray-tracing "
+                        "scenes (assets/scenes/*.json)");
     r.allowOnly(doc, "",
                 {"background", "camera", "materials", "lights", "spheres", "planes", "discs",
                  "triangles", "rectangles", "boxes", "tori", "sky_box", "glow"});

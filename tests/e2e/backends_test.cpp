@@ -18,6 +18,11 @@ const std::string kFullView = "--stage 08 --solution --scene " +
                               quote((sourceDir() / "assets/scenes/pro.json").string()) +
                               " --size 96x72 --time 1.5";
 
+// The fur track: skin, shells, geometry-shader fins (glBlendFunc, depth
+// renderbuffer, GL_PRIMITIVES_GENERATED-free path), then the fur shader.
+const std::string kFurView = "--stage f4 --solution --size 96x72 --time 0.4";
+const std::string kFurShaderView = kFurView + " --technique fur_shader";
+
 raylab::Image render(const ScratchDir& dir, const std::string& backend,
                      const std::string& view = kView) {
     fs::path out = dir / (backend + ".png");
@@ -50,6 +55,31 @@ TEST(Backends, EglAndOsMesaAgreeOnTheFullTracerWithTextures) {
     raylab::Image egl = render(dir, "egl", kFullView), osmesa = render(dir, "osmesa", kFullView);
     EXPECT_EQ(egl.rgba, osmesa.rgba)
         << raylab::describe(raylab::compareImages(egl, osmesa, raylab::CompareTolerance{}.channel));
+}
+
+TEST(Backends, EglAndOsMesaAgreeOnTheFurTrack) {
+    for (const std::string& view : {kFurView, kFurShaderView}) {
+        ScratchDir dir;
+        raylab::Image egl = render(dir, "egl", view), osmesa = render(dir, "osmesa", view);
+        EXPECT_EQ(egl.rgba, osmesa.rgba) << view << ": "
+                                         << raylab::describe(raylab::compareImages(
+                                                egl, osmesa, raylab::CompareTolerance{}.channel));
+    }
+}
+
+TEST(Backends, FurWindowUnderXvfbGivesTheHeadlessImage) {
+    if (runCommand("command -v xvfb-run").exitCode != 0)
+        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
+    ScratchDir dir;
+    raylab::Image headless = render(dir, "egl", kFurView);
+    fs::path shot = dir / "window.png";
+    CommandResult r = runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + quote(RAYLAB_EXE) +
+                                 " run " + kFurView + " --frames 3 --screenshot " + quote(shot));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    raylab::Image window = raylab::loadPng(shot);
+    raylab::ImageDiff d =
+        raylab::compareImages(window, headless, raylab::CompareTolerance{}.channel);
+    EXPECT_EQ(d.maxDiff, 0) << raylab::describe(d);
 }
 
 TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) {

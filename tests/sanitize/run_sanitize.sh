@@ -4,7 +4,8 @@
 # then its unit and numerics tests and a few headless renders run there.
 #   run_sanitize.sh build  SOURCE_DIR BUILD_DIR   configure + build the needed targets
 #   run_sanitize.sh tests  SOURCE_DIR BUILD_DIR   ctest -L unit|numerics in that build
-#   run_sanitize.sh render SOURCE_DIR BUILD_DIR   raylab render --stage 01 / 08 (+ a debug view)
+#   run_sanitize.sh render SOURCE_DIR BUILD_DIR   raylab render --stage 01 / 08 (+ a debug view),
+#                                                 and the fur track's f3 lab and f4 fur shader
 # Every report (ASan, LeakSanitizer, UBSan) of every process, children
 # included, is written to BUILD_DIR/sanitizer-reports-STEP/; any file there
 # fails the step even if the process's exit code was swallowed (e.g. a test
@@ -75,6 +76,8 @@ case "$step" in
     "$bin/raylab" render --stage 01 --out "$out/stage01.png"
     "$bin/raylab" render --stage 08 --out "$out/stage08.png"
     "$bin/raylab" render --stage 05 --view depth --out "$out/stage05-depth.png"
+    "$bin/raylab" render --stage f3 --out "$out/f3.png"
+    "$bin/raylab" render --stage f4 --solution --technique fur_shader --out "$out/f4.png"
     ;;
   *) echo "run_sanitize.sh: unknown step '$step' (build, tests, render)" >&2; exit 2 ;;
 esac

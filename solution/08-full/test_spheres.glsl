@@ -1,10 +1,11 @@
 // The spheres along a ray, found through the BVH (see find_closest.glsl).
 // (Provided: nothing to do here.)
-// Node n: texel 2n = (box min, first), texel 2n + 1 = (box max, count). A
-// leaf (count > 0) holds the spheres uBvhItems[first .. first + count - 1];
-// an inner node (count 0) has its children at nodes first and first + 1.
-uniform samplerBuffer uBvhNodes;
-uniform isamplerBuffer uBvhItems;
+// The tree's nodes and items come from bvh_access.glsl: bvhNodeLow(n) is
+// (box min, first), bvhNodeHigh(n) (box max, count). A leaf (count > 0)
+// holds the spheres bvhItem(first) .. bvhItem(first + count - 1); an inner
+// node (count 0) has its children at nodes first and first + 1.
+#include "bvh_access.glsl"
+
 const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
 
 // Where the ray enters the box lo..hi (0 when it starts inside), or T_FAR
@@ -22,7 +23,7 @@ float enterBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax)
 
 float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
 {
-    return enterBox(origin, invDir, texelFetch(uBvhNodes, 2 * node).xyz, texelFetch(uBvhNodes, 2 * node + 1).xyz, tMax);
+    return enterBox(origin, invDir, bvhNodeLow(node).xyz, bvhNodeHigh(node).xyz, tMax);
 }
 
 // Walks the tree, keeping the nearest sphere hit closer than hit.t. With
@@ -39,12 +40,12 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
     int node = 0;
     if (enterNode(0, ray.origin, invDir, hit.t) == T_FAR) return;
     while (true) {
-        int first = int(texelFetch(uBvhNodes, 2 * node).w);
-        int count = int(texelFetch(uBvhNodes, 2 * node + 1).w);
+        int first = int(bvhNodeLow(node).w);
+        int count = int(bvhNodeHigh(node).w);
         bool descend = false;
         if (count > 0) {
             for (int k = 0; k < count; ++k) {
-                int i = texelFetch(uBvhItems, first + k).r;
+                int i = bvhItem(first + k);
                 keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
             }
             if (anyHit && hit.id >= 0) return;

@@ -1,5 +1,6 @@
 #include "view_renderers.h"
 
+#include "json_reader.h"
 #include "stage_setup.h"
 #include "track_registry.h"
 
@@ -32,15 +33,22 @@ RenderSettings settingsOf(const CheckView& view) {
     return s;
 }
 
+Camera ViewRenderers::cameraOf(const CheckView& view) {
+    const std::string key = sceneFileOf(view).string();
+    auto it = sceneCameras_.find(key);  // each scene file's camera is read once
+    if (it == sceneCameras_.end()) it = sceneCameras_.emplace(key, loadSceneCamera(key)).first;
+    return Camera(view.pose ? *view.pose : it->second.pose, it->second.fovYDeg);
+}
+
 Image ViewRenderers::render(const CheckView& view, long* nonFinite) {
     TrackRenderer& r = forView(view);
-    r.render(cameraFor(view.pose, sceneFileOf(view)), view.time, settingsOf(view));
+    r.render(cameraOf(view), view.time, settingsOf(view));
     return imageFromFloats(r.readFloats(), r.width(), r.height(), nonFinite);
 }
 
 CountResult ViewRenderers::countCheck(const std::string& name, const CheckView& view) {
     TrackRenderer& r = forView(view);
-    return r.countCheck(name, cameraFor(view.pose, sceneFileOf(view)), view.time, settingsOf(view));
+    return r.countCheck(name, cameraOf(view), view.time, settingsOf(view));
 }
 
 CountOutcome runCountCheck(ViewRenderers& renderers, const std::string& name,

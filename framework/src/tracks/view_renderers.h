@@ -3,6 +3,7 @@
 // track per scene the views of a stage use (most views use the stage's
 // scene; some name another), built when first needed, drawing into float
 // targets so that a NaN is seen rather than turned black.
+#include "json_reader.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 #include "track_renderer.h"
@@ -37,11 +38,15 @@ public:
     CountResult countCheck(const std::string& name, const CheckView& view);
 
 private:
+    // VIEW's camera: its pose, or its scene file's camera.
+    Camera cameraOf(const CheckView& view);
+
     const StageInfo& stage_;
     StageSources sources_;
     std::string sceneOverride_;
     int width_, height_;
     std::map<std::string, std::unique_ptr<TrackRenderer>> byScene_;
+    std::map<std::string, SceneCamera> sceneCameras_;
 };
 
 // A count check over several views: how many of the views it applies to agree.

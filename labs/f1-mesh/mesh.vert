@@ -17,12 +17,13 @@ void main()
 {
     // TODO(f1.a): place the vertex. uModel takes a point from object space
     // to world space, uView from world space to the camera's, uProjection
-    // from the camera's to clip space. Set vWorldPos (world space) and
-    // gl_Position (clip space); a point is vec4(p, 1.0).
+    // from the camera's to clip space. Set world (the point in world space)
+    // and gl_Position (clip space); a point is vec4(p, 1.0).
     // Checked by: raylab check --stage f1 (all views).
     labTodo();
-    vWorldPos = aPosition;
+    vec4 world = vec4(aPosition, 1.0);
     gl_Position = vec4(0.5 * aPosition.xy, 0.0, 1.0);
+    vWorldPos = world.xyz;
     vNormal = normalMatrix(uModel) * aNormal;
     vUv = aUv;
     vLabTodo = gLabTodoReached ? 1 : 0;

@@ -73,7 +73,11 @@ Image diffHeatMap(const Image& a, const Image& b) {
 }
 
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
-                     bool rayTracerCauses) {
+                     bool rayTracerCauses, long nonFinite) {
+    if (nonFinite > 0)
+        return std::to_string(nonFinite) +
+               " pixels are NaN or Inf (the magenta ones): in GLSL, sqrt() or pow() of a "
+               "negative number, normalize() of a zero vector and 0/0 give NaN";
     if (mine.width != expected.width || mine.height != expected.height) return "";
     long differing = 0, darker = 0, brighter = 0, magenta = 0, expectedMagenta = 0;
     auto isMagenta = [](const std::uint8_t* p) { return p[0] > 150 && p[2] > 150 && p[1] < 110; };
@@ -94,6 +98,20 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
     auto percent = [&](long n, long of) {
         return std::to_string(int(100.0 * double(n) / double(std::max(1L, of)) + 0.5)) + "%";
     };
+    // One flat colour where the reference has a picture: nothing was drawn.
+    long flat = 0, expectedFlat = 0;
+    const std::uint8_t *m0 = mine.pixel(0, 0), *e0 = expected.pixel(0, 0);
+    auto near = [&](const std::uint8_t* p, const std::uint8_t* q) {
+        return std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])}) <=
+               channelTolerance;
+    };
+    for (int y = 0; y < mine.height; ++y)
+        for (int x = 0; x < mine.width; ++x) {
+            flat += near(mine.pixel(x, y), m0);
+            expectedFlat += near(expected.pixel(x, y), e0);
+        }
+    if (flat >= all * 99 / 100 && expectedFlat < all * 95 / 100)
+        return "the picture is one flat colour: nothing was drawn over the background";
     if (magenta > expectedMagenta + all / 100)
         return "magenta stripes on " + percent(magenta, all) +
                " of the image: an unfinished TODO is reached";

@@ -31,13 +31,15 @@ bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol);
 // "0.12% of pixels differ (max 37/255)"
 std::string describe(const ImageDiff& diff);
 
-// A hint at what is wrong, for students ("" when nothing stands out):
-// magenta TODO stripes, mostly too dark (missing light, acne), mostly too
-// bright, or a whole region of another colour.
+// A hint at what is wrong, for students ("" when nothing stands out): a
+// picture of one flat colour (nothing drawn), magenta TODO stripes, mostly
+// too dark (missing light, acne), mostly too bright.
 // RAYTRACERCAUSES adds the ray tracer's usual causes to the darker / brighter
 // hints ("light missing, or shadow acne?"); other tracks get the fact alone.
+// NONFINITE: the NaN/Inf pixels of MINE (drawn magenta like TODO stripes):
+// when there are any, the hint is about them.
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
-                     bool rayTracerCauses = true);
+                     bool rayTracerCauses = true, long nonFinite = 0);
 
 // A heat map of the per-pixel difference (black = equal, red = max), for reports.
 Image diffHeatMap(const Image& a, const Image& b);

@@ -238,6 +238,20 @@ FunctionSpec kajiyaKaySpec() {
          {0, 0, 1},
          40},
         {"eye along the hair", {0, 0, 1}, {1, 0, 0}, {0, 0, 1}, 40},
+        // The eye along a tangent a float ulp too long, the light behind:
+        // sin(T, E) must be clamped too, or NaN reaches the highlight.
+        {"eye along a tangent an ulp longer than 1, light behind",
+         {0, 0, 1.00000012},
+         {0.8, 0, -0.6},
+         {0, 0, 1},
+         4},
+        // The cone's cosine below zero: pow() of a negative number is NaN in
+        // GLSL, so it must be clamped at 0 first.
+        {"eye along the hair, light ahead: the cosine is negative",
+         {1, 0, 0},
+         {r, r, 0},
+         {1, 0, 0},
+         40},
         {"low shininess", {0.36, 0.48, 0.8}, {0, 1, 0}, {0.6, 0, 0.8}, 4},
     };
     for (const auto& w : rows)

@@ -91,7 +91,7 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
                                " pixels are NaN or Inf (shown magenta); " + check.output;
             std::string hint = check.passed ? ""
                                             : diagnose(mine, expected, tolerance.channel,
-                                                       stage.track == "raytrace");
+                                                       stage.track == "raytrace", nonFinite);
             if (!hint.empty()) check.output += "; " + hint;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
             writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));

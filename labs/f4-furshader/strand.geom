@@ -46,7 +46,9 @@ void main()
     // carry equally dense fur; the fraction becomes one more strand with
     // that probability.
     float jitter = hash01(uint(gl_PrimitiveIDIn));
-    int count = min(int(area * uStrandDensity + jitter), STRANDS_PER_TRIANGLE);
+    // (Clamped before the conversion: a float past the largest int has no
+    // defined int value in GLSL.)
+    int count = int(min(area * uStrandDensity + jitter, float(STRANDS_PER_TRIANGLE)));
     int todo = gLabTodoReached || vLabTodo[0] != 0 ? 1 : 0;
     for (int i = 0; i < STRANDS_PER_TRIANGLE; ++i) {
         if (i >= count) break;
@@ -59,13 +61,16 @@ void main()
         vec3 normal = normalize(w.x * vNormal[0] + w.y * vNormal[1] + w.z * vNormal[2]);
         vec2 uv = w.x * vUv[0] + w.y * vUv[1] + w.z * vUv[2];
         vec3 p = strandPoint(root, normal, 0.0, uFurLength, uGravity);
+        vec3 tangent = normal;
         for (int k = 0; k <= STRAND_SEGMENTS; ++k) {
             float s = float(k) / float(STRAND_SEGMENTS);
-            // The tangent points to the next point (the last one keeps the
-            // previous segment's direction).
+            // The tangent points to the next point; the tip keeps the last
+            // segment's direction. (Written for every vertex: outputs are
+            // undefined after EmitVertex().)
             vec3 next = strandPoint(root, normal, min(s + 1.0 / float(STRAND_SEGMENTS), 1.0),
                                     uFurLength, uGravity);
-            if (k < STRAND_SEGMENTS) gTangent = next - p;
+            if (k < STRAND_SEGMENTS) tangent = next - p;
+            gTangent = tangent;
             gl_Position = uProjection * uView * vec4(p, 1.0);
             gWorldPos = p;
             gNormal = normal;

@@ -46,6 +46,16 @@ TEST(ObjMesh, QuadsAreSplitAndMissingNormalsAndUvsComputed) {
     EXPECT_EQ(adj.interiorEdges, 18);
 }
 
+TEST(ObjMesh, AZeroNormalIsReplacedAndTheOthersKept) {
+    ScratchDir dir;
+    writeFile(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 0\nvn 0 0 0\nf 1//1 2//2 3//1\n");
+    const Mesh m = loadObjMesh(dir / "tri.obj");
+    ASSERT_EQ(m.vertexCount(), 3u);
+    EXPECT_EQ(m.normals[0], glm::vec3(1, 0, 0)) << "the file's normal is kept";
+    EXPECT_NEAR(m.normals[1].z, 1.0f, 1e-6f) << "the zero one becomes the face's";
+    EXPECT_NE(m.name.find("tri.obj"), std::string::npos);
+}
+
 TEST(ObjMesh, NormalsAndUvsInTheFileAreKeptAndNormalised) {
     ScratchDir dir;
     writeFile(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 2\n"
@@ -67,6 +77,19 @@ TEST(ObjMesh, BadFilesGiveOneLineErrorsNamingTheFile) {
     const std::string bad = message(dir / "bad-index.obj");
     EXPECT_NE(bad.find("bad-index.obj"), std::string::npos) << bad;
     EXPECT_EQ(bad.find('\n'), std::string::npos) << bad;
+    // tinyobjloader drops a quad with a bad index with only a warning: an error here.
+    writeFile(dir / "bad-quad.obj", std::string(kCube) + "f 5 6 7 99\n");
+    EXPECT_NE(message(dir / "bad-quad.obj").find("bad-quad.obj: a face was dropped"),
+              std::string::npos)
+        << message(dir / "bad-quad.obj");
+    writeFile(dir / "back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -5 2 3\n");
+    EXPECT_NE(message(dir / "back.obj").find("back.obj: a face's relative vertex index"),
+              std::string::npos)
+        << message(dir / "back.obj");
+    writeFile(dir / "huge.obj", "v 0e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(message(dir / "huge.obj").find("huge.obj: a vertex (v line) is not a finite"),
+              std::string::npos)
+        << message(dir / "huge.obj");
     writeFile(dir / "no-normals.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//4 2//4 3//4\n");
     const std::string normals = message(dir / "no-normals.obj");
     EXPECT_NE(normals.find("no-normals.obj"), std::string::npos) << normals;

@@ -192,6 +192,9 @@ void writeFurFiles(const std::vector<FurRow>& rows, const fs::path& dir, const s
                    const std::string& commandLine, const std::string& notes) {
     std::error_code ec;
     fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw Error("cannot make the folder " + displayPath(dir) +
+                    (ec ? ": " + ec.message() : std::string()));
     writeTextFileAtomic(dir / "fur.csv", furCsv(rows));
     writeTextFileAtomic(dir / "fur.md", furMarkdown(rows, title, commandLine, notes, "fur.png"));
     writeFurPlot(rows, dir / "fur.png", title);

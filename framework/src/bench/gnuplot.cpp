@@ -155,6 +155,8 @@ std::string pngTerminal(const fs::path& image) {
            gpString(image.string()) + "\n";
 }
 
+bool gnuplotAvailable(const std::string& gnuplot) { return !findExecutable(gnuplot).empty(); }
+
 void runGnuplot(const std::string& gnuplot, const std::string& script, const fs::path& image,
                 const fs::path& pngPath, const std::string& what) {
     const std::string exe = findExecutable(gnuplot);

@@ -36,6 +36,10 @@ private:
 
 void writeBytes(const std::filesystem::path& file, const std::string& bytes);
 
+// Whether GNUPLOT (a name on $PATH, or a path) can be run: checked before a
+// long measurement whose report ends in a plot.
+bool gnuplotAvailable(const std::string& gnuplot = "gnuplot");
+
 // Runs GNUPLOT (a name looked up on $PATH, or a path) on SCRIPT, which must
 // write the picture to IMAGE, and writes that picture to PNGPATH atomically.
 // Throws Error("gnuplot not found: ...") when it is not there, and

@@ -11,6 +11,7 @@
 #include "fur_renderer.h"
 #include "fur_report.h"
 #include "gl_loader.h"
+#include "gnuplot.h"
 #include "image_compare.h"
 #include "mesh_shapes.h"
 #include "paths.h"
@@ -98,13 +99,16 @@ int cmdBenchFur(const BenchOptions& options) {
             : std::vector<FurSetting>{
                   {8, true, 0}, {16, true, 0}, {32, true, 0}, {32, false, 0}, {1, false, 1}};
     const FurScene scene = loadFurScene(stageSceneFile(kBenchScene));
+    // Everything that could fail at the end of a long run fails first, and
+    // before the output folder exists.
+    if (!bench::gnuplotAvailable())
+        throw Error("gnuplot not found: install gnuplot-nox (install.sh does)");
+    auto context = createHeadlessContext(options.backend);
+    FurRenderer renderer(stage, solutionSources(stage), scene, size.width, size.height);
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))
         throw Error("--out '" + options.outDir + "': cannot make this folder");
-
-    auto context = createHeadlessContext(options.backend);
-    FurRenderer renderer(stage, solutionSources(stage), scene, size.width, size.height);
     const Camera camera(scene.camera, scene.fovYDeg);
     std::printf("raylab bench --track fur: stage %s, %dx%d, %s backend, %s; %d timed frame%s per "
                 "setting\n",
@@ -141,7 +145,7 @@ int cmdBenchFur(const BenchOptions& options) {
             row.shells = f.shells;
             row.fins = f.fins;
             row.frameMs = summarizeFrameTimes(times[i]).medianMs;
-            row.bufferBytes = renderer.gpuBytes(f.technique);
+            row.bufferBytes = renderer.gpuBytes(settingsFor(f));
             renderer.render(camera, 0.0f, settingsFor(f));
             row.rssBytes = residentBytes();
             if (f.technique == 0) {

@@ -9,6 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace raylab {
@@ -18,9 +20,11 @@ namespace {
 // Texture units, as fur_uniforms.glsl binds its samplers.
 constexpr int kColorUnit = 0, kPatternUnit = 1, kFinUnit = 2;
 
-// The near plane is a small share of the distance to the mesh, so depth
-// keeps its precision at any camera distance the scenes use.
-constexpr float kNear = 0.02f, kFar = 200.0f;
+// The near and far planes hug the mesh's bounding sphere (with room for the
+// fur), so the mesh is drawn at any size and distance and the depth buffer
+// keeps its precision; from inside the sphere the near plane is a small
+// share of the far one.
+constexpr float kNearShareOfFar = 1e-4f;
 
 std::string stageFile(const StageInfo& stage) { return displayPath(stage.folder() / "stage.json"); }
 
@@ -77,6 +81,15 @@ FurRenderer::FurRenderer(const StageInfo& stage, StageSources sources, FurScene 
 void FurRenderer::setMesh(Mesh mesh) {
     validateMesh(mesh);
     mesh_ = std::move(mesh);
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh_.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    boundsCentre_ = 0.5f * (lo + hi);
+    boundsRadius_ = 0.0f;
+    for (const glm::vec3& p : mesh_.positions)
+        boundsRadius_ = std::max(boundsRadius_, glm::length(p - boundsCentre_));
     adjacency_ = stage_.has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
     buffers_ = std::make_unique<MeshBuffers>(mesh_, stage_.has("fins") ? &adjacency_ : nullptr);
 }
@@ -161,13 +174,14 @@ void FurRenderer::drawSkinAndShells(const Frame& f, int shells) {
 void FurRenderer::drawFins(const Frame& f) {
     setUniforms(*fins_, f);
     // Fins are thin quads seen from either side; blended like the shells.
+    const GLboolean culling = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     blendOver();
     buffers_->drawEdgesWithAdjacency();
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
-    glEnable(GL_CULL_FACE);
+    if (culling) glEnable(GL_CULL_FACE);
 }
 
 void FurRenderer::drawStrands(const Frame& f) {
@@ -181,12 +195,22 @@ FurRenderer::Frame FurRenderer::frameFor(const Camera& camera, float timeSeconds
     Frame f;
     f.model = scene_.modelMatrix(timeSeconds);
     f.view = glm::lookAt(pose.position, pose.position + camera.forward(), camera.up());
-    f.projection =
-        glm::perspective(glm::radians(camera.fovYDeg()),
-                         float(target_->width()) / float(target_->height()), kNear, kFar);
+    const float furLength = scene_.fur.length * settings.furLength;
+    // The bounding sphere in world space: the model's largest scale, and the
+    // fur (bent strands reach at most (1 + gravity) of its length out).
+    const glm::vec3 centre = glm::vec3(f.model * glm::vec4(boundsCentre_, 1.0f));
+    const float scale =
+        std::max({glm::length(glm::vec3(f.model[0])), glm::length(glm::vec3(f.model[1])),
+                  glm::length(glm::vec3(f.model[2]))});
+    const float radius = boundsRadius_ * scale + furLength * (1.0f + scene_.fur.gravity) * 1.05f;
+    const float distance = glm::length(pose.position - centre);
+    const float far = distance + radius;
+    const float near = std::max(far * kNearShareOfFar, distance - radius);
+    f.projection = glm::perspective(glm::radians(camera.fovYDeg()),
+                                    float(target_->width()) / float(target_->height()), near, far);
     f.eye = pose.position;
     f.time = timeSeconds;
-    f.furLength = scene_.fur.length * settings.furLength;
+    f.furLength = furLength;
     f.settings = settings;
     return f;
 }
@@ -239,9 +263,12 @@ long FurRenderer::countFins(const Camera& camera, float timeSeconds,
     target_->bind();
     GLuint query = 0;
     glGenQueries(1, &query);
+    // Counted, not drawn: the frame in the target stays as it was.
+    glEnable(GL_RASTERIZER_DISCARD);
     glBeginQuery(GL_PRIMITIVES_GENERATED, query);
     drawFins(f);
     glEndQuery(GL_PRIMITIVES_GENERATED);
+    glDisable(GL_RASTERIZER_DISCARD);
     GLuint64 primitives = 0;
     glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
     glDeleteQueries(1, &query);
@@ -269,11 +296,17 @@ CountResult FurRenderer::countCheck(const std::string& name, const Camera& camer
     return r;
 }
 
-std::size_t FurRenderer::gpuBytes(int furTechnique) const {
-    auto texels = [](const Texture2D& t) { return std::size_t(t.width()) * t.height() * 4; };
-    std::size_t bytes = buffers_->bytes() + texels(*colorMap_) + texels(*pattern_);
-    if (furTechnique == 0) bytes += texels(*finMap_);
-    else bytes -= buffers_->adjacencyBytes() + texels(*pattern_);  // strands read neither
+std::size_t FurRenderer::gpuBytes(const RenderSettings& settings) const {
+    // Mipmapped RGBA8: the levels below the picture add a third.
+    auto texels = [](const Texture2D& t) {
+        return std::size_t(t.width()) * t.height() * 4 * 4 / 3;
+    };
+    // Every technique draws the skin with the shell program (colour map and
+    // pattern); fins add the adjacency indices and the fin map.
+    std::size_t bytes =
+        buffers_->bytes() - buffers_->adjacencyBytes() + texels(*colorMap_) + texels(*pattern_);
+    if (settings.furTechnique == 0 && settings.fins && fins_)
+        bytes += buffers_->adjacencyBytes() + texels(*finMap_);
     return bytes;
 }
 

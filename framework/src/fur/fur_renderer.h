@@ -63,8 +63,9 @@ public:
     // a strip of two triangles). Needs the "fins" feature.
     long countFins(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
 
-    // Bytes of GPU buffers and textures a technique uses for this mesh.
-    std::size_t gpuBytes(int furTechnique) const;
+    // Bytes of GPU buffers and textures a frame drawn with SETTINGS reads
+    // (technique, fins) for this mesh; textures with their mipmaps.
+    std::size_t gpuBytes(const RenderSettings& settings) const;
 
 private:
     struct Frame;  // the per-frame uniforms
@@ -85,7 +86,9 @@ private:
     StrandBudget budget_;
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
-    int meshShown_ = 0;  // RenderSettings::furMesh of the mesh in buffers_
+    int meshShown_ = 0;             // RenderSettings::furMesh of the mesh in buffers_
+    glm::vec3 boundsCentre_{0.0f};  // the mesh's bounding sphere, object space
+    float boundsRadius_ = 0.0f;
 };
 
 }  // namespace raylab

@@ -35,7 +35,9 @@ struct Track {
 };
 constexpr Track kTracks[] = {
     {"raytrace", rayTracer, [](const std::filesystem::path& f) { loadScene(f); }},
-    {"fur", fur, [](const std::filesystem::path& f) { loadFurScene(f); }},
+    // The mesh too (an OBJ file is only named by the scene): a bad one stops
+    // the command before any window, context or output folder exists.
+    {"fur", fur, [](const std::filesystem::path& f) { loadFurMesh(loadFurScene(f)); }},
 };
 
 const Track& trackOf(const StageInfo& stage) {

@@ -4,6 +4,7 @@
 #include "json_reader.h"
 #include "mesh_shapes.h"
 #include "paths.h"
+#include "text_format.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -33,9 +34,8 @@ struct FurSceneReader : JsonReader {
     }
     float within(const json& v, const std::string& where, float lo, float hi) const {
         float f = number(v, where);
-        if (f < lo || f > hi)
-            fail(where, "must be between " + std::to_string(lo).substr(0, 6) + " and " +
-                            std::to_string(hi).substr(0, 6));
+        if (!(f >= lo && f <= hi))
+            fail(where, "must be between " + significant(lo, 6) + " and " + significant(hi, 6));
         return f;
     }
 };
@@ -73,7 +73,7 @@ void readFur(const FurSceneReader& r, const json& doc, FurScene& s) {
     p.finMap = r.existingFile(r.member(f, "fur", "fin_map"), "fur.fin_map");
     if (f.contains("gravity")) p.gravity = r.within(f["gravity"], "fur.gravity", 0.0f, 2.0f);
     if (f.contains("strand_density"))
-        p.strandDensity = r.positive(f["strand_density"], "fur.strand_density");
+        p.strandDensity = r.within(f["strand_density"], "fur.strand_density", 1.0f, 1e6f);
     if (f.contains("strand_segments"))
         p.strandSegments = r.integer(f["strand_segments"], "fur.strand_segments", 1, 16);
 }

@@ -37,8 +37,9 @@ struct FurScene {
     CameraPose camera;
     float fovYDeg = 45.0f;
     FurMeshSpec mesh;
-    // Model transform: scale, then rotate (x, y, z degrees in that order),
-    // then translate; `spin` turns the model about y by degrees per second.
+    // Model transform: scale, then rotate about z, then x, then y (degrees;
+    // y last, so that `spin`, degrees per second added to y, turns the model
+    // about the world's vertical), then translate.
     glm::vec3 translate{0.0f}, rotateDeg{0.0f}, scale{1.0f};
     float spinDegPerSecond = 0.0f;
     glm::vec3 lightDirection{0.0f, 1.0f, 0.0f};  // toward the light, unit length

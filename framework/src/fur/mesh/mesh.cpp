@@ -67,6 +67,11 @@ void validateMesh(const Mesh& mesh) {
     auto fail = [&](const std::string& what) { throw Error(mesh.name + ": " + what); };
     if (mesh.positions.empty() || mesh.indices.empty()) fail("the mesh has no triangles");
     if (mesh.indices.size() % 3 != 0) fail("the index count is not a multiple of 3");
+    // 32-bit indices, and draw counts in a GLsizei (the adjacency buffer
+    // holds four indices per edge: twice the triangles' indices).
+    if (mesh.positions.size() > std::size_t(INT32_MAX) ||
+        mesh.indices.size() > std::size_t(INT32_MAX) / 2)
+        fail("too large: at most 2^31 vertices and 2^30 indices");
     if (mesh.normals.size() != mesh.positions.size() || mesh.uvs.size() != mesh.positions.size())
         fail("every vertex needs a normal and a texture coordinate");
     for (std::uint32_t i : mesh.indices)

@@ -5,8 +5,10 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cmath>
 #include <map>
 #include <tuple>
+#include <vector>
 
 namespace raylab {
 
@@ -25,7 +27,20 @@ Mesh loadObjMesh(const std::filesystem::path& file) {
         throw Error(name + ": not a readable OBJ file (" +
                     (why.empty() ? std::string("no reason given") : why) + ")");
     }
+    // tinyobjloader skips a polygon with a bad index and only warns: a mesh
+    // with silent holes would be worse than an error.
+    for (const char* dropped : {"invalid vertex index", "Degenerated face"}) {
+        const std::string& warning = reader.Warning();
+        const std::size_t at = warning.find(dropped);
+        if (at == std::string::npos) continue;
+        std::size_t start = warning.rfind('\n', at);
+        start = start == std::string::npos ? 0 : start + 1;
+        std::string line = warning.substr(start, warning.find('\n', at) - start);
+        throw Error(name + ": a face was dropped while reading (" + line + ")");
+    }
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    for (float v : attrib.vertices)
+        if (!std::isfinite(v)) throw Error(name + ": a vertex (v line) is not a finite number");
 
     // Does every face corner name a normal / a texture coordinate?
     bool allNormals = true, allUvs = true;
@@ -39,7 +54,7 @@ Mesh loadObjMesh(const std::filesystem::path& file) {
     if (corners == 0) throw Error(name + ": the file has no faces (f lines)");
 
     Mesh mesh;
-    mesh.name = file.filename().string();
+    mesh.name = name;
     std::map<std::tuple<int, int, int>, std::uint32_t> vertexOf;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f)
@@ -51,6 +66,9 @@ Mesh loadObjMesh(const std::filesystem::path& file) {
             auto key = std::make_tuple(i.vertex_index, n, t);
             auto it = vertexOf.find(key);
             if (it == vertexOf.end()) {
+                if (i.vertex_index < 0)
+                    throw Error(name + ": a face's relative vertex index counts back past the "
+                                       "first vertex");
                 const std::size_t v = std::size_t(i.vertex_index);
                 if (3 * v + 2 >= attrib.vertices.size())
                     throw Error(name + ": a face names vertex " + std::to_string(v + 1) +
@@ -76,14 +94,19 @@ Mesh loadObjMesh(const std::filesystem::path& file) {
         }
     }
     if (allNormals) {
-        // Normals as written may not be unit length; a zero one is recomputed.
-        bool zero = false;
-        for (glm::vec3& n : mesh.normals) {
-            float l = glm::length(n);
-            if (l > 0.0f) n /= l;
-            else zero = true;
+        // Normals as written may not be unit length; a zero (or non-finite)
+        // one is replaced by the smooth normal there, the others are kept.
+        std::vector<std::size_t> bad;
+        for (std::size_t k = 0; k < mesh.normals.size(); ++k) {
+            const float l = glm::length(mesh.normals[k]);
+            if (l > 0.0f && std::isfinite(l)) mesh.normals[k] /= l;
+            else bad.push_back(k);
         }
-        if (zero) computeSmoothNormals(mesh);
+        if (!bad.empty()) {
+            Mesh smooth = mesh;
+            computeSmoothNormals(smooth);
+            for (std::size_t k : bad) mesh.normals[k] = smooth.normals[k];
+        }
     } else {
         computeSmoothNormals(mesh);
     }

@@ -15,10 +15,11 @@ double silhouetteProduct(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
                          const glm::dvec3& c, const glm::dvec3& d);
 
 // Is the product so close to zero that float rounding may decide its sign?
-// True when a factor is within 1e-4 of its bound (|PB| |N|) but not exactly
-// zero; a float test of either answer is then right. A factor that is
-// exactly zero (a degenerate triangle, the eye on B) is zero in float too,
-// and the product is then certainly no silhouette.
+// True when a factor is within what float can move it: 1e-4 of its size
+// (|PB| |N|), plus the rounding of world positions far from the origin
+// (silhouette.cpp); a float test of either answer is then right. A factor
+// that is exactly zero (a degenerate triangle, the eye on B) is zero in
+// float too, and the product is then certainly no silhouette.
 bool silhouetteUncertain(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                          const glm::dvec3& c, const glm::dvec3& d);
 

@@ -55,6 +55,47 @@ TEST(Glslang, EveryStageShaderIsValidGlsl330Core) {
     std::printf("[ figure   ] %d shaders valid GLSL 3.30 core\n", checked);
 }
 
+// The web build's dialect: every program WebGL 2 can run (every ray-tracing
+// stage; the fur track's mesh and shells, not its geometry shaders), lab and
+// solution, is valid GLSL ES 3.00 with the ES prelude and web/shaders/ in
+// front of the search path - the same files, no per-target copies.
+TEST(Glslang, EveryStageCompilesAsGlslEs300ForTheWeb) {
+    ScratchDir dir;
+    int checked = 0;
+    for (const StageInfo& stage : allStages()) {
+        std::vector<std::string> defines = stage.defines();
+        defines.push_back("RAYLAB_BVH");
+        for (const StageSources& sources :
+             {solutionSources(stage), labSources(stage, defaultLabRoot())}) {
+            SCOPED_TRACE(stage.id + " " + sources.label);
+            std::vector<fs::path> search = {sourceDir() / "web/shaders"};
+            for (const fs::path& p : searchWithVariants(sources, defines)) search.push_back(p);
+            for (const auto& [entry, name] : {std::pair(stage.program.vertex, "s.vert"),
+                                              std::pair(stage.program.fragment, "s.frag")}) {
+                ShaderSource s = asGlslEs300(assembleShader(entry, search, defines));
+                ASSERT_EQ(s.text.rfind("#version 300 es\n", 0), 0u);
+                CommandResult r = validate(dir, s, name);
+                EXPECT_EQ(r.exitCode, 0) << mapCompilerLog(r.out, s);
+                ++checked;
+            }
+        }
+    }
+    std::printf("[ figure   ] %d shaders valid GLSL ES 3.00\n", checked);
+}
+
+// GLSL ES is stricter (no int -> float conversion); its errors still map to
+// the student's file and line through the ES prelude.
+TEST(Glslang, EsErrorsMapToTheFileThroughThePrelude) {
+    ScratchDir dir;
+    writeFile(dir / "s/main.frag",
+              "out highp vec4 c;\nvoid main() {\n    float x = 1;\n    c = vec4(x);\n}\n");
+    ShaderSource frag = asGlslEs300(assembleShader("main.frag", {dir / "s"}, {}));
+    CommandResult r = validate(dir, frag, "bad.frag");
+    EXPECT_NE(r.exitCode, 0) << r.all();
+    std::string mapped = mapCompilerLog(r.out, frag);
+    EXPECT_NE(mapped.find("s/main.frag:3: error:"), std::string::npos) << mapped;
+}
+
 // The validator is not a rubber stamp: code Mesa might let through but the
 // spec forbids (an implicit int -> float conversion in a return) is rejected,
 // and its error maps back to the file and line.

@@ -8,7 +8,11 @@ namespace {
 
 // Enough digits that the GLSL float is the nearest one to the C++ double.
 std::string floatConst(const char* name, double value) {
-    return "const float " + std::string(name) + " = " + significant(value, 9) + ";\n";
+    // Always a float literal ("-1.0", not "-1"): GLSL ES 3.00 (WebGL 2) has
+    // no implicit int-to-float conversion, even in a constant.
+    std::string literal = significant(value, 9);
+    if (literal.find_first_of(".eEn") == std::string::npos) literal += ".0";
+    return "const float " + std::string(name) + " = " + literal + ";\n";
 }
 
 std::string intConst(const char* name, int value) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <unordered_set>
@@ -185,6 +186,28 @@ ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path
     for (std::string line; std::getline(lines, line);) a.emit(line, kGenerated, n++);
     a.include(a.resolve(entry, "", 0));
     return a.out;
+}
+
+ShaderSource asGlslEs300(ShaderSource s) {
+    static const char* const kPrelude[] = {
+        "#version 300 es",
+        "precision highp float;",
+        "precision highp int;",
+        "precision highp sampler2DArray;",
+        "precision highp isampler2D;",
+        "precision highp samplerCube;",
+    };
+    const std::size_t firstLineEnd = s.text.find('\n');
+    std::string text;
+    for (const char* line : kPrelude) text += std::string(line) + "\n";
+    s.text = text + (firstLineEnd == std::string::npos ? "" : s.text.substr(firstLineEnd + 1));
+    // The version line was generated; the precision lines are too.
+    std::vector<SourceLine> origin;
+    for (std::size_t i = 0; i < std::size(kPrelude); ++i)
+        origin.push_back({kGenerated, int(i) + 1});
+    origin.insert(origin.end(), s.origin.begin() + (s.origin.empty() ? 0 : 1), s.origin.end());
+    s.origin = std::move(origin);
+    return s;
 }
 
 std::string mapCompilerLog(const std::string& log, const ShaderSource& source) {

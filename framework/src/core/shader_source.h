@@ -41,6 +41,14 @@ ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path
                             const std::vector<std::string>& defines,
                             const std::string& prelude = {});
 
+// The same shader for WebGL 2: `#version 300 es` in place of the first line
+// and precision lines after it (GLSL ES has no default float precision in
+// fragment shaders, nor any for some sampler types), the line mapping kept,
+// so that errors still name the student's file and line. Nothing else
+// changes: the stages' files are written in the subset both dialects share
+// (tests/e2e/glslang_test.cpp checks it).
+ShaderSource asGlslEs300(ShaderSource source);
+
 // Rewrites the line references of a compiler or linker log (Mesa
 // "0:12(5): ...", NVIDIA "0(12) : ...", glslang/AMD "ERROR: 0:12: ...") into
 // "file:line[:col]: ...". Lines it does not recognise are kept as they are.

@@ -67,14 +67,16 @@ TEST(Backends, EglAndOsMesaAgreeOnTheFurTrack) {
     }
 }
 
-TEST(Backends, FurWindowUnderXvfbGivesTheHeadlessImage) {
+// VIEW in a real window (under Xvfb) against the same view rendered headless.
+void expectWindowEqualsHeadless(const std::string& view) {
     if (runCommand("command -v xvfb-run").exitCode != 0)
         GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
     ScratchDir dir;
-    raylab::Image headless = render(dir, "egl", kFurView);
+    raylab::Image headless = render(dir, "egl", view);
     fs::path shot = dir / "window.png";
+    // 24-bit screen: xvfb-run's default 8-bit screen has no OpenGL visual.
     CommandResult r = runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + quote(RAYLAB_EXE) +
-                                 " run " + kFurView + " --frames 3 --screenshot " + quote(shot));
+                                 " run " + view + " --frames 3 --screenshot " + quote(shot));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     raylab::Image window = raylab::loadPng(shot);
     raylab::ImageDiff d =
@@ -82,21 +84,9 @@ TEST(Backends, FurWindowUnderXvfbGivesTheHeadlessImage) {
     EXPECT_EQ(d.maxDiff, 0) << raylab::describe(d);
 }
 
-TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) {
-    if (runCommand("command -v xvfb-run").exitCode != 0)
-        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
-    ScratchDir dir;
-    raylab::Image headless = render(dir, "egl");
-    fs::path shot = dir / "window.png";
-    // 24-bit screen: xvfb-run's default 8-bit screen has no OpenGL visual.
-    CommandResult r = runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + quote(RAYLAB_EXE) +
-                                 " run " + kView + " --frames 3 --screenshot " + quote(shot));
-    ASSERT_EQ(r.exitCode, 0) << r.all();
-    raylab::Image window = raylab::loadPng(shot);
-    raylab::ImageDiff d =
-        raylab::compareImages(window, headless, raylab::CompareTolerance{}.channel);
-    EXPECT_EQ(d.maxDiff, 0) << raylab::describe(d);
-}
+TEST(Backends, FurWindowUnderXvfbGivesTheHeadlessImage) { expectWindowEqualsHeadless(kFurView); }
+
+TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) { expectWindowEqualsHeadless(kView); }
 
 // With no usable EGL (here: glvnd finds no EGL vendor), `auto` falls back to
 // OSMesa with a note, and still renders the same image.

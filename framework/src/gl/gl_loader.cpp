@@ -26,7 +26,7 @@ namespace {
     X(Uniform1fv) X(Uniform1iv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)              \
     X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)                            \
     X(GenRenderbuffers) X(BindRenderbuffer) X(RenderbufferStorage) X(FramebufferRenderbuffer)      \
-    X(DeleteRenderbuffers) X(BlendFuncSeparate) X(GenQueries) X(BeginQuery) X(EndQuery)            \
+    X(DeleteRenderbuffers) X(GenQueries) X(BeginQuery) X(EndQuery)                                \
     X(GetQueryObjectui64v) X(DeleteQueries)
 // clang-format on
 

@@ -19,12 +19,14 @@ Command gradeReferenceCommand();
 Command demoCommand();
 Command benchCommand();
 Command checkCommand();
+Command shaderCommand();
+Command compareCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(), runCommand(),   renderCommand(),    raysCommand(),
-        traceCommand(),  gradeCommand(), gradeItemCommand(), gradeReferenceCommand(),
-        demoCommand(),   benchCommand(), checkCommand()};
+        stagesCommand(), runCommand(),       renderCommand(),         raysCommand(), traceCommand(),
+        gradeCommand(),  gradeItemCommand(), gradeReferenceCommand(), demoCommand(), benchCommand(),
+        checkCommand(),  shaderCommand(),    compareCommand()};
     return table;
 }
 

@@ -2,7 +2,6 @@
 
 #include "error.h"
 #include "paths.h"
-#include "scene_baking.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -95,37 +94,11 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
     rebuild();
 }
 
-std::vector<std::string> ShaderVariant::defines() const {
-    std::vector<std::string> d;
-    if (bvh) d.push_back("RAYLAB_BVH");
-    if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
-    if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
-    return d;
-}
-
-ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
-    // Measured with `raylab bench` at 800x600, depth 8 (docs/bench/README.md):
-    // with 10 spheres the BVH costs more than it saves, with 110
-    // it saves a fifth of the frame.
-    constexpr std::size_t kSpheresForBvh = 32;
-    ShaderVariant v;
-    v.bvh = scene.spheres.size() >= kSpheresForBvh;
-    v.specialized = true;
-    return v;
-}
-
 void StageRenderer::rebuild() {
-    // A specialised program sizes its arrays to the scene (the stage's
-    // limits were checked above all the same).
-    std::vector<std::string> defines =
-        variant_.specialized ? bakedSceneDefines(scene_) : stage_.defines();
-    if (variant_.specialized)
-        for (const std::string& d : stage_.extraDefines) defines.push_back(d);
-    for (const std::string& d : variant_.defines()) defines.push_back(d);
-    std::string prelude = variant_.specialized ? bakedSceneGlsl(scene_) : std::string();
-    const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
-    ShaderSource vertex = assembleShader(stage_.program.vertex, search, defines);
-    ShaderSource fragment = assembleShader(fragmentEntry_, search, defines, prelude);
+    StagePrograms programs =
+        assembleStagePrograms(stage_, sources_, scene_, variant_, fragmentEntry_);
+    const ShaderSource& vertex = programs.vertex;
+    const ShaderSource& fragment = programs.fragment;
     auto program = std::make_unique<ShaderProgram>(vertex, fragment);
     program_ = std::move(program);
     files_ = fragment.files;

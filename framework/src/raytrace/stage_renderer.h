@@ -9,6 +9,7 @@
 #include "scene.h"
 #include "shader_program.h"
 #include "stage_catalog.h"
+#include "stage_programs.h"
 #include "stage_sources.h"
 #include "target_renderer.h"
 #include "texture.h"
@@ -21,21 +22,6 @@
 #include <vector>
 
 namespace raylab {
-
-// How the stage's shader is compiled (fixed per program, unlike RenderSettings).
-// `raylab bench` compares the choices; the defaults are the fastest correct ones.
-struct ShaderVariant {
-    bool bvh = true;           // RAYLAB_BVH: stage 08 finds bounded objects through a BVH (bvh.h)
-    bool specialized = false;  // the scene's static data compiled in as constants (scene_baking.h)
-    bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
-    bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
-    std::vector<std::string> defines() const;  // the defines for the switches above
-
-    // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the
-    // scene compiled in, and the BVH only where there are enough spheres to
-    // repay walking it (lite's 10 are found faster by the plain loop).
-    static ShaderVariant fastestFor(const Scene& scene);
-};
 
 // The ray-tracing track's renderer: a full-screen canvas whose fragment
 // shader traces the scene.

@@ -1,0 +1,76 @@
+// `raylab shader`: prints the GLSL a ray-tracing stage's program is compiled
+// from, assembled exactly as the renderer assembles it (includes resolved,
+// defines, the baked scene). `--es` prints the GLSL ES 3.00 the web build
+// compiles; its tests compare the page's own assembly with this.
+#include "command.h"
+#include "command_options.h"
+#include "error.h"
+#include "stage_programs.h"
+#include "track_registry.h"
+
+#include <cstdio>
+
+namespace raylab {
+
+namespace {
+
+struct ShaderOptions {
+    StageOptions stage;
+    bool vertex = false;
+    bool es = false;
+    bool generic = false;
+    bool noBvh = false;
+    bool origins = false;
+};
+
+int cmdShader(const ShaderOptions& o) {
+    StageSetup setup = resolveStageOptions(o.stage);
+    requireRayTracingStage(*setup.stage, "raylab shader");
+    ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
+    variant.specialized = !o.generic;
+    if (o.noBvh) variant.bvh = false;
+    StagePrograms programs =
+        assembleStagePrograms(*setup.stage, setup.sources, setup.scene, variant);
+    ShaderSource source = o.vertex ? programs.vertex : programs.fragment;
+    if (o.es) source = asGlslEs300(source);
+    if (!o.origins) {
+        std::fputs(source.text.c_str(), stdout);
+        return 0;
+    }
+    // One line per assembled line: where it came from, a tab, the text.
+    std::size_t start = 0;
+    for (const SourceLine& from : source.origin) {
+        std::size_t end = source.text.find('\n', start);
+        std::printf("%s:%d\t%s\n", from.file.c_str(), from.line,
+                    source.text.substr(start, end - start).c_str());
+        start = end + 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+Command shaderCommand() {
+    return {
+        "shader",
+        "print the GLSL a ray-tracing stage is compiled from (includes resolved, the scene "
+        "compiled in; --es: as the web build compiles it)",
+        [](CLI::App& cmd) {
+            auto o = std::make_shared<ShaderOptions>();
+            CLI::Option* lab = addStageOptions(cmd, o->stage, false);
+            cmd.add_flag("--vertex", o->vertex, "the vertex shader instead of the fragment shader");
+            cmd.add_flag("--es", o->es, "GLSL ES 3.00 for WebGL 2 (the web build's prelude)");
+            cmd.add_flag("--generic", o->generic,
+                         "the stage's generic program (scene in uniforms) instead of the "
+                         "program specialised to the scene");
+            cmd.add_flag("--no-bvh", o->noBvh, "stage 08: the linear search instead of the BVH");
+            cmd.add_flag("--origins", o->origins,
+                         "prefix every line with the file:line it came from");
+            return std::function<int()>([=] {
+                o->stage.labGiven = lab->count() > 0;
+                return cmdShader(*o);
+            });
+        }};
+}
+
+}  // namespace raylab

@@ -1,0 +1,43 @@
+#include "stage_programs.h"
+
+#include "scene_baking.h"
+
+namespace raylab {
+
+std::vector<std::string> ShaderVariant::defines() const {
+    std::vector<std::string> d;
+    if (bvh) d.push_back("RAYLAB_BVH");
+    if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
+    if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
+    return d;
+}
+
+ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
+    // Measured with `raylab bench` at 800x600, depth 8 (docs/bench/README.md):
+    // with 10 spheres the BVH costs more than it saves, with 110
+    // it saves a fifth of the frame.
+    constexpr std::size_t kSpheresForBvh = 32;
+    ShaderVariant v;
+    v.bvh = scene.spheres.size() >= kSpheresForBvh;
+    v.specialized = true;
+    return v;
+}
+
+StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& sources,
+                                    const Scene& scene, const ShaderVariant& variant,
+                                    const std::string& fragmentEntry) {
+    // A specialised program sizes its arrays to the scene (the stage's
+    // limits are checked by the renderer all the same).
+    std::vector<std::string> defines =
+        variant.specialized ? bakedSceneDefines(scene) : stage.defines();
+    if (variant.specialized)
+        for (const std::string& d : stage.extraDefines) defines.push_back(d);
+    for (const std::string& d : variant.defines()) defines.push_back(d);
+    const std::string prelude = variant.specialized ? bakedSceneGlsl(scene) : std::string();
+    const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);
+    const std::string& entry = fragmentEntry.empty() ? stage.program.fragment : fragmentEntry;
+    return {assembleShader(stage.program.vertex, search, defines),
+            assembleShader(entry, search, defines, prelude)};
+}
+
+}  // namespace raylab

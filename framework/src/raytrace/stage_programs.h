@@ -1,0 +1,43 @@
+#pragma once
+// How a ray-tracing stage's program is assembled from its files: the defines
+// (the stage's limits, or the scene's own sizes when specialised), the
+// variant switches, the baked scene prelude and the search path with the
+// variant folders. One place, shared by the renderer (stage_renderer.cpp)
+// and `raylab shader` (which prints what the web build must reproduce).
+#include "scene.h"
+#include "shader_source.h"
+#include "stage_catalog.h"
+#include "stage_sources.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// How the stage's shader is compiled (fixed per program, unlike RenderSettings).
+// `raylab bench` compares the choices; the defaults are the fastest correct ones.
+struct ShaderVariant {
+    bool bvh = true;           // RAYLAB_BVH: stage 08 finds bounded objects through a BVH (bvh.h)
+    bool specialized = false;  // the scene's static data compiled in as constants (scene_baking.h)
+    bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
+    bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
+    std::vector<std::string> defines() const;  // the defines for the switches above
+
+    // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the
+    // scene compiled in, and the BVH only where there are enough spheres to
+    // repay walking it (lite's 10 are found faster by the plain loop).
+    static ShaderVariant fastestFor(const Scene& scene);
+};
+
+struct StagePrograms {
+    ShaderSource vertex;
+    ShaderSource fragment;
+};
+
+// FRAGMENTENTRY: the entry fragment shader; empty for the stage's own.
+// Throws Error for a missing or forbidden #include.
+StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& sources,
+                                    const Scene& scene, const ShaderVariant& variant,
+                                    const std::string& fragmentEntry = "");
+
+}  // namespace raylab

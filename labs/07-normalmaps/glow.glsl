@@ -11,8 +11,11 @@
 vec3 sunGlow(Ray ray)
 {
     if (uGlowSphere < 0) return vec3(0.0);
-    vec3 c = uSpheres[uGlowSphere].xyz;
-    float r = uSpheres[uGlowSphere].w;
+    // (max: in a program specialised to a scene without a sun, uGlowSphere
+    // is the constant -1, and a constant index below 0 does not compile.)
+    int sun = max(uGlowSphere, 0);
+    vec3 c = uSpheres[sun].xyz;
+    float r = uSpheres[sun].w;
     float tc = dot(c - ray.origin, ray.dir);
     if (tc < 0.0) return vec3(0.0);
     Hit blocker;

@@ -11,8 +11,11 @@
 vec3 sunGlow(Ray ray)
 {
     if (uGlowSphere < 0) return vec3(0.0);
-    vec3 c = uSpheres[uGlowSphere].xyz;
-    float r = uSpheres[uGlowSphere].w;
+    // (max: in a program specialised to a scene without a sun, uGlowSphere
+    // is the constant -1, and a constant index below 0 does not compile.)
+    int sun = max(uGlowSphere, 0);
+    vec3 c = uSpheres[sun].xyz;
+    float r = uSpheres[sun].w;
     // TODO(06.d): the glow above. No glow when the sun is behind the eye
     // (tc < 0) or when findClosest finds something other than the sun
     // closer than tc.

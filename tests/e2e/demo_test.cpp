@@ -145,3 +145,21 @@ TEST(Demo, FurTrackRefusesABadSceneBeforeAnyFolderIsMade) {
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("--track must be raytrace or fur"), std::string::npos) << r.err;
 }
+
+// The full demo's program specialised to every ray-tracing scene compiles and
+// draws, a scene without a sun included (a constant uGlowSphere of -1 used
+// as an array index did not compile).
+TEST(Demo, TheSpecialisedProgramCompilesForEveryScene) {
+    ScratchDir dir;
+    int scenes = 0;
+    for (const auto& e : fs::directory_iterator(sourceDir() / "assets/scenes")) {
+        if (e.path().extension() != ".json") continue;
+        ++scenes;
+        const std::string name = e.path().stem().string();
+        CommandResult r = demoIn(dir, "--stage 08 --scene " + quote(e.path()) +
+                                          " --frames 1 --size 32x24 --out " + name);
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.all();
+        EXPECT_EQ(entries(dir / name), 1) << name;
+    }
+    EXPECT_GE(scenes, 7);
+}

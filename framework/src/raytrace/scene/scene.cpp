@@ -100,8 +100,8 @@ void readGlow(const SceneReader& r, const json& doc, Scene& scene) {
     const json& sphere = r.member(g, "glow", "sphere");
     if (!sphere.is_number_integer() || sphere.get<long long>() < 0 ||
         sphere.get<long long>() >= (long long)scene.spheres.size())
-        r.fail("glow.sphere",
-               "expected the index of a sphere (0.." + std::to_string(scene.spheres.size()) + ")");
+        r.fail("glow.sphere", "expected the index of a sphere (0.." +
+                                  std::to_string(int(scene.spheres.size()) - 1) + ")");
     scene.glow.sphere = sphere.get<int>();
     if (g.contains("color")) scene.glow.color = r.color(g["color"], "glow.color");
     if (g.contains("size")) scene.glow.size = r.positive(g["size"], "glow.size");

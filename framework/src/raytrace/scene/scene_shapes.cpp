@@ -103,9 +103,12 @@ void readTriangles(const SceneReader& r, const json& doc, Scene& scene) {
         if (!v.is_array() || v.size() != 3)
             r.fail(where + ".vertices", "expected three [x, y, z] corners");
         int material = materialOf(r, triangles[i], where, scene);
-        addTriangle(r, where, scene, r.vec3(v[0], where + ".vertices[0]"),
-                    r.vec3(v[1], where + ".vertices[1]"), r.vec3(v[2], where + ".vertices[2]"),
-                    material);
+        // One by one: a bad corner is reported in order, whatever the
+        // compiler's order of evaluating arguments.
+        const glm::vec3 a = r.vec3(v[0], where + ".vertices[0]");
+        const glm::vec3 b = r.vec3(v[1], where + ".vertices[1]");
+        const glm::vec3 c = r.vec3(v[2], where + ".vertices[2]");
+        addTriangle(r, where, scene, a, b, c, material);
     }
 }
 
@@ -140,10 +143,15 @@ void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
                          ? r.number(boxes[i]["rotation_y"], where + ".rotation_y")
                          : 0.0f;
         int material = materialOf(r, boxes[i], where, scene);
-        glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(turn), glm::vec3(0, 1, 0));
+        // In double: the float sinf/cosf of C libraries differ in the last
+        // bit, double sin/cos practically never do, so the corners (which
+        // the specialised shader prints) are the same everywhere, the web
+        // build's included.
+        const glm::dmat4 rotation =
+            glm::rotate(glm::dmat4(1.0), glm::radians(double(turn)), glm::dvec3(0, 1, 0));
         auto corner = [&](int x, int y, int z) {
-            glm::vec3 local = (glm::vec3(float(x), float(y), float(z)) - 0.5f) * size;
-            return center + glm::vec3(rotation * glm::vec4(local, 1.0f));
+            glm::dvec3 local = (glm::dvec3(x, y, z) - 0.5) * glm::dvec3(size);
+            return center + glm::vec3(rotation * glm::dvec4(local, 1.0));
         };
         // Each face: the axis it is normal to, and which side.
         for (int axis = 0; axis < 3; ++axis) {

@@ -29,7 +29,12 @@ packages=(
   gnuplot-nox                                      # `raylab bench` speed-vs-error plot (bench.png)
   xvfb xauth                                       # windowed-mode tests without a display
   clang libclang-rt-14-dev clang-format            # tests: libFuzzer targets (ctest -L fuzz), tools/check-format.sh
+  chromium                                         # the web build's tests (ctest -L web): WebGL 2 headless
 )
+# The web build (web/) compiles with TypeScript from the npm registry: Node.js
+# and npm from Debian unless a Node.js is already installed (NodeSource's
+# nodejs package brings its own npm and conflicts with Debian's).
+command -v npm >/dev/null || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -46,6 +51,11 @@ fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
 echo "install.sh: built build/raylab"
+
+# The web build: the exact packages of web/package-lock.json, then tsc.
+npm --prefix web ci --no-audit --no-fund --loglevel=error
+npm --prefix web run --silent build
+echo "install.sh: built web/dist (serve it with: npm --prefix web run serve)"
 
 if [ "$run_tests" -eq 1 ]; then
   ctest --test-dir build --output-on-failure -j "$(nproc)"

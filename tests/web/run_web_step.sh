@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# One step of the web build's tests (ctest label `web`), run from the project
+# root: build (tsc and the catalog), unit (node's test runner), browser (the
+# pages in Debian's Chromium against the native renders).
+#   run_web_step.sh build|unit|browser RAYLAB_EXE OUT_DIR
+set -euo pipefail
+step=$1 raylab=$2 out=$3
+cd "$(dirname "$0")/../.."
+if ! command -v node >/dev/null || [ ! -d web/node_modules/typescript ]; then
+  echo "web tests: node or web/node_modules is missing: run 'bash install.sh' (it runs 'npm ci' in web/)" >&2
+  exit 1
+fi
+case "$step" in
+  build) npm --prefix web run --silent build ;;
+  unit) node --test web/tests/unit/ ;;
+  browser)
+    [ -x /usr/bin/chromium ] || [ -n "${RAYLAB_CHROMIUM:-}" ] ||
+      { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
+    node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out" ;;
+  *) echo "run_web_step.sh: unknown step '$step'" >&2; exit 2 ;;
+esac

@@ -1,0 +1,100 @@
+// window.raylab: what the browser tests and the frame-time benchmark call
+// (web/tests/browser/). Each call builds the stage's renderer afresh, draws
+// into the page's canvas and reports what a student would see: the picture,
+// the compile error with file:line, the open TODOs.
+import { Camera, flyThroughPose } from './camera.js';
+import { frameOfView, sceneOfView } from './frame.js';
+import type { Page } from './page.js';
+import { ROOT, type Catalog, type Sources, stageById } from '../course/catalog.js';
+import { assembleStagePrograms } from '../raytrace/stage_renderer.js';
+import { parseScene } from '../scene/scene_reader.js';
+import { loadStage } from '../tracks/track_registry.js';
+import type { OpenTodo } from '../shader/open_todos.js';
+
+export interface ViewRequest {
+  stage: string;
+  view?: string;               // a check view of the stage; none: the scene's camera
+  scene?: string;              // a file under assets/scenes/ instead of the view's
+  source?: 'solution' | 'lab';
+  labFiles?: Record<string, string>;  // a lab "opened from disk": name -> text
+  width: number;
+  height: number;
+  bvh?: boolean;               // stage 08: walk the BVH; default: where it repays itself
+}
+
+export interface ViewResult {
+  ok: boolean;
+  png?: string;  // data URL
+  error?: string;
+  todos: OpenTodo[];
+  notes: string[];
+}
+
+async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: ViewRequest) {
+  const stage = stageById(catalog, req.stage);
+  const view = req.view ? stage.check_views.find((v) => v.name === req.view) : undefined;
+  if (req.view && !view) throw new Error(`stage ${stage.id} has no check view "${req.view}"`);
+  const sceneName = req.scene ?? sceneOfView(stage, view);
+  const sources: Sources = req.labFiles
+    ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
+    : { kind: req.source ?? 'solution' };
+  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh);
+  return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view) };
+}
+
+export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasElement, catalog: Catalog, page: Page): void {
+  const api = {
+    catalog,
+    async renderView(req: ViewRequest): Promise<ViewResult> {
+      canvas.width = req.width;
+      canvas.height = req.height;
+      try {
+        const { renderer, frame } = await makeRenderer(gl, catalog, req);
+        try {
+          renderer.render(frame.camera, frame.time, frame.settings, req.width, req.height);
+          return { ok: true, png: canvas.toDataURL('image/png'), todos: renderer.todos, notes: renderer.notes };
+        } finally {
+          renderer.dispose();
+        }
+      } catch (e) {
+        const error = (e as Error).message;
+        page.showError(error);  // what the page shows a student
+        return { ok: false, error, todos: [], notes: [] };
+      }
+    },
+    // The fragment program as `raylab shader --es --origins` prints it.
+    async assemble(req: { stage: string; scene: string }): Promise<string> {
+      const stage = stageById(catalog, req.stage);
+      const shown = `assets/scenes/${req.scene}`;
+      const url = `${ROOT}/${shown}`;
+      const scene = parseScene(await (await fetch(url)).text(), url, shown);
+      const p = await assembleStagePrograms(catalog, stage, { kind: 'solution' }, scene, `assets/scenes/${req.scene}`);
+      const lines = p.fragment.text.split('\n');
+      return p.fragment.origin.map((o, i) => `${o.file}:${o.line}\t${lines[i]}`).join('\n') + '\n';
+    },
+    // Median wall time of FRAMES frames of the demo's fly-through, each waited for by reading one pixel
+    // back (the browser's equivalent of glFinish), after one warm-up frame.
+    async timeFrames(req: ViewRequest & { frames: number }): Promise<{ medianMs: number; ms: number[] }> {
+      canvas.width = req.width;
+      canvas.height = req.height;
+      const { renderer, frame } = await makeRenderer(gl, catalog, req);
+      const pixel = new Uint8Array(4);
+      const ms: number[] = [];
+      try {
+        for (let i = 0; i <= req.frames; ++i) {
+          const t0 = performance.now();
+          // The native demo's frames (cmd_demo.cpp): the fly-through, 0.1 s apart.
+          const camera = new Camera(flyThroughPose(frame.camera.pose, i), frame.camera.fovYDeg);
+          renderer.render(camera, frame.time + 0.1 * i, frame.settings, req.width, req.height);
+          gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+          if (i > 0) ms.push(performance.now() - t0);
+        }
+      } finally {
+        renderer.dispose();
+      }
+      const sorted = [...ms].sort((a, b) => a - b);
+      return { medianMs: sorted[sorted.length >> 1], ms };
+    },
+  };
+  (window as unknown as { raylab: typeof api }).raylab = api;
+}

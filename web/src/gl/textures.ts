@@ -1,0 +1,88 @@
+// The scene's pictures as one texture array, the sky box as a cube map, and
+// the BVH's data textures (native: framework/src/gl/texture.cpp,
+// raytrace/bvh_buffers.cpp). Images are decoded without colour management,
+// so the texels are the file's bytes, as natively.
+
+async function decode(url: string, size?: { w: number; h: number }, flipY = false): Promise<ImageBitmap> {
+  const r = await fetch(url);
+  if (!r.ok) throw new Error(`${url.replace(/^\//, '')}: cannot load the picture (HTTP ${r.status})`);
+  const options: ImageBitmapOptions = {
+    colorSpaceConversion: 'none',
+    premultiplyAlpha: 'none',
+    imageOrientation: flipY ? 'flipY' : 'from-image',
+  };
+  if (size) Object.assign(options, { resizeWidth: size.w, resizeHeight: size.h, resizeQuality: 'medium' });
+  try {
+    return await createImageBitmap(await r.blob(), options);
+  } catch {
+    throw new Error(`${url.replace(/^\//, '')}: not a picture this browser can decode`);
+  }
+}
+
+// Layers of one size (the largest picture's; smaller ones are stretched, as
+// natively), bottom row first (GL's texture origin), level 0 only: the tracer
+// samples inside a data-dependent loop, where derivatives are undefined.
+export async function textureArray(gl: WebGL2RenderingContext, urls: string[]): Promise<WebGLTexture> {
+  const originals = await Promise.all(urls.map((u) => decode(u)));
+  const w = Math.max(1, ...originals.map((b) => b.width)), h = Math.max(1, ...originals.map((b) => b.height));
+  const layers = await Promise.all(urls.map((u, i) =>
+    originals[i].width === w && originals[i].height === h ? decode(u, undefined, true) : decode(u, { w, h }, true)));
+  const t = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_2D_ARRAY, t);
+  gl.texStorage3D(gl.TEXTURE_2D_ARRAY, 1, gl.RGBA8, w, h, Math.max(1, layers.length));
+  layers.forEach((img, i) => gl.texSubImage3D(gl.TEXTURE_2D_ARRAY, 0, 0, 0, i, w, h, 1, gl.RGBA, gl.UNSIGNED_BYTE, img));
+  gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_WRAP_S, gl.REPEAT);
+  gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_WRAP_T, gl.REPEAT);
+  return t;
+}
+
+// Faces +x, -x, +y, -y, +z, -z, top row first (cube maps are not flipped).
+// WebGL 2 filters across face edges always: there is no seamless switch.
+export async function cubeMap(gl: WebGL2RenderingContext, urls: string[]): Promise<WebGLTexture> {
+  const faces = await Promise.all(urls.map((u) => decode(u)));
+  faces.forEach((f, i) => {
+    if (f.width !== f.height) throw new Error(`sky box face ${urls[i]} is ${f.width}x${f.height}, faces must be square`);
+    if (f.width !== faces[0].width) throw new Error(`sky box face ${urls[i]}: faces must have one size`);
+  });
+  const t = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_CUBE_MAP, t);
+  faces.forEach((f, i) =>
+    gl.texImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, gl.RGBA8, f.width, f.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, f));
+  gl.texParameteri(gl.TEXTURE_CUBE_MAP, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_CUBE_MAP, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  for (const wrap of [gl.TEXTURE_WRAP_S, gl.TEXTURE_WRAP_T, gl.TEXTURE_WRAP_R])
+    gl.texParameteri(gl.TEXTURE_CUBE_MAP, wrap, gl.CLAMP_TO_EDGE);
+  return t;
+}
+
+// A data texture read with texelFetch only (no filtering).
+export function dataTexture(
+  gl: WebGL2RenderingContext,
+  data: { width: number; height: number; data: Float32Array | Int32Array },
+): WebGLTexture {
+  const t = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  const float = data.data instanceof Float32Array;
+  gl.texImage2D(gl.TEXTURE_2D, 0, float ? gl.RGBA32F : gl.R32I, data.width, data.height, 0,
+    float ? gl.RGBA : gl.RED_INTEGER, float ? gl.FLOAT : gl.INT, data.data);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  return t;
+}
+
+// One picture, bottom row first, mipmapped (the fur track's colour map,
+// pattern and fin map; native: Texture2D).
+export async function texture2D(gl: WebGL2RenderingContext, url: string): Promise<WebGLTexture> {
+  const img = await decode(url, undefined, true);
+  const t = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+  return t;
+}

@@ -1,0 +1,55 @@
+// Which renderer draws which track, and how its scenes are read (native:
+// framework/src/tracks/track_registry.cpp). Everything that draws a stage -
+// the page, the tests, the benchmark - comes through here.
+import type { CameraPose } from '../app/camera.js';
+import { ROOT, type Catalog, type Sources, type StageJson } from '../course/catalog.js';
+import { FurRenderer } from '../fur/fur_renderer.js';
+import { type FurScene, parseFurScene } from '../fur/mesh/fur_scene.js';
+import { makeShape } from '../fur/mesh/mesh_shapes.js';
+import { parseObjMesh } from '../fur/mesh/obj_mesh.js';
+import { StageRenderer } from '../raytrace/stage_renderer.js';
+import { parseScene } from '../scene/scene_reader.js';
+import type { TrackRenderer } from './track_renderer.js';
+
+export interface LoadedStage {
+  renderer: TrackRenderer;
+  camera: CameraPose;  // the scene's
+  fovYDeg: number;
+  summary: string;     // one line about the scene, for the page
+}
+
+async function fetchText(shown: string, url: string, what: string): Promise<string> {
+  const r = await fetch(url);
+  if (!r.ok) throw new Error(`${what} ${shown} does not exist`);
+  return r.text();
+}
+
+// SCENENAME: a file under assets/scenes/ ("lite.json", "fur/torus.json").
+// BVH: the ray tracer's BVH switch (stage 08); undefined: as natively.
+export async function loadStage(
+  gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
+): Promise<LoadedStage> {
+  const shown = `assets/scenes/${sceneName}`;
+  const url = `${ROOT}/${shown}`;
+  const text = await fetchText(shown, url, 'scene file');
+  if (stage.track === 'raytrace') {
+    const scene = parseScene(text, url, shown);
+    const renderer = await StageRenderer.create(gl, catalog, stage, sources, scene, shown, bvh);
+    return {
+      renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
+      summary: `${scene.spheres.length} spheres, ${scene.triangles.length} triangles, ${scene.tori.length} tori, ${scene.lights.length} lights`,
+    };
+  }
+  if (stage.track === 'fur') {
+    const scene: FurScene = parseFurScene(text, url, shown);
+    const mesh = scene.mesh.obj
+      ? parseObjMesh(await fetchText(scene.mesh.obj.replace(`${ROOT}/`, ''), scene.mesh.obj, 'OBJ file'), scene.mesh.obj.replace(`${ROOT}/`, ''))
+      : makeShape(scene.mesh.shape, scene.mesh.detail);
+    const renderer = await FurRenderer.create(gl, catalog, stage, sources, scene, mesh);
+    return {
+      renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
+      summary: `${mesh.indices.length / 3} triangles, ${scene.fur.shells} shells`,
+    };
+  }
+  throw new Error(`stage ${stage.id}: the web build has no renderer for track "${stage.track}"`);
+}

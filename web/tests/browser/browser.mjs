@@ -1,0 +1,60 @@
+// Shared by the browser tests and the benchmark: the local server, and
+// Debian's Chromium driven by puppeteer-core (no browser download). WebGL 2
+// runs without a GPU on Mesa's llvmpipe through ANGLE's EGL back end.
+import { spawn } from 'node:child_process';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import puppeteer from 'puppeteer-core';
+
+export const webDir = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const projectRoot = join(webDir, '..');
+
+// `node tools/serve.mjs --port 0`; resolves to the page's address.
+export function startServer() {
+  const child = spawn(process.execPath, [join(webDir, 'tools/serve.mjs'), '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  return new Promise((resolve, reject) => {
+    let out = '';
+    child.stdout.on('data', (d) => {
+      out += d;
+      const m = /http:\/\/\S+\/web\//.exec(out);
+      if (m) resolve({ url: m[0], stop: () => child.kill() });
+    });
+    child.stderr.on('data', (d) => (out += d));
+    child.on('exit', (code) => reject(new Error(`the server stopped (exit ${code}): ${out.trim()}`)));
+  });
+}
+
+// ANGLE selects the back end: gl-egl (Mesa llvmpipe, about 8x faster here) or
+// swiftshader. RAYLAB_CHROMIUM overrides the browser's path.
+export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl') {
+  const args = [`--use-angle=${angle}`, '--ignore-gpu-blocklist', '--enable-unsafe-swiftshader'];
+  if (process.getuid?.() === 0) args.push('--no-sandbox');  // Chromium refuses root with its sandbox
+  return puppeteer.launch({
+    executablePath: process.env.RAYLAB_CHROMIUM ?? '/usr/bin/chromium',
+    headless: true,
+    args,
+    protocolTimeout: 600_000,
+  });
+}
+
+// A page of the web build with its console errors and page errors collected.
+export async function openPage(browser, url) {
+  const page = await browser.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  await page.goto(`${url}?test=1`, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.raylab !== undefined, { timeout: 30_000 });
+  const renderer = await page.evaluate(() => {
+    const gl = document.getElementById('view').getContext('webgl2');
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    return gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
+  });
+  return { page, problems, renderer };
+}
+
+export function dataUrlBytes(dataUrl) {
+  return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
+}

@@ -1,0 +1,127 @@
+// The web build's tests in a real browser (ctest label `web`):
+//  1. every stage's solution (both tracks), from every check view, equals the
+//     native headless render (tests/reference/<stage>/<view>.png) within the
+//     graders' tolerance (`raylab compare`);
+//  2. the page assembles each ray-tracing stage's program exactly as natively
+//     (`raylab shader --es --origins`), line for line, file:line for file:line;
+//  3. every untouched lab lists its open TODOs and shows the same
+//     unfinished-TODO stripes as `raylab render --lab` of it;
+//  4. a lab with a syntax error reports the right file:line in the page;
+//  5. controls: a wrong picture and another scene's program are told apart;
+//  6. no console errors, page errors or failed requests.
+// Usage: node tests/browser/render_views.mjs --raylab ../build/raylab --out DIR [--stages 01,08]
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { dataUrlBytes, launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
+const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
+const outDir = resolve(option('--out', join(projectRoot, 'build/web-test')));
+const only = option('--stages', '').split(',').filter(Boolean);
+
+const failures = [];
+const fail = (what) => { failures.push(what); console.log(`FAIL ${what}`); };
+
+const server = await startServer();
+const browser = await launchBrowser();
+try {
+  const { page, problems, renderer } = await openPage(browser, server.url);
+  console.log(`browser: ${await browser.version()}, WebGL renderer: ${renderer}`);
+  const catalog = await page.evaluate(() => window.raylab.catalog);
+  const stages = catalog.stages.map((s) => s.info)
+    .filter((s) => (only.length === 0 || only.some((o) => s.id === o || s.id.startsWith(`${o}-`))));
+
+  for (const stage of stages) {
+    // 1. The solution from every check view against the native reference.
+    for (const view of stage.check_views) {
+      const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, view: view.name, width: 160, height: 120 });
+      if (!r.ok) { fail(`${stage.id}/${view.name}: ${r.error}`); continue; }
+      const file = join(outDir, stage.id, `${view.name}.png`);
+      mkdirSync(join(outDir, stage.id), { recursive: true });
+      writeFileSync(file, dataUrlBytes(r.png));
+      const ref = join(projectRoot, 'tests/reference', stage.id, `${view.name}.png`);
+      const c = spawnSync(raylab, ['compare', file, ref, '--heat-map', file.replace(/\.png$/, '.diff.png')], { encoding: 'utf8' });
+      const verdict = (c.stdout + c.stderr).trim().replace(`${file}: `, '');
+      if (c.status === 0) console.log(`ok   ${stage.id}/${view.name}: ${verdict}`);
+      else fail(`${stage.id}/${view.name}: ${verdict}`);
+    }
+
+    // 2. The assembled program, line by line with its origin, against native
+    // (`raylab shader` prints ray-tracing programs).
+    for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])]) {
+      const web = await page.evaluate((req) => window.raylab.assemble(req), { stage: stage.id, scene: sceneName });
+      const native = execFileSync(raylab, ['shader', '--stage', stage.id, '--solution', '--es', '--origins', '--scene', join(projectRoot, 'assets/scenes', sceneName)], { encoding: 'utf8', cwd: projectRoot });
+      // The BVH accessors are the one file the web replaces (web/shaders/bvh_access.glsl).
+      const keep = (lines) => lines.split('\n').filter((l) => !/^(framework|web)\/shaders\/bvh_access\.glsl:/.test(l));
+      const a = keep(web), b = keep(native);
+      const at = a.findIndex((l, i) => l !== b[i]);
+      if (at < 0 && a.length === b.length) console.log(`ok   ${stage.id} + ${sceneName}: the page assembles the same ${a.length} lines`);
+      else fail(`${stage.id} + ${sceneName}: assembled line ${at + 1} differs:\n  web:    ${a[at]}\n  native: ${b[at]}`);
+    }
+
+    // 3. The untouched lab: open TODOs listed, stripes drawn.
+    const lab = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, source: 'lab', width: 480, height: 360 });
+    if (!lab.ok) { fail(`labs/${stage.id}: ${lab.error}`); continue; }
+    if (lab.todos.length === 0) fail(`labs/${stage.id}: no open TODO found`);
+    // A TODO in a geometry shader runs natively only: the web's stand-in
+    // draws that part finished, so the picture cannot equal the native one.
+    const nativeOnly = lab.todos.filter((t) => t.file.endsWith('.geom'));
+    if (nativeOnly.length) {
+      console.log(`ok   labs/${stage.id}: ${lab.todos.length} open TODOs listed (${nativeOnly.map((t) => t.title.split(':')[0]).join(', ')} in a geometry shader: native only, picture not compared)`);
+      continue;
+    }
+    const file = join(outDir, stage.id, 'unfinished.png');
+    writeFileSync(file, dataUrlBytes(lab.png));
+    const native = join(outDir, stage.id, 'unfinished.native.png');
+    execFileSync(raylab, ['render', '--stage', stage.id, '--lab', join(projectRoot, 'labs'), '--size', '480x360', '--out', native], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+    const c = spawnSync(raylab, ['compare', file, native], { encoding: 'utf8' });
+    if (c.status === 0) console.log(`ok   labs/${stage.id}: ${lab.todos.length} open TODOs, the stripes as natively`);
+    else fail(`labs/${stage.id} untouched: ${c.stdout.trim()}`);
+  }
+
+  // 4. A syntax error in a student's file: the page names the file and line.
+  const first = catalog.stages.map((s) => s.info).find((s) => s.track === 'raytrace' && stages.includes(s)) ?? catalog.stages[0].info;
+  const labDir = join(projectRoot, 'labs', first.id);
+  const files = Object.fromEntries(readdirSync(labDir).filter((n) => /\.(glsl|vert|frag)$/.test(n)).map((n) => [n, readFileSync(join(labDir, n), 'utf8')]));
+  const victim = Object.keys(files).find((n) => n.startsWith('intersect_')) ?? Object.keys(files)[0];
+  const lines = files[victim].split('\n');
+  const badLine = lines.findIndex((l) => /^\s*return\b/.test(l)) + 1;
+  lines.splice(badLine - 1, 0, '    float = 1.0;');  // a declaration without a name
+  files[victim] = lines.join('\n');
+  const broken = await page.evaluate((req) => window.raylab.renderView(req), { stage: first.id, labFiles: files, width: 160, height: 120 });
+  const expected = `my-lab/${first.id}/${victim}:`;
+  const shown = await page.$eval('#messages', (m) => m.textContent);
+  if (broken.ok) fail(`a syntax error in ${victim}: the page compiled it`);
+  else if (!new RegExp(`${expected}${badLine}:`).test(shown))
+    fail(`a syntax error at ${victim}:${badLine}: the page says:\n${shown}`);
+  else console.log(`ok   a syntax error in ${victim}:${badLine}: the page says "${shown.split('\n').find((l) => l.includes(expected))}"`);
+
+  // 5. Controls: the checks above can fail. A wrong picture (the untouched
+  // lab's stripes against the solution's reference) differs, and another
+  // scene's program is not the same program.
+  const control = await page.evaluate((req) => window.raylab.renderView(req), { stage: first.id, source: 'lab', view: first.check_views[0].name, width: 160, height: 120 });
+  const controlFile = join(outDir, 'control-wrong-picture.png');
+  writeFileSync(controlFile, dataUrlBytes(control.png));
+  const wrong = spawnSync(raylab, ['compare', controlFile, join(projectRoot, 'tests/reference', first.id, `${first.check_views[0].name}.png`)], { encoding: 'utf8' });
+  if (wrong.status !== 1) fail(`control: the unfinished lab's picture passed as the solution's (${wrong.stdout.trim()})`);
+  else console.log('ok   control: an unfinished picture is told apart from the solution\'s');
+  const other = catalog.scenes.find((n) => n !== first.scene);
+  const webOther = await page.evaluate((req) => window.raylab.assemble(req), { stage: first.id, scene: other });
+  const nativeOwn = execFileSync(raylab, ['shader', '--stage', first.id, '--solution', '--es', '--origins'], { encoding: 'utf8', cwd: projectRoot });
+  if (webOther === nativeOwn) fail(`control: ${other}'s program equals ${first.scene}'s`);
+  else console.log(`ok   control: the program for ${other} is told apart from ${first.scene}'s`);
+
+  // 6. Nothing went wrong behind the scenes.
+  for (const p of problems) fail(p);
+} finally {
+  await browser.close();
+  server.stop();
+}
+
+if (failures.length) {
+  console.log(`\n${failures.length} web check(s) failed; pictures and heat maps in ${outDir}`);
+  process.exit(1);
+}
+console.log(`\nall web checks passed (pictures in ${outDir})`);

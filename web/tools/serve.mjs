@@ -1,0 +1,71 @@
+// Serves the web build locally: `npm run serve [-- --port N] [-- --host H]`.
+// Only what the page reads is served (web/ without node_modules, the
+// shaders, solution/, labs/, assets/), read-only, from the project root, so
+// the page loads the very files the native build compiles.
+import { createServer } from 'node:http';
+import { createReadStream, existsSync, statSync } from 'node:fs';
+import { extname, join, normalize, sep, dirname } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = args.indexOf(name);
+  return i >= 0 && args[i + 1] ? args[i + 1] : fallback;
+};
+const port = Number(option('--port', process.env.PORT ?? '8080'));
+const host = option('--host', '127.0.0.1');
+if (!Number.isInteger(port) || port < 0 || port > 65535) {
+  console.error(`serve: --port ${option('--port')}: expected a port number 0..65535`);
+  process.exit(2);
+}
+if (!existsSync(join(root, 'web/dist/app/main.js'))) {
+  console.error('serve: web/dist is missing: run `npm run build` in web/ first');
+  process.exit(2);
+}
+
+const ALLOWED = ['web/', 'framework/shaders/', 'solution/', 'labs/', 'assets/'];
+const TYPES = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css',
+  '.json': 'application/json', '.map': 'application/json', '.png': 'image/png', '.md': 'text/markdown; charset=utf-8',
+  '.glsl': 'text/plain; charset=utf-8', '.vert': 'text/plain; charset=utf-8', '.frag': 'text/plain; charset=utf-8',
+  '.geom': 'text/plain; charset=utf-8', '.obj': 'text/plain; charset=utf-8',
+};
+
+const server = createServer((req, res) => {
+  let path;
+  try {
+    path = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '');
+  } catch {
+    res.writeHead(400).end('bad request');
+    return;
+  }
+  if (path === '' || path === 'web') {
+    res.writeHead(302, { Location: '/web/' }).end();
+    return;
+  }
+  if (path.endsWith('/')) path += 'index.html';
+  const rel = normalize(path);
+  const file = join(root, rel);
+  const allowed = !rel.startsWith('..') && ALLOWED.some((p) => rel.split(sep).join('/').startsWith(p)) &&
+    !rel.split(sep).includes('node_modules');
+  if (req.method !== 'GET' && req.method !== 'HEAD') {
+    res.writeHead(405).end();
+    return;
+  }
+  if (!allowed || !existsSync(file) || !statSync(file).isFile()) {
+    res.writeHead(404, { 'Content-Type': 'text/plain' }).end(`not found: /${path}`);
+    return;
+  }
+  res.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', 'Cache-Control': 'no-cache' });
+  if (req.method === 'HEAD') res.end();
+  else createReadStream(file).pipe(res);
+});
+server.on('error', (e) => {
+  console.error(`serve: cannot listen on ${host}:${port}: ${e.code === 'EADDRINUSE' ? 'the port is in use (try --port N)' : e.message}`);
+  process.exit(2);
+});
+server.listen(port, host, () => {
+  const { port: actual } = server.address();
+  console.log(`RayLab web: http://${host === '0.0.0.0' ? 'localhost' : host}:${actual}/web/  (Ctrl+C stops)`);
+});

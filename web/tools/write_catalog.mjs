@@ -1,0 +1,46 @@
+// Writes dist/catalog.json: what the page may fetch from the project - every
+// stage.json with the names of its solution files, the framework's and the
+// web's shader folders, the variant folders, the labs shipped in labs/ and the
+// scene files. The page never asks the server for a file that is not listed,
+// so a missing file is an error message of ours, not a 404 in the console.
+// Run by `npm run build`.
+import { readdirSync, readFileSync, statSync, writeFileSync, mkdirSync, renameSync } from 'node:fs';
+import { join, dirname } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const isDir = (p) => { try { return statSync(p).isDirectory(); } catch { return false; } };
+const filesIn = (dir) => (isDir(dir) ? readdirSync(dir).filter((n) => !isDir(join(dir, n))).sort() : []);
+const shaderFiles = (dir) => filesIn(dir).filter((n) => /\.(glsl|vert|frag|geom)$/.test(n));
+
+const stages = readdirSync(join(root, 'solution'))
+  .filter((id) => isDir(join(root, 'solution', id)) && filesIn(join(root, 'solution', id)).includes('stage.json'))
+  .sort()
+  .map((id) => ({
+    info: JSON.parse(readFileSync(join(root, 'solution', id, 'stage.json'), 'utf8')),
+    solutionFiles: shaderFiles(join(root, 'solution', id)),
+    labFiles: shaderFiles(join(root, 'labs', id)),
+  }));
+
+const variants = {};
+const variantRoot = join(root, 'framework/shaders/variants');
+for (const variant of readdirSync(variantRoot).filter((n) => isDir(join(variantRoot, n))))
+  for (const stage of readdirSync(join(variantRoot, variant)))
+    variants[`${variant}/${stage}`] = shaderFiles(join(variantRoot, variant, stage));
+
+const catalog = {
+  stages,
+  framework: shaderFiles(join(root, 'framework/shaders')),
+  web: shaderFiles(join(root, 'web/shaders')),
+  variants,
+  // Ray-tracing scenes at the top, fur scenes under fur/.
+  scenes: [
+    ...filesIn(join(root, 'assets/scenes')).filter((n) => n.endsWith('.json')),
+    ...filesIn(join(root, 'assets/scenes/fur')).filter((n) => n.endsWith('.json')).map((n) => `fur/${n}`),
+  ],
+};
+const out = join(root, 'web/dist/catalog.json');
+mkdirSync(dirname(out), { recursive: true });
+writeFileSync(out + '.tmp', JSON.stringify(catalog, null, 1));
+renameSync(out + '.tmp', out);
+console.log(`web: wrote dist/catalog.json (${stages.length} stages, ${catalog.scenes.length} scenes)`);

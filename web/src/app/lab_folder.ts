@@ -1,26 +1,101 @@
-// A student's lab opened from disk (<input type="file" webkitdirectory>,
-// which Chrome, Edge, Firefox and Safari support): either their whole labs/
-// folder (one sub-folder per stage) or one stage folder. Only shader files
-// are read; nothing is uploaded anywhere.
+// A student's lab opened from disk: their whole labs/ folder (one
+// sub-folder per stage) or one stage folder. Only shader files are read;
+// nothing is uploaded anywhere.
+//  - Where the browser offers the File System Access API (Chrome, Edge), the
+//    folder stays open and is watched: saving a file reloads the stage, as
+//    the native window does.
+//  - Elsewhere (Firefox, Safari) <input type="file" webkitdirectory> reads a
+//    snapshot; picking the folder again reloads it.
 import type { Sources } from '../course/catalog.js';
 
 const SHADER = /\.(glsl|vert|frag|geom)$/;
 
-export async function labFromFiles(files: FileList | File[], stageId: string): Promise<Sources> {
+function noShaders(root: string, stageId: string): Error {
+  return new Error(`${root}/ has no shader files for stage ${stageId} (open your labs/ folder or labs/${stageId}/)`);
+}
+
+// Which folder holds STAGEID's files, given the picked folder ROOT and the
+// names of the folders in it: ROOT/<stage> in a whole labs/ folder, else
+// ROOT itself - unless ROOT is another stage's folder, or a labs/ folder
+// without this stage, which would silently run the wrong code.
+function stageFolder(root: string, subfolders: string[], stageId: string, stageIds: string[]): 'nested' | 'root' {
+  if (subfolders.includes(stageId)) return 'nested';
+  if (stageIds.includes(root) && root !== stageId)
+    throw new Error(`you opened ${root}/, the folder of stage ${root}: for stage ${stageId} open your labs/ folder or ${stageId}/`);
+  if (subfolders.some((f) => stageIds.includes(f)))
+    throw new Error(`${root}/ has no ${stageId}/ folder (it has ${subfolders.filter((f) => stageIds.includes(f)).join(', ')})`);
+  return 'root';
+}
+
+export async function labFromFiles(files: FileList | File[], stageId: string, stageIds: string[]): Promise<Sources> {
   const list = Array.from(files);
   if (list.length === 0) throw new Error('the folder is empty');
-  const root = (list[0].webkitRelativePath || list[0].name).split('/')[0];
+  const root = (list[0]!.webkitRelativePath || list[0]!.name).split('/')[0]!;
   const byPath = new Map(list.map((f) => [f.webkitRelativePath || f.name, f]));
-  // labs/<stage>/<file> inside the picked folder, or <file> directly in it.
-  const nested = [...byPath.keys()].some((p) => p.startsWith(`${root}/${stageId}/`));
+  const subfolders = [...new Set([...byPath.keys()].map((p) => p.split('/')).filter((p) => p.length > 2).map((p) => p[1]!))];
+  const nested = stageFolder(root, subfolders, stageId, stageIds) === 'nested';
   const prefix = nested ? `${root}/${stageId}/` : `${root}/`;
-  const files2 = new Map<string, string>();
+  const texts = new Map<string, string>();
   for (const [path, file] of byPath) {
     if (!path.startsWith(prefix)) continue;
     const name = path.slice(prefix.length);
-    if (!name.includes('/') && SHADER.test(name)) files2.set(name, await file.text());
+    if (!name.includes('/') && SHADER.test(name)) texts.set(name, await file.text());
   }
-  if (files2.size === 0)
-    throw new Error(`${root}/ has no shader files for stage ${stageId} (open your labs/ folder or labs/${stageId}/)`);
-  return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: files2 };
+  if (texts.size === 0) throw noShaders(root, stageId);
+  return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: texts };
+}
+
+// The File System Access API's folder picker (not yet in TypeScript's DOM types).
+type DirectoryPicker = (options?: { id?: string; mode?: 'read' }) => Promise<FileSystemDirectoryHandle>;
+const picker = (window as unknown as { showDirectoryPicker?: DirectoryPicker }).showDirectoryPicker;
+export const canWatchFolders = typeof picker === 'function';
+
+// An open lab folder that can tell when its shader files change.
+export class WatchedLab {
+  private stamps = '';
+
+  // STAGEIDS: every stage's folder name, to tell a labs/ folder from a stage's.
+  constructor(private root: FileSystemDirectoryHandle, private stageIds: string[]) {}
+
+  static async pick(stageIds: string[]): Promise<WatchedLab> {
+    return new WatchedLab(await picker!({ id: 'raylab-lab', mode: 'read' }), stageIds);
+  }
+
+  get name(): string {
+    return this.root.name;
+  }
+
+  // The stage's folder: ROOT/<stage> when there is one, else ROOT itself.
+  private async folder(stageId: string): Promise<{ dir: FileSystemDirectoryHandle; shown: string }> {
+    const subfolders: string[] = [];
+    for await (const [name, handle] of (this.root as unknown as AsyncIterable<[string, FileSystemHandle]>))
+      if (handle.kind === 'directory') subfolders.push(name);
+    if (stageFolder(this.root.name, subfolders, stageId, this.stageIds) === 'nested')
+      return { dir: await this.root.getDirectoryHandle(stageId), shown: `${this.root.name}/${stageId}` };
+    return { dir: this.root, shown: this.root.name };
+  }
+
+  private async shaderFiles(stageId: string): Promise<{ shown: string; files: [string, File][] }> {
+    const { dir, shown } = await this.folder(stageId);
+    const files: [string, File][] = [];
+    for await (const [name, handle] of (dir as unknown as AsyncIterable<[string, FileSystemHandle]>))
+      if (handle.kind === 'file' && SHADER.test(name)) files.push([name, await (handle as FileSystemFileHandle).getFile()]);
+    files.sort(([a], [b]) => (a < b ? -1 : 1));
+    return { shown, files };
+  }
+
+  async read(stageId: string): Promise<Sources> {
+    const { shown, files } = await this.shaderFiles(stageId);
+    if (files.length === 0) throw noShaders(this.root.name, stageId);
+    this.stamps = files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|');
+    const texts = new Map<string, string>();
+    for (const [name, file] of files) texts.set(name, await file.text());
+    return { kind: 'disk', shown, files: texts };
+  }
+
+  // True when a shader file was added, removed or saved since the last read().
+  async changed(stageId: string): Promise<boolean> {
+    const { files } = await this.shaderFiles(stageId);
+    return files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|') !== this.stamps;
+  }
 }

@@ -4,9 +4,10 @@
 // in the overlay; save a screenshot.
 import { Camera, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
-import { labFromFiles } from './lab_folder.js';
+import { canWatchFolders, labFromFiles, WatchedLab } from './lab_folder.js';
 import { type Catalog, type Sources, type StageJson, stageById } from '../course/catalog.js';
-import { applyFurKey, applySettingsKey, COLOR_MODES, defaultSettings, FUR_TECHNIQUES, type RenderSettings } from '../raytrace/render_settings.js';
+import { defaultSettings, type RenderSettings } from '../raytrace/render_settings.js';
+import { applySettingsKey, settingsRows } from './settings_keys.js';
 import { loadStage } from '../tracks/track_registry.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
 
@@ -23,38 +24,52 @@ export class Page {
   private paused = false;
   private vsync = true;
   private last = 0;
-  private intervals: number[] = [];
   private held = new Set<string>();
   private note = '';
-  private disk: Sources | null = null;
+  private watched: WatchedLab | null = null;  // a folder the page watches (Chrome, Edge)
+  private picked: File[] | null = null;  // a snapshot of a folder (other browsers)
   private loading = 0;
   private demo = false;
-  private track = 'raytrace';
   private sceneShells = 0;
+  private shown: StageJson | null = null;  // the stage being drawn (the select can be ahead of it while loading)
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {}
 
   start(): void {
     const stageSel = $<HTMLSelectElement>('stage');
     for (const { info } of this.catalog.stages) {
-      const o = new Option(`${info.id}: ${info.title}`, info.id);
+      // Short: the id and the topic before the title's first colon (the full title is in the side panel).
+      const o = new Option(`${info.id}: ${info.title.split(':')[0]}`, info.id);
+      o.title = info.title;
       stageSel.add(o);
     }
     stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ?? '';
     stageSel.onchange = () => { this.demo = false; this.fillScenes(); void this.load(); };
     $<HTMLSelectElement>('source').onchange = (e) => {
-      if ((e.target as HTMLSelectElement).value === 'disk') $<HTMLInputElement>('folder').click();
-      else void this.load();
-    };
-    $<HTMLInputElement>('folder').onchange = async (e) => {
-      const files = (e.target as HTMLInputElement).files;
-      try {
-        this.disk = await labFromFiles(files ?? [], this.stage().id);
+      if ((e.target as HTMLSelectElement).value !== 'disk') return void this.load();
+      if (!canWatchFolders) return $<HTMLInputElement>('folder').click();
+      WatchedLab.pick(this.stageIds()).then((lab) => {
+        this.watched = lab;
         void this.load();
-      } catch (err) {
-        this.showError(String((err as Error).message));
-      }
+      }, (err: Error) => {
+        // Cancelled or refused: back to what was shown.
+        if (err.name !== 'AbortError') this.showError(err.message);
+        $<HTMLSelectElement>('source').value = this.watched || this.picked ? 'disk' : 'solution';
+      });
     };
+    $<HTMLInputElement>('folder').onchange = (e) => {
+      const files = (e.target as HTMLInputElement).files;
+      if (!files || files.length === 0) return;
+      this.picked = Array.from(files);
+      void this.load();
+    };
+    $<HTMLInputElement>('folder').addEventListener('cancel', () => {
+      $<HTMLSelectElement>('source').value = this.picked ? 'disk' : 'solution';
+    });
+    // Browsers without folder watching: read the folder again after an edit.
+    $('reload').onclick = () => $<HTMLInputElement>('folder').click();
+    // A watched folder: a saved file reloads the stage (as the native window does).
+    setInterval(() => void this.reloadIfChanged(), 1000);
     $<HTMLSelectElement>('scene').onchange = () => void this.load();
     $<HTMLSelectElement>('size').onchange = () => this.resize();
     $('demo-lite').onclick = () => this.startDemo('lite.json');
@@ -66,6 +81,10 @@ export class Page {
     this.resize();
     void this.load();
     this.schedule();
+  }
+
+  private stageIds(): string[] {
+    return this.catalog.stages.map((s) => s.info.id);
   }
 
   private stage(): StageJson {
@@ -97,38 +116,77 @@ export class Page {
     void this.load();
   }
 
-  private sources(): Sources {
+  private async sources(): Promise<Sources> {
     const kind = $<HTMLSelectElement>('source').value;
-    if (kind === 'disk' && this.disk) return this.disk;
-    return { kind: kind === 'lab' ? 'lab' : 'solution' };
+    if (kind !== 'disk') return { kind: kind === 'lab' ? 'lab' : 'solution' };
+    if (this.watched) return this.watched.read(this.stage().id);
+    if (this.picked) return labFromFiles(this.picked, this.stage().id, this.stageIds());
+    throw new Error('pick your lab folder (Code: my lab folder…)');
   }
 
-  // Builds the renderer for the current choices; a failure leaves the
-  // message (file:line for compile errors) and a black picture.
-  async load(): Promise<void> {
+  private checking = false;
+  private async reloadIfChanged(): Promise<void> {
+    if (!this.watched || this.checking || $<HTMLSelectElement>('source').value !== 'disk') return;
+    this.checking = true;
+    try {
+      if (await this.watched.changed((this.shown ?? this.stage()).id)) await this.load(true);
+    } catch {
+      // The folder went away or permission was withdrawn: stop watching it.
+      this.watched = null;
+    } finally {
+      this.checking = false;
+    }
+  }
+
+  // Builds the renderer for the current choices; a failure shows the
+  // message (file:line for compile errors). RELOAD (a saved file): the
+  // camera and clock stay, and on a failure the last version that compiled
+  // keeps running, as in the native window.
+  async load(reload = false): Promise<void> {
     const ticket = ++this.loading;
     const stage = this.stage();
-    this.renderer?.dispose();
-    this.renderer = null;
-    this.track = stage.track;
     $('title').textContent = `${stage.id}: ${stage.title}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
-    this.showMessage('compiling…');
+    if (!reload) this.showMessage('compiling…');
     try {
-      const loaded = await loadStage(this.gl, this.catalog, stage, this.sources(), sceneName);
+      const sources = await this.sources();
+      const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName);
       if (ticket !== this.loading) return loaded.renderer.dispose();
+      this.renderer?.dispose();
       this.renderer = loaded.renderer;
-      this.sceneShells = Number(/(\d+) shells/.exec(loaded.summary)?.[1] ?? 0);
-      this.camera = frameOfView(loaded.camera, loaded.fovYDeg).camera;
-      this.time = 0;
+      this.sceneShells = loaded.sceneShells;
+      this.shown = stage;
+      if (!reload) {
+        // A new stage or scene starts as the native window does: its own
+        // camera, the clock at 0, every switch at its default.
+        const start = frameOfView(loaded.camera, loaded.fovYDeg);
+        this.camera = start.camera;
+        this.settings = start.settings;
+        this.time = 0;
+        this.paused = false;
+        this.note = '';
+      }
+      $('reload').hidden = !(sources.kind === 'disk' && !this.watched);
       const todos = loaded.renderer.todos.map((t) => `${t.file}:${t.line}: ${t.title}`);
-      const notes = loaded.renderer.notes.map((n) => `Web build: ${n}.`);
+      const notes = loaded.renderer.notes.map((n) => `In the browser: ${n}.`);
+      const from = sources.kind === 'disk' ? `Your files: ${sources.shown}/${this.watched ? ' (watched: save a file to reload)' : ' (pick the folder again after editing)'}` : '';
       this.showMessage([
-        todos.length ? `Unfinished (the magenta stripes):\n${todos.join('\n')}` : `Ready: ${loaded.summary}.`,
+        todos.length ? `Unfinished (magenta stripes where this code runs):\n${todos.join('\n')}` : `Ready: ${loaded.summary}.`,
+        ...(from ? [from] : []),
         ...notes,
       ].join('\n\n'));
     } catch (e) {
-      if (ticket === this.loading) this.showError((e as Error).message);
+      if (ticket !== this.loading) return;
+      const message = (e as Error).message;
+      if (reload && this.renderer) {
+        this.showError(`${message}\n\n(still showing the last version that compiled)`, true);
+        return;
+      }
+      this.renderer?.dispose();
+      this.renderer = null;
+      this.shown = null;
+      $('overlay').textContent = '';
+      this.showError(message);
     }
   }
 
@@ -138,10 +196,11 @@ export class Page {
     m.textContent = text;
   }
 
-  showError(text: string): void {
+  showError(text: string, keepPicture = false): void {
     const m = $('messages');
     m.className = 'error';
     m.textContent = text;
+    if (keepPicture) return;
     this.gl.clearColor(0, 0, 0, 1);
     this.gl.clear(this.gl.COLOR_BUFFER_BIT);
   }
@@ -149,9 +208,7 @@ export class Page {
   private bindInput(): void {
     const c = this.canvas;
     c.addEventListener('keydown', (e) => {
-      const changed = this.track === 'fur'
-        ? applyFurKey(this.settings, e.key, this.sceneShells)
-        : applySettingsKey(this.settings, e.key);
+      const changed = this.shown ? applySettingsKey(this.shown, this.settings, e.key, this.sceneShells) : null;
       if (changed) this.note = changed;
       else if (e.key === 'p' || e.key === 'P') { this.paused = !this.paused; this.note = this.paused ? 'paused' : 'running'; }
       else if (e.key === 'v' || e.key === 'V') { this.vsync = !this.vsync; this.note = `vsync ${this.vsync ? 'on' : 'off'}`; }
@@ -177,7 +234,6 @@ export class Page {
   private frame(): void {
     const now = performance.now();
     const dt = this.last ? (now - this.last) / 1000 : 0;
-    if (this.last) this.intervals = [...this.intervals, now - this.last].slice(-FRAME_WINDOW);
     this.last = now;
     if (!this.paused) this.time += dt;
     const step = MOVE_UNITS_PER_SECOND * dt;
@@ -186,24 +242,31 @@ export class Page {
     if (this.renderer) {
       const camera = this.demo ? new Camera(flyThroughPose(this.camera.pose, this.time * 10), this.camera.fovYDeg) : this.camera;
       this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);
+      // The frame time: waited for by reading one pixel back (the browser's
+      // glFinish), so that it is the drawing's time, not how fast frames are
+      // queued - and so that without vsync the queue cannot grow without end.
+      this.gl.readPixels(0, 0, 1, 1, this.gl.RGBA, this.gl.UNSIGNED_BYTE, this.pixel);
+      this.frameTimes = [...this.frameTimes, performance.now() - now].slice(-FRAME_WINDOW);
       this.updateOverlay();
     }
     this.schedule();
   }
 
+  private pixel = new Uint8Array(4);
+  private frameTimes: number[] = [];
+
   private updateOverlay(): void {
-    const sorted = [...this.intervals].sort((a, b) => a - b);
-    const median = sorted.length ? sorted[sorted.length >> 1] : 0;
-    const s = this.settings, on = (b: boolean) => (b ? 'on' : 'off');
-    $('overlay').textContent =
-      `${this.stage().id}  ${this.canvas.width}x${this.canvas.height}\n` +
-      `frame ${median.toFixed(1)} ms (${median ? (1000 / median).toFixed(1) : '-'} fps)${this.vsync ? ', vsync' : ''}\n` +
-      (this.track === 'fur'
-        ? `shells ${s.shells || this.sceneShells}  fins ${on(s.fins)}  length x${s.furLength.toPrecision(3)}\n` +
-          `technique ${FUR_TECHNIQUES[s.furTechnique]}\n`
-        : `shadows ${on(s.shadows)}  depth ${s.maxDepth}  glow ${on(s.glow)}\n` +
-          `normal maps ${on(s.normalMaps)}  colour ${COLOR_MODES[s.colorMode]}\n`) +
-      `time ${this.time.toFixed(1)} s${this.paused ? ' (paused)' : ''}${this.note ? `\n${this.note}` : ''}`;
+    const sorted = [...this.frameTimes].sort((a, b) => a - b);
+    const median = sorted.length ? sorted[sorted.length >> 1]! : 0;
+    if (!this.shown) return;
+    const rows = settingsRows(this.shown, this.settings, this.sceneShells);
+    $('overlay').textContent = [
+      `${this.shown.id}  ${this.canvas.width}x${this.canvas.height}`,
+      `frame ${median.toFixed(1)} ms${this.vsync ? ' (vsync on)' : ''}`,
+      ...rows,
+      `time ${this.time.toFixed(1)} s${this.paused ? ' (paused)' : ''}`,
+      ...(this.note ? [this.note] : []),
+    ].join('\n');
   }
 
   screenshot(): void {
@@ -211,7 +274,7 @@ export class Page {
       if (!blob) return;
       const a = document.createElement('a');
       a.href = URL.createObjectURL(blob);
-      a.download = `raylab-${this.stage().id}.png`;
+      a.download = `raylab-${(this.shown ?? this.stage()).id}.png`;
       a.click();
       setTimeout(() => URL.revokeObjectURL(a.href), 1000);
     }, 'image/png');

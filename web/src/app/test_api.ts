@@ -4,6 +4,7 @@
 // the compile error with file:line, the open TODOs.
 import { Camera, flyThroughPose } from './camera.js';
 import { frameOfView, sceneOfView } from './frame.js';
+import { WatchedLab } from './lab_folder.js';
 import type { Page } from './page.js';
 import { ROOT, type Catalog, type Sources, stageById } from '../course/catalog.js';
 import { assembleStagePrograms } from '../raytrace/stage_renderer.js';
@@ -61,6 +62,39 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
         page.showError(error);  // what the page shows a student
         return { ok: false, error, todos: [], notes: [] };
       }
+    },
+    // A lab folder watched as the page watches one, in the browser's private
+    // file system (no folder picker needed): FILES written to labs/<stage>/,
+    // read, then EDIT (name -> text) saved. Says what the watcher saw.
+    async watchFolder(req: { stage: string; files: Record<string, string>; edit: Record<string, string> }) {
+      const root = await navigator.storage.getDirectory();
+      await root.removeEntry('labs', { recursive: true }).catch(() => undefined);
+      const labs = await root.getDirectoryHandle('labs', { create: true });
+      const dir = await labs.getDirectoryHandle(req.stage, { create: true });
+      const write = async (name: string, text: string) => {
+        const w = await (await dir.getFileHandle(name, { create: true })).createWritable();
+        await w.write(text);
+        await w.close();
+      };
+      for (const [name, text] of Object.entries(req.files)) await write(name, text);
+      const ids = catalog.stages.map((x) => x.info.id);
+      const lab = new WatchedLab(labs, ids);
+      const first = await lab.read(req.stage);
+      const changedBefore = await lab.changed(req.stage);
+      await new Promise((r) => setTimeout(r, 20));  // a later modification time
+      for (const [name, text] of Object.entries(req.edit)) await write(name, text);
+      const changedAfter = await lab.changed(req.stage);
+      const second = await lab.read(req.stage);
+      const other = ids.find((id) => id !== req.stage)!;
+      const wrongStage = await lab.read(other).then(() => '', (e: Error) => e.message);
+      const text = (src: typeof first, name: string) => (src.kind === 'disk' ? src.files.get(name) ?? '' : '');
+      const edited = Object.keys(req.edit)[0]!;
+      return {
+        shown: first.kind === 'disk' ? first.shown : '',
+        changedBefore, changedAfter,
+        editSeen: text(second, edited) === req.edit[edited] && text(first, edited) !== req.edit[edited],
+        wrongStage,
+      };
     },
     // The fragment program as `raylab shader --es --origins` prints it.
     async assemble(req: { stage: string; scene: string }): Promise<string> {

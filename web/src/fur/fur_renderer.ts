@@ -76,13 +76,13 @@ export class FurRenderer implements TrackRenderer {
       const p = named('fins', 'fins');
       fins = await programOf('fin_instanced.vert', p.fragment);
       if (p.geometry) await assemble(p.geometry);  // for its TODOs only
-      notes.push(`fins: drawn as instanced quads (web/shaders/fin_instanced.vert) with your silhouette.glsl; ${p.geometry} runs natively only`);
+      notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copy of ${p.geometry}: what you write in ${p.geometry} shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
     }
     if (has('fur_shader')) {
       const p = named('strands', 'fur_shader');
       strands = await programOf('strand_instanced.vert', p.fragment);
       if (p.geometry) await assemble(p.geometry);
-      notes.push(`strands: drawn as instanced line strips (web/shaders/strand_instanced.vert) with your strand_point.glsl; ${p.geometry} runs natively only`);
+      notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.geometry}, which runs natively only`);
     }
     // Open TODOs of every file read, each once.
     const seen = new Set<string>();

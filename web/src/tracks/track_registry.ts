@@ -16,6 +16,7 @@ export interface LoadedStage {
   camera: CameraPose;  // the scene's
   fovYDeg: number;
   summary: string;     // one line about the scene, for the page
+  sceneShells: number; // the fur scene's shell count (what shells 0 means); 0 elsewhere
 }
 
 async function fetchText(shown: string, url: string, what: string): Promise<string> {
@@ -38,6 +39,7 @@ export async function loadStage(
     return {
       renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
       summary: `${scene.spheres.length} spheres, ${scene.triangles.length} triangles, ${scene.tori.length} tori, ${scene.lights.length} lights`,
+      sceneShells: 0,
     };
   }
   if (stage.track === 'fur') {
@@ -48,7 +50,8 @@ export async function loadStage(
     const renderer = await FurRenderer.create(gl, catalog, stage, sources, scene, mesh);
     return {
       renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
-      summary: `${mesh.indices.length / 3} triangles, ${scene.fur.shells} shells`,
+      summary: `${mesh.indices.length / 3} triangles` + (stage.features.includes('shells') ? `, ${scene.fur.shells} shells` : ''),
+      sceneShells: scene.fur.shells,
     };
   }
   throw new Error(`stage ${stage.id}: the web build has no renderer for track "${stage.track}"`);

@@ -8,7 +8,8 @@
 //     unfinished-TODO stripes as `raylab render --lab` of it;
 //  4. a lab with a syntax error reports the right file:line in the page;
 //  5. controls: a wrong picture and another scene's program are told apart;
-//  6. no console errors, page errors or failed requests.
+//  6. a watched lab folder notices a saved file;
+//  7. no console errors, page errors or failed requests.
 // Usage: node tests/browser/render_views.mjs --raylab ../build/raylab --out DIR [--stages 01,08]
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -113,7 +114,17 @@ try {
   if (webOther === nativeOwn) fail(`control: ${other}'s program equals ${first.scene}'s`);
   else console.log(`ok   control: the program for ${other} is told apart from ${first.scene}'s`);
 
-  // 6. Nothing went wrong behind the scenes.
+  // 6. A lab folder the page watches (Chrome's File System Access API, here
+  // in the browser's private file system) notices a saved file, and a
+  // labs/ folder without the chosen stage is refused, not silently replaced.
+  const watched = await page.evaluate((req) => window.raylab.watchFolder(req),
+    { stage: first.id, files, edit: { [victim]: `${files[victim]}\n// saved again\n` } });
+  if (watched.changedBefore || !watched.changedAfter || !watched.editSeen)
+    fail(`a watched lab folder: ${JSON.stringify(watched)}`);
+  else if (!/has no .*\/ folder/.test(watched.wrongStage)) fail(`a watched labs/ folder without the stage: "${watched.wrongStage}"`);
+  else console.log(`ok   a watched lab folder (${watched.shown}/) notices a saved file; another stage: "${watched.wrongStage}"`);
+
+  // 7. Nothing went wrong behind the scenes.
   for (const p of problems) fail(p);
 } finally {
   await browser.close();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace raylab::test;
 
 TEST(CompareCommand, AgreesWithItselfAndDiffersFromAnotherView) {
@@ -53,4 +55,73 @@ TEST(ShaderCommand, RefusesAFurStage) {
     CommandResult r = runRaylab("shader --stage f2 --solution");
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("raylab shader"), std::string::npos) << r.err;
+}
+
+namespace {
+
+// Every file under DIR, relative to it.
+std::vector<std::string> filesUnder(const fs::path& dir) {
+    std::vector<std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
+TEST(HandoutCommand, WritesTheReleasedStagesOnlyAndTheyRun) {
+    ScratchDir dir;
+    const fs::path out = dir / "week3";
+    CommandResult r = runRaylab("handout --stages 01-03 --out " + quote(out));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    std::vector<std::string> top;
+    for (const auto& e : fs::directory_iterator(out)) top.push_back(e.path().filename().string());
+    std::sort(top.begin(), top.end());
+    EXPECT_EQ(top,
+              (std::vector<std::string>{"01-raycast", "02-shading", "03-shadows", "README.md"}));
+    // The same files as labs/, byte for byte.
+    for (const char* stage : {"01-raycast", "02-shading", "03-shadows"}) {
+        const fs::path lab = sourceDir() / "labs" / stage;
+        ASSERT_EQ(filesUnder(out / stage), filesUnder(lab)) << stage;
+        for (const std::string& f : filesUnder(lab))
+            EXPECT_EQ(readFile(out / stage / f), readFile(lab / f)) << stage << "/" << f;
+    }
+    EXPECT_NE(readFile(out / "README.md").find("03-shadows"), std::string::npos);
+    EXPECT_EQ(readFile(out / "README.md").find("04-recursion"), std::string::npos);
+    // A student can work in it as in labs/.
+    CommandResult render = runRaylab("render --stage 02 --lab " + quote(out) +
+                                     " --size 32x24 --out " + quote(dir / "a.png"));
+    EXPECT_EQ(render.exitCode, 0) << render.all();
+
+    CommandResult fur = runRaylab("handout --stages f1,f2 --out " + quote(dir / "fur"));
+    ASSERT_EQ(fur.exitCode, 0) << fur.all();
+    EXPECT_TRUE(fs::is_directory(dir / "fur" / "f2-shells"));
+    EXPECT_FALSE(fs::exists(dir / "fur" / "f3-fins"));
+}
+
+TEST(HandoutCommand, BadRequestsWriteNothing) {
+    ScratchDir dir;
+    writeFile(dir / "taken" / "notes.txt", "mine");
+    const struct {
+        std::string args;
+        const char* expected;
+    } cases[] = {
+        {"--stages 01-f2 --out " + quote(dir / "a"), "different tracks"},
+        {"--stages 03-01 --out " + quote(dir / "b"), "comes after"},
+        {"--stages 42 --out " + quote(dir / "c"), "unknown stage"},
+        {"--stages 01 --out " + quote(dir / "taken"), "not an empty folder"},
+        {"--stages 01 --out " + quote(dir / "d") + " --labs " + quote(dir / "nolabs"),
+         "does not exist"},
+    };
+    for (const auto& c : cases) {
+        CommandResult r = runRaylab("handout " + c.args);
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.all();
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+    }
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir.path()))
+        left.push_back(e.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"taken"});
+    EXPECT_EQ(readFile(dir / "taken" / "notes.txt"), "mine");
 }

@@ -21,12 +21,14 @@ Command benchCommand();
 Command checkCommand();
 Command shaderCommand();
 Command compareCommand();
+Command handoutCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(), runCommand(),       renderCommand(),         raysCommand(), traceCommand(),
-        gradeCommand(),  gradeItemCommand(), gradeReferenceCommand(), demoCommand(), benchCommand(),
-        checkCommand(),  shaderCommand(),    compareCommand()};
+        stagesCommand(),  runCommand(),    renderCommand(),    raysCommand(),
+        traceCommand(),   gradeCommand(),  gradeItemCommand(), gradeReferenceCommand(),
+        demoCommand(),    benchCommand(),  checkCommand(),     shaderCommand(),
+        compareCommand(), handoutCommand()};
     return table;
 }
 

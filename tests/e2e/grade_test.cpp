@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <regex>
+
 using namespace raylab::test;
 
 namespace {
@@ -170,4 +173,91 @@ TEST(Grade, InterruptStopsTheChildrenAndWritesNoReport) {
     EXPECT_NE(r.err.find("interrupted; no report was written"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out / "report.html"));
     EXPECT_FALSE(fs::exists(out / "summary.csv"));
+}
+
+namespace {
+
+// TEXT without the run's timings: JUnit time="...", Gradescope's
+// execution_time, the HTML report's durations.
+std::string withoutTimings(std::string text) {
+    text = std::regex_replace(text, std::regex(R"(time="[0-9.]+")"), "time=\"\"");
+    text = std::regex_replace(text, std::regex(R"("execution_time": *[0-9]+)"),
+                              "\"execution_time\": 0");
+    text = std::regex_replace(text, std::regex(R"(<span class="muted">[^<]*</span>)"), "<span/>");
+    text = std::regex_replace(text, std::regex(R"(wall time <b>[^<]*</b>)"), "wall time");
+    return text;
+}
+
+std::vector<std::string> relativeFiles(const fs::path& dir) {
+    std::vector<std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
+// --shard K/N on every share, then --merge: the report an unsharded run
+// writes, file for file (timings aside).
+TEST(Grade, ShardsMergeIntoTheUnshardedReport) {
+    ScratchDir dir;
+    makeClass(dir / "class");
+    fs::copy(sourceDir() / "labs", dir / "class" / "cy", fs::copy_options::recursive);
+    const std::string args =
+        "grade --submissions " + quote(dir / "class") + " --stages 01,02 --jobs 2 --seed 5 --out ";
+    CommandResult whole = runRaylab(args + quote(dir / "whole"));
+    ASSERT_EQ(whole.exitCode, 0) << whole.all();
+    for (int k = 0; k < 2; ++k) {
+        CommandResult share = runRaylab(args + quote(dir / ("s" + std::to_string(k))) +
+                                        " --shard " + std::to_string(k) + "/2");
+        ASSERT_EQ(share.exitCode, 0) << share.all();
+        EXPECT_TRUE(fs::exists(dir / ("s" + std::to_string(k)) / "shard.json"));
+        EXPECT_FALSE(fs::exists(dir / ("s" + std::to_string(k)) / "report.html"));
+    }
+    // Share 0 of 2 holds the 1st and 3rd student, share 1 the 2nd.
+    EXPECT_TRUE(fs::exists(dir / "s0" / "students" / "ada"));
+    EXPECT_TRUE(fs::exists(dir / "s0" / "students" / "cy"));
+    EXPECT_TRUE(fs::exists(dir / "s1" / "students" / "bob"));
+    EXPECT_FALSE(fs::exists(dir / "s1" / "students" / "ada"));
+
+    CommandResult merge = runRaylab("grade --merge " + quote(dir / "merged") + " " +
+                                    quote(dir / "s1") + " " + quote(dir / "s0"));
+    ASSERT_EQ(merge.exitCode, 0) << merge.all();
+    EXPECT_EQ(relativeFiles(dir / "merged"), relativeFiles(dir / "whole"));
+    for (const char* f : {"summary.csv", "junit.xml", "report.html", "students/ada/results.json",
+                          "students/bob/results.json", "students/cy/results.json"})
+        EXPECT_EQ(withoutTimings(readFile(dir / "merged" / f)),
+                  withoutTimings(readFile(dir / "whole" / f)))
+            << f;
+}
+
+TEST(Grade, AMergeOfTheWrongSharesIsRefused) {
+    ScratchDir dir;
+    makeClass(dir / "class");
+    const std::string args =
+        "grade --submissions " + quote(dir / "class") + " --stages 01 --jobs 2 --out ";
+    ASSERT_EQ(runRaylab(args + quote(dir / "s0") + " --shard 0/2 --seed 1").exitCode, 0);
+    ASSERT_EQ(runRaylab(args + quote(dir / "s1") + " --shard 1/2 --seed 1").exitCode, 0);
+    ASSERT_EQ(runRaylab(args + quote(dir / "t1") + " --shard 1/2 --seed 2").exitCode, 0);
+    const struct {
+        std::string args;
+        const char* expected;
+    } cases[] = {
+        {quote(dir / "m") + " " + quote(dir / "s0"), "shares 1 of 2 are missing"},
+        {quote(dir / "m") + " " + quote(dir / "s0") + " " + quote(dir / "s0"), "given twice"},
+        {quote(dir / "m") + " " + quote(dir / "s0") + " " + quote(dir / "t1"), "another run"},
+        {quote(dir / "m") + " " + quote(dir / "class"), "no shard.json"},
+    };
+    for (const auto& c : cases) {
+        CommandResult r = runRaylab("grade --merge " + c.args);
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.all();
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "m" / "report.html"));
+    }
+    for (const char* bad : {"2/2", "1", "a/b", "0/0", "-1/2"}) {
+        CommandResult r = runRaylab(args + quote(dir / "x") + " --shard " + bad);
+        EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.all();
+        EXPECT_NE(r.err.find("expected K/N"), std::string::npos) << r.err;
+    }
 }

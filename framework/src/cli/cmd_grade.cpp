@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "error.h"
 #include "grade_report.h"
+#include "grade_shards.h"
 #include "grade_stage.h"
 #include "paths.h"
 
@@ -242,13 +243,24 @@ int cmdGrade(const GradeOptions& g) {
     if (g.outDir.empty()) throw Error("--out is required");
     const std::vector<const StageInfo*> stages = stagesToGrade(g.stages);
     const fs::path submissions = g.submissions;
-    const std::vector<std::string> students = studentFolders(submissions);
+    const Shard shard = g.shard.empty() ? Shard{} : parseShard(g.shard);
+    std::vector<std::string> students = studentFolders(submissions);
+    if (shard.count > 1) {
+        std::vector<std::string> mine;
+        for (std::size_t i = 0; i < students.size(); ++i)
+            if (inShard(i, shard)) mine.push_back(students[i]);
+        if (mine.empty())
+            std::printf("raylab grade: share %d/%d has no students (the class has %zu)\n",
+                        shard.index, shard.count, students.size());
+        students = std::move(mine);
+    }
     const fs::path out = g.outDir;
     checkFoldersApart(submissions, out);
     std::error_code ec;
     // Only what grading writes is cleared: no stale result of an earlier run
     // may be mixed into this one.
-    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"})
+    for (const char* own :
+         {"students", "reference", "report.html", "summary.csv", "junit.xml", "shard.json"})
         fs::remove_all(out / own, ec);
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
@@ -266,10 +278,15 @@ int cmdGrade(const GradeOptions& g) {
         return true;
     };
 
-    std::printf(
-        "raylab grade: %zu students x %zu stages, %d jobs, timeout %.0f s, memory %ld MB%s\n",
-        students.size(), stages.size(), g.jobs, g.timeoutSeconds, g.memoryMb,
-        g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
+    std::printf("raylab grade: %zu students x %zu stages%s, %d jobs, timeout %.0f s, memory %ld "
+                "MB%s\n",
+                students.size(), stages.size(),
+                shard.count > 1 ? (" (share " + std::to_string(shard.index) + "/" +
+                                   std::to_string(shard.count) + ")")
+                                      .c_str()
+                                : "",
+                g.jobs, g.timeoutSeconds, g.memoryMb,
+                g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
     std::fflush(stdout);
 
     // 1. The solution's images for every stage (trusted code, but in children
@@ -375,7 +392,21 @@ int cmdGrade(const GradeOptions& g) {
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    // 3. The reports.
+    // 3. The reports; a share writes its results for --merge instead.
+    if (shard.count > 1) {
+        writeShardFile(result, shard, out);
+        std::printf("graded share %d/%d (%zu students) in %.1f s; merge the shares with: raylab "
+                    "grade --merge OUT SHARD_DIR...\n",
+                    shard.index, shard.count, students.size(), result.seconds);
+        return 0;
+    }
+    writeClassReports(result, out);
+    std::printf("graded in %.1f s; report: %s\n", result.seconds,
+                fs::absolute(out / "report.html").lexically_normal().c_str());
+    return 0;
+}
+
+void writeClassReports(const ClassResult& result, const fs::path& out) {
     for (const StudentResult& st : result.students) {
         try {
             writeGradescopeResults(st, studentFolder(out, st.name) / "results.json");
@@ -387,9 +418,6 @@ int cmdGrade(const GradeOptions& g) {
     writeJunitXml(result, out / "junit.xml");
     writeHtmlReport(result, out);
     printSummary(result);
-    std::printf("graded in %.1f s; report: %s\n", result.seconds,
-                fs::absolute(out / "report.html").lexically_normal().c_str());
-    return 0;
 }
 
 Command gradeCommand() {
@@ -397,11 +425,12 @@ Command gradeCommand() {
         "grade", "grade a whole class headlessly: one folder per student, each laid out like labs/",
         [](CLI::App& cmd) {
             auto g = std::make_shared<GradeOptions>();
-            cmd.add_option("--submissions", g->submissions, "folder with one subfolder per student")
-                ->required();
-            cmd.add_option("--out", g->outDir,
-                           "folder for report.html, summary.csv, junit.xml, <student>/results.json")
-                ->required();
+            auto merge = std::make_shared<std::vector<std::string>>();
+            cmd.add_option("--submissions", g->submissions,
+                           "folder with one subfolder per student");
+            cmd.add_option(
+                "--out", g->outDir,
+                "folder for report.html, summary.csv, junit.xml, <student>/results.json");
             cmd.add_option("--stages", g->stages, "comma-separated stages to grade (default: all)");
             cmd.add_option("--jobs", g->jobs, "submissions graded at once")->capture_default_str();
             cmd.add_option("--timeout", g->timeoutSeconds, "seconds per stage of a submission")
@@ -411,7 +440,23 @@ Command gradeCommand() {
                 ->capture_default_str();
             cmd.add_option("--seed", g->seed, "seed of the extra camera views (keep it secret)")
                 ->capture_default_str();
-            return std::function<int()>([=] { return cmdGrade(*g); });
+            cmd.add_option("--shard", g->shard,
+                           "grade share K of N (every N-th student from the K-th, 0-based) and "
+                           "write shard.json for --merge");
+            cmd.add_option("--merge", *merge,
+                           "OUT SHARD_DIR...: put the shares of a --shard run together into one "
+                           "report in OUT (then no other option)")
+                ->expected(2, 100000);
+            return std::function<int()>([=] {
+                if (!merge->empty()) {
+                    if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty())
+                        throw Error("--merge takes no --submissions, --out or --shard");
+                    return cmdGradeMerge(*merge);
+                }
+                if (g->submissions.empty()) throw Error("--submissions is required");
+                if (g->outDir.empty()) throw Error("--out is required");
+                return cmdGrade(*g);
+            });
         }};
 }
 

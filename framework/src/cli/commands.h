@@ -65,6 +65,7 @@ struct GradeOptions {
     long memoryMb =
         2048;  // per stage of a submission (address space); the pro scene needs well under 1 GB
     unsigned seed = 0;  // of the seeded views; keep it secret to prevent tuning
+    std::string shard;  // "K/N": grade that share of the class only (grade_shards.h)
 };
 int cmdGrade(const GradeOptions& grade);
 

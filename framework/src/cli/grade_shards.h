@@ -1,0 +1,39 @@
+#pragma once
+// Grading a class in shares: `raylab grade --shard K/N` grades every N-th
+// student starting at K (of the sorted student folders), so that N jobs of
+// a cluster's array (examples/slurm/grade_array.sh) split a class; `raylab
+// grade --merge OUT SHARD_DIR...` puts the shares together into the report
+// an unsharded run writes (the same scores and files; only timings differ).
+#include "grade_result.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+struct Shard {
+    int index = 0;  // K
+    int count = 1;  // N; 1: the whole class
+};
+
+// "K/N" with 0 <= K < N <= 10000. Throws Error.
+Shard parseShard(const std::string& text);
+
+// Whether the student at INDEX of the sorted folders belongs to SHARD.
+inline bool inShard(std::size_t index, const Shard& shard) {
+    return int(index % std::size_t(shard.count)) == shard.index;
+}
+
+// OUT/shard.json: the shard's place and every result of its students.
+void writeShardFile(const ClassResult& result, const Shard& shard,
+                    const std::filesystem::path& outDir);
+
+// The class reports in OUT: <student>/results.json, summary.csv, junit.xml,
+// report.html, and the summary table on stdout (cmd_grade.cpp).
+void writeClassReports(const ClassResult& result, const std::filesystem::path& outDir);
+
+// `raylab grade --merge OUT SHARD_DIR...`. Returns the exit code.
+int cmdGradeMerge(const std::vector<std::string>& args);
+
+}  // namespace raylab

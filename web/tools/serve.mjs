@@ -3,11 +3,13 @@
 // shaders, solution/, labs/, assets/), read-only, from the project root, so
 // the page loads the very files the native build compiles.
 import { createServer } from 'node:http';
-import { createReadStream, existsSync, statSync } from 'node:fs';
+import { createReadStream, existsSync, realpathSync, statSync } from 'node:fs';
+import { pipeline } from 'node:stream';
 import { extname, join, normalize, sep, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const realRoot = realpathSync(root);
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
   const i = args.indexOf(name);
@@ -53,13 +55,21 @@ const server = createServer((req, res) => {
     res.writeHead(405).end();
     return;
   }
-  if (!allowed || !existsSync(file) || !statSync(file).isFile()) {
+  // A symbolic link must not lead out of the project (students' lab folders
+  // are theirs; with --host 0.0.0.0 others can ask too).
+  let real = '';
+  try {
+    real = realpathSync(file);
+  } catch {}
+  if (!allowed || !real || !real.startsWith(realRoot + sep) || !statSync(real).isFile()) {
     res.writeHead(404, { 'Content-Type': 'text/plain' }).end(`not found: /${path}`);
     return;
   }
   res.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', 'Cache-Control': 'no-cache' });
-  if (req.method === 'HEAD') res.end();
-  else createReadStream(file).pipe(res);
+  if (req.method === 'HEAD') return void res.end();
+  // pipeline: a file that cannot be read, or a client that goes away, ends
+  // this response only (and closes the file), never the server.
+  pipeline(createReadStream(real), res, () => {});
 });
 server.on('error', (e) => {
   console.error(`serve: cannot listen on ${host}:${port}: ${e.code === 'EADDRINUSE' ? 'the port is in use (try --port N)' : e.message}`);

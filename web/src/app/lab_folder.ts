@@ -53,16 +53,13 @@ export const canWatchFolders = typeof picker === 'function';
 // An open lab folder that can tell when its shader files change.
 export class WatchedLab {
   private stamps = '';
+  private readStage = '';  // the stage whose files the stamps describe
 
   // STAGEIDS: every stage's folder name, to tell a labs/ folder from a stage's.
   constructor(private root: FileSystemDirectoryHandle, private stageIds: string[]) {}
 
   static async pick(stageIds: string[]): Promise<WatchedLab> {
     return new WatchedLab(await picker!({ id: 'raylab-lab', mode: 'read' }), stageIds);
-  }
-
-  get name(): string {
-    return this.root.name;
   }
 
   // The stage's folder: ROOT/<stage> when there is one, else ROOT itself.
@@ -88,13 +85,16 @@ export class WatchedLab {
     const { shown, files } = await this.shaderFiles(stageId);
     if (files.length === 0) throw noShaders(this.root.name, stageId);
     this.stamps = files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|');
+    this.readStage = stageId;
     const texts = new Map<string, string>();
     for (const [name, file] of files) texts.set(name, await file.text());
     return { kind: 'disk', shown, files: texts };
   }
 
-  // True when a shader file was added, removed or saved since the last read().
+  // True when a shader file of STAGEID was added, removed or saved since
+  // read() read that stage (false while another stage's files were read last).
   async changed(stageId: string): Promise<boolean> {
+    if (stageId !== this.readStage) return false;
     const { files } = await this.shaderFiles(stageId);
     return files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|') !== this.stamps;
   }

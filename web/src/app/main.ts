@@ -16,6 +16,11 @@ async function main(): Promise<void> {
     messages.textContent = 'This browser has no WebGL 2 (try a current Chrome, Edge, Firefox or Safari, with hardware acceleration on).';
     return;
   }
+  canvas.addEventListener('webglcontextlost', (e) => {
+    e.preventDefault();
+    messages.className = 'error';
+    messages.textContent = 'The browser took WebGL away from the page (a GPU reset or too many pages with WebGL): reload the page.';
+  });
   const catalog = await loadCatalog();
   const page = new Page(gl, canvas, catalog);
   installTestApi(gl, canvas, catalog, page);

@@ -12,7 +12,8 @@ import { loadStage } from '../tracks/track_registry.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
 
 const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
-const MOVE_UNITS_PER_SECOND = 2.5;  // as natively (app/viewer_app.cpp)
+const MOVE_UNITS_PER_SECOND = 3;  // as natively (app/viewer_app.cpp)
+const SLOW_FACTOR = 0.2;  // while Shift is held
 const LOOK_DEGREES_PER_PIXEL = 0.2;
 const FRAME_WINDOW = 30;  // frames in the overlay's median
 
@@ -31,7 +32,10 @@ export class Page {
   private loading = 0;
   private demo = false;
   private sceneShells = 0;
-  private shown: StageJson | null = null;  // the stage being drawn (the select can be ahead of it while loading)
+  private shown: StageJson | null = null;
+  private sourceShown = 'solution';  // the Code choice being drawn (a cancelled picker goes back to it)
+  private busy = false;  // a load is under way
+  private overlayHidden = false;  // the stage being drawn (the select can be ahead of it while loading)
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {}
 
@@ -46,25 +50,32 @@ export class Page {
     stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ?? '';
     stageSel.onchange = () => { this.demo = false; this.fillScenes(); void this.load(); };
     $<HTMLSelectElement>('source').onchange = (e) => {
-      if ((e.target as HTMLSelectElement).value !== 'disk') return void this.load();
+      if ((e.target as HTMLSelectElement).value !== 'disk') {
+        this.sourceShown = (e.target as HTMLSelectElement).value;
+        return void this.load();
+      }
       if (!canWatchFolders) return $<HTMLInputElement>('folder').click();
       WatchedLab.pick(this.stageIds()).then((lab) => {
         this.watched = lab;
+        this.sourceShown = 'disk';
         void this.load();
       }, (err: Error) => {
         // Cancelled or refused: back to what was shown.
-        if (err.name !== 'AbortError') this.showError(err.message);
-        $<HTMLSelectElement>('source').value = this.watched || this.picked ? 'disk' : 'solution';
+        if (err.name !== 'AbortError') this.showError(err.message, true);
+        $<HTMLSelectElement>('source').value = this.sourceShown;
       });
     };
     $<HTMLInputElement>('folder').onchange = (e) => {
       const files = (e.target as HTMLInputElement).files;
       if (!files || files.length === 0) return;
+      // The same folder again ("Reload my files"): a reload, as after a save.
+      const again = this.sourceShown === 'disk' && this.picked !== null;
       this.picked = Array.from(files);
-      void this.load();
+      this.sourceShown = 'disk';
+      void this.load(again);
     };
     $<HTMLInputElement>('folder').addEventListener('cancel', () => {
-      $<HTMLSelectElement>('source').value = this.picked ? 'disk' : 'solution';
+      $<HTMLSelectElement>('source').value = this.sourceShown;
     });
     // Browsers without folder watching: read the folder again after an edit.
     $('reload').onclick = () => $<HTMLInputElement>('folder').click();
@@ -126,13 +137,18 @@ export class Page {
 
   private checking = false;
   private async reloadIfChanged(): Promise<void> {
-    if (!this.watched || this.checking || $<HTMLSelectElement>('source').value !== 'disk') return;
+    if (!this.watched || this.checking || this.busy || $<HTMLSelectElement>('source').value !== 'disk') return;
     this.checking = true;
     try {
       if (await this.watched.changed((this.shown ?? this.stage()).id)) await this.load(true);
-    } catch {
+    } catch (e) {
       // The folder went away or permission was withdrawn: stop watching it.
-      this.watched = null;
+      // Anything else (a file caught mid-save) is tried again next second.
+      const name = (e as Error).name;
+      if (name === 'NotFoundError' || name === 'NotAllowedError' || name === 'SecurityError') {
+        this.watched = null;
+        this.showError('Your lab folder can no longer be read: pick it again (Code: my lab folder…).', true);
+      }
     } finally {
       this.checking = false;
     }
@@ -144,6 +160,7 @@ export class Page {
   // keeps running, as in the native window.
   async load(reload = false): Promise<void> {
     const ticket = ++this.loading;
+    this.busy = true;
     const stage = this.stage();
     $('title').textContent = `${stage.id}: ${stage.title}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
@@ -152,6 +169,7 @@ export class Page {
       const sources = await this.sources();
       const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName);
       if (ticket !== this.loading) return loaded.renderer.dispose();
+      this.busy = false;
       this.renderer?.dispose();
       this.renderer = loaded.renderer;
       this.sceneShells = loaded.sceneShells;
@@ -177,6 +195,7 @@ export class Page {
       ].join('\n\n'));
     } catch (e) {
       if (ticket !== this.loading) return;
+      this.busy = false;
       const message = (e as Error).message;
       if (reload && this.renderer) {
         this.showError(`${message}\n\n(still showing the last version that compiled)`, true);
@@ -208,11 +227,16 @@ export class Page {
   private bindInput(): void {
     const c = this.canvas;
     c.addEventListener('keydown', (e) => {
+      if (e.repeat && e.key.length === 1 && !/[wasd]/i.test(e.key)) return e.preventDefault();  // a held key toggles once
       const changed = this.shown ? applySettingsKey(this.shown, this.settings, e.key, this.sceneShells) : null;
       if (changed) this.note = changed;
       else if (e.key === 'p' || e.key === 'P') { this.paused = !this.paused; this.note = this.paused ? 'paused' : 'running'; }
       else if (e.key === 'v' || e.key === 'V') { this.vsync = !this.vsync; this.note = `vsync ${this.vsync ? 'on' : 'off'}`; }
       else if (e.key === 'F12') this.screenshot();
+      else if (e.key === 'h' || e.key === 'H') {
+        this.overlayHidden = !this.overlayHidden;
+        $('overlay').hidden = this.overlayHidden;
+      }
       else if (e.key === 'Escape') c.blur();
       else { this.held.add(e.key.toLowerCase()); return; }
       e.preventDefault();
@@ -236,9 +260,22 @@ export class Page {
     const dt = this.last ? (now - this.last) / 1000 : 0;
     this.last = now;
     if (!this.paused) this.time += dt;
-    const step = MOVE_UNITS_PER_SECOND * dt;
+    const step = MOVE_UNITS_PER_SECOND * dt * (this.held.has('shift') ? SLOW_FACTOR : 1);
     const k = this.held;
     this.camera.move(((k.has('w') ? 1 : 0) - (k.has('s') ? 1 : 0)) * step, ((k.has('d') ? 1 : 0) - (k.has('a') ? 1 : 0)) * step);
+    try {
+      this.drawFrame(now);
+    } catch (e) {
+      // A frame that throws (a lost context, a driver error) must not stop the loop silently.
+      this.renderer?.dispose();
+      this.renderer = null;
+      this.shown = null;
+      this.showError(`Drawing failed: ${(e as Error).message}`);
+    }
+    this.schedule();
+  }
+
+  private drawFrame(now: number): void {
     if (this.renderer) {
       const camera = this.demo ? new Camera(flyThroughPose(this.camera.pose, this.time * 10), this.camera.fovYDeg) : this.camera;
       this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);
@@ -249,7 +286,6 @@ export class Page {
       this.frameTimes = [...this.frameTimes, performance.now() - now].slice(-FRAME_WINDOW);
       this.updateOverlay();
     }
-    this.schedule();
   }
 
   private pixel = new Uint8Array(4);

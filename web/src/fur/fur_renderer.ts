@@ -27,11 +27,15 @@ const NEAR_SHARE_OF_FAR = 1e-4;
 // budget every OpenGL 3.3 driver offers (1024 components): the same fur.
 const STRAND_VERTEX_COMPONENTS = 17, STRANDS_WANTED = 32, MIN_TOTAL_COMPONENTS = 1024, MIN_OUTPUT_VERTICES = 256;
 
-export function strandDefines(segments: number): string[] {
+function strandsPerTriangle(segments: number): number {
   const perStrand = segments + 1;
-  const strands = Math.min(STRANDS_WANTED, Math.floor(MIN_OUTPUT_VERTICES / perStrand),
+  return Math.min(STRANDS_WANTED, Math.floor(MIN_OUTPUT_VERTICES / perStrand),
     Math.floor(MIN_TOTAL_COMPONENTS / (perStrand * STRAND_VERTEX_COMPONENTS)));
-  return [`STRAND_SEGMENTS ${segments}`, `STRANDS_PER_TRIANGLE ${strands}`, `STRAND_MAX_VERTICES ${strands * perStrand}`];
+}
+
+function strandDefines(segments: number): string[] {
+  const strands = strandsPerTriangle(segments);
+  return [`STRAND_SEGMENTS ${segments}`, `STRANDS_PER_TRIANGLE ${strands}`, `STRAND_MAX_VERTICES ${strands * (segments + 1)}`];
 }
 
 export class FurRenderer implements TrackRenderer {
@@ -69,20 +73,34 @@ export class FurRenderer implements TrackRenderer {
       if (!p) throw new Error(`solution/${stage.id}/stage.json: programs.${name}: the feature "${feature}" needs this program`);
       return p;
     };
-    const shells = await programOf(stage.program.vertex, stage.program.fragment);
+    // Built into locals: a failure (a student's compile error) deletes what
+    // was built so far, so a watched folder's broken saves leak nothing.
+    const programs: Program[] = [];
+    const built = async (vertex: string, fragment: string) => {
+      const p = await programOf(vertex, fragment);
+      programs.push(p);
+      return p;
+    };
     const notes: string[] = [];
-    let fins: Program | null = null, strands: Program | null = null;
-    if (has('fins')) {
-      const p = named('fins', 'fins');
-      fins = await programOf('fin_instanced.vert', p.fragment);
-      if (p.geometry) await assemble(p.geometry);  // for its TODOs only
-      notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copy of ${p.geometry}: what you write in ${p.geometry} shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
-    }
-    if (has('fur_shader')) {
-      const p = named('strands', 'fur_shader');
-      strands = await programOf('strand_instanced.vert', p.fragment);
-      if (p.geometry) await assemble(p.geometry);
-      notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.geometry}, which runs natively only`);
+    let shells: Program, fins: Program | null = null, strands: Program | null = null;
+    try {
+      shells = await built(stage.program.vertex, stage.program.fragment);
+      if (has('fins')) {
+        const p = named('fins', 'fins');
+        fins = await built('fin_instanced.vert', p.fragment);
+        await assemble(p.vertex);  // for its TODOs only
+        if (p.geometry) await assemble(p.geometry);
+        notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copies of ${p.vertex} and ${p.geometry}: what you write in those two shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
+      }
+      if (has('fur_shader')) {
+        const p = named('strands', 'fur_shader');
+        strands = await built('strand_instanced.vert', p.fragment);
+        if (p.geometry) await assemble(p.geometry);
+        notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.vertex} and ${p.geometry}, which run natively only`);
+      }
+    } catch (e) {
+      for (const p of programs) p.dispose();
+      throw e;
     }
     // Open TODOs of every file read, each once.
     const seen = new Set<string>();
@@ -93,9 +111,8 @@ export class FurRenderer implements TrackRenderer {
           seen.add(`${t.file}:${t.line}`);
           todos.push(t);
         }
-    const strandsPerTriangle = Number(/STRANDS_PER_TRIANGLE (\d+)/.exec(defines.join(' '))?.[1] ?? 0);
     const buffers = new FurMeshBuffers(gl, mesh, has('fins') ? buildEdgeAdjacency(mesh) : null,
-      has('fur_shader') ? { perTriangle: strandsPerTriangle, vertices: scene.fur.strandSegments + 1 } : null);
+      has('fur_shader') ? { perTriangle: strandsPerTriangle(scene.fur.strandSegments), vertices: scene.fur.strandSegments + 1 } : null);
     // The mesh's bounding sphere (native: FurRenderer::setMesh).
     const p = mesh.positions;
     const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
@@ -109,11 +126,13 @@ export class FurRenderer implements TrackRenderer {
     for (let v = 0; v < p.length; v += 3) radius = Math.max(radius, Math.hypot(p[v]! - centre[0], p[v + 1]! - centre[1], p[v + 2]! - centre[2]));
     const r = new FurRenderer(gl, stage, scene, buffers, shells, fins, strands, todos, { centre, radius });
     r.notes.push(...notes);
-    try {
-      r.textures = await Promise.all([scene.fur.colorMap, scene.fur.pattern, scene.fur.finMap].map((u) => texture2D(gl, u)));
-    } catch (e) {
+    // All three pictures or none: those that loaded are deleted with the rest.
+    const pictures = await Promise.allSettled([scene.fur.colorMap, scene.fur.pattern, scene.fur.finMap].map((u) => texture2D(gl, u)));
+    r.textures = pictures.flatMap((p) => (p.status === 'fulfilled' ? [p.value] : []));
+    const failed = pictures.find((p) => p.status === 'rejected');
+    if (failed) {
       r.dispose();
-      throw e;
+      throw (failed as PromiseRejectedResult).reason;
     }
     return r;
   }

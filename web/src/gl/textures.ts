@@ -3,9 +3,14 @@
 // raytrace/bvh_buffers.cpp). Images are decoded without colour management,
 // so the texels are the file's bytes, as natively.
 
-async function decode(url: string, size?: { w: number; h: number }, flipY = false): Promise<ImageBitmap> {
+async function fetchPicture(url: string): Promise<Blob> {
   const r = await fetch(url);
   if (!r.ok) throw new Error(`${url.replace(/^\//, '')}: cannot load the picture (HTTP ${r.status})`);
+  return r.blob();
+}
+
+// The file's bytes as texels: no colour management, no premultiplied alpha.
+async function decode(url: string, blob: Blob, flipY: boolean, size?: { w: number; h: number }): Promise<ImageBitmap> {
   const options: ImageBitmapOptions = {
     colorSpaceConversion: 'none',
     premultiplyAlpha: 'none',
@@ -13,9 +18,9 @@ async function decode(url: string, size?: { w: number; h: number }, flipY = fals
   };
   if (size) Object.assign(options, { resizeWidth: size.w, resizeHeight: size.h, resizeQuality: 'medium' });
   try {
-    return await createImageBitmap(await r.blob(), options);
-  } catch {
-    throw new Error(`${url.replace(/^\//, '')}: not a picture this browser can decode`);
+    return await createImageBitmap(blob, options);
+  } catch (e) {
+    throw new Error(`${url.replace(/^\//, '')}: the browser cannot decode this picture (${(e as Error).message})`);
   }
 }
 
@@ -23,14 +28,21 @@ async function decode(url: string, size?: { w: number; h: number }, flipY = fals
 // natively), bottom row first (GL's texture origin), level 0 only: the tracer
 // samples inside a data-dependent loop, where derivatives are undefined.
 export async function textureArray(gl: WebGL2RenderingContext, urls: string[]): Promise<WebGLTexture> {
-  const originals = await Promise.all(urls.map((u) => decode(u)));
-  const w = Math.max(1, ...originals.map((b) => b.width)), h = Math.max(1, ...originals.map((b) => b.height));
-  const layers = await Promise.all(urls.map((u, i) =>
-    originals[i].width === w && originals[i].height === h ? decode(u, undefined, true) : decode(u, { w, h }, true)));
+  const blobs = await Promise.all(urls.map(fetchPicture));
+  const layers = await Promise.all(blobs.map((b, i) => decode(urls[i]!, b, true)));
+  const w = Math.max(1, ...layers.map((b) => b.width)), h = Math.max(1, ...layers.map((b) => b.height));
+  for (let i = 0; i < layers.length; ++i)
+    if (layers[i]!.width !== w || layers[i]!.height !== h) {
+      layers[i]!.close();
+      layers[i] = await decode(urls[i]!, blobs[i]!, true, { w, h });
+    }
   const t = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D_ARRAY, t);
   gl.texStorage3D(gl.TEXTURE_2D_ARRAY, 1, gl.RGBA8, w, h, Math.max(1, layers.length));
-  layers.forEach((img, i) => gl.texSubImage3D(gl.TEXTURE_2D_ARRAY, 0, 0, 0, i, w, h, 1, gl.RGBA, gl.UNSIGNED_BYTE, img));
+  layers.forEach((img, i) => {
+    gl.texSubImage3D(gl.TEXTURE_2D_ARRAY, 0, 0, 0, i, w, h, 1, gl.RGBA, gl.UNSIGNED_BYTE, img);
+    img.close();
+  });
   gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
   gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
   gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_WRAP_S, gl.REPEAT);
@@ -41,15 +53,17 @@ export async function textureArray(gl: WebGL2RenderingContext, urls: string[]): 
 // Faces +x, -x, +y, -y, +z, -z, top row first (cube maps are not flipped).
 // WebGL 2 filters across face edges always: there is no seamless switch.
 export async function cubeMap(gl: WebGL2RenderingContext, urls: string[]): Promise<WebGLTexture> {
-  const faces = await Promise.all(urls.map((u) => decode(u)));
+  const faces = await Promise.all(urls.map(async (u) => decode(u, await fetchPicture(u), false)));
   faces.forEach((f, i) => {
     if (f.width !== f.height) throw new Error(`sky box face ${urls[i]} is ${f.width}x${f.height}, faces must be square`);
     if (f.width !== faces[0].width) throw new Error(`sky box face ${urls[i]}: faces must have one size`);
   });
   const t = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_CUBE_MAP, t);
-  faces.forEach((f, i) =>
-    gl.texImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, gl.RGBA8, f.width, f.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, f));
+  faces.forEach((f, i) => {
+    gl.texImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, gl.RGBA8, f.width, f.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, f);
+    f.close();
+  });
   gl.texParameteri(gl.TEXTURE_CUBE_MAP, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
   gl.texParameteri(gl.TEXTURE_CUBE_MAP, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
   for (const wrap of [gl.TEXTURE_WRAP_S, gl.TEXTURE_WRAP_T, gl.TEXTURE_WRAP_R])
@@ -75,10 +89,11 @@ export function dataTexture(
 // One picture, bottom row first, mipmapped (the fur track's colour map,
 // pattern and fin map; native: Texture2D).
 export async function texture2D(gl: WebGL2RenderingContext, url: string): Promise<WebGLTexture> {
-  const img = await decode(url, undefined, true);
+  const img = await decode(url, await fetchPicture(url), true);
   const t = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D, t);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img);
+  img.close();
   gl.generateMipmap(gl.TEXTURE_2D);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);

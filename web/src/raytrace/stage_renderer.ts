@@ -114,11 +114,18 @@ export class StageRenderer implements TrackRenderer {
     checkUniformBudget(gl, scene, sceneShown);
     const p = await assembleStagePrograms(catalog, stage, sources, scene, sceneShown, bvh);
     const program = new Program(gl, p.vertex, p.fragment);
-    const r = new StageRenderer(gl, stage, scene, program, await findOpenTodos(p.fragment));
+    let r: StageRenderer;
+    try {
+      r = new StageRenderer(gl, stage, scene, program, await findOpenTodos(p.fragment));
+    } catch (e) {
+      program.dispose();
+      throw e;
+    }
     try {
       if (scene.textures.length) r.textures = await textureArray(gl, scene.textures);
       if (scene.skyBox) r.sky = await cubeMap(gl, scene.skyBox);
-      if (p.defines.includes('RAYLAB_BVH')) {
+      // The tree only for a program that walks it (as natively).
+      if (program.uniform('uBvhNodes') !== null) {
         const packed = packBvhTextures(buildBvh(scene));
         r.bvhNodes = dataTexture(gl, packed.nodes);
         r.bvhItems = dataTexture(gl, packed.items);
@@ -133,6 +140,8 @@ export class StageRenderer implements TrackRenderer {
   render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
     const gl = this.gl, p = this.program;
     gl.viewport(0, 0, width, height);
+    gl.clearColor(0, 0, 0, 1);  // as natively: a discarded fragment leaves black
+    gl.clear(gl.COLOR_BUFFER_BIT);
     gl.useProgram(p.id);
     gl.uniform3fv(p.uniform('uEye'), camera.pose.position);
     gl.uniform3fv(p.uniform('uForward'), camera.forward());

@@ -32,8 +32,9 @@ function nativeMedianMs(scene, bvh) {
 }
 
 const server = await startServer();
-const browser = await launchBrowser(angle);
+let browser;
 try {
+  browser = await launchBrowser(angle);
   const { page, renderer } = await openPage(browser, server.url);
   const stage = (await page.evaluate(() => window.raylab.catalog)).stages.map((s) => s.info)
     .filter((s) => s.track === 'raytrace' && s.features.includes('demo')).pop();
@@ -60,6 +61,6 @@ try {
     console.log(`| ${c.name} | ${n.toFixed(1)} | ${w.toFixed(1)} | ${(w / n).toFixed(2)}x |`);
   }
 } finally {
-  await browser.close();
+  await browser?.close();
   server.stop();
 }

@@ -12,8 +12,9 @@ if (!out || !out.endsWith('.png')) {
   process.exit(2);
 }
 const server = await startServer();
-const browser = await launchBrowser();
+let browser;
 try {
+  browser = await launchBrowser();
   const page = await browser.newPage();
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
@@ -33,6 +34,6 @@ try {
     process.exitCode = 1;
   }
 } finally {
-  await browser.close();
+  await browser?.close();
   server.stop();
 }

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Grades a class on a Slurm cluster in N shares and merges them:
+#   examples/slurm/submit.sh N SUBMISSIONS OUT [SEED] [STAGES]
+# submits an array of N tasks (grade_array.sh) and a job that runs
+# `raylab grade --merge OUT/report OUT/shard-*` once all of them succeeded.
+# RAYLAB (default: build/raylab of this checkout) must be reachable from the
+# nodes, as must SUBMISSIONS and OUT. Prints the two job ids.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+if [ $# -lt 3 ]; then sed -n '2,8p' "$0"; exit 2; fi
+n=$1 submissions=$(realpath "$2") out=$3 seed=${4:-0} stages=${5:-}
+case "$n" in ''|*[!0-9]*) echo "submit.sh: N must be a whole number, not '$n'" >&2; exit 2 ;; esac
+[ "$n" -ge 1 ] || { echo "submit.sh: N must be at least 1" >&2; exit 2; }
+[ -d "$submissions" ] || { echo "submit.sh: $2 is not a folder" >&2; exit 2; }
+raylab=$(realpath "${RAYLAB:-$here/../../build/raylab}")
+mkdir -p "$out"
+out=$(realpath "$out")
+# Through the environment (--export=ALL): a value in --export=NAME=VALUE
+# may not hold a comma, and a stage list does.
+array=$(RAYLAB=$raylab SUBMISSIONS=$submissions OUT=$out SEED=$seed STAGES=$stages \
+  sbatch --parsable --array="0-$((n - 1))" --chdir="$out" --export=ALL "$here/grade_array.sh")
+shards=""
+for ((k = 0; k < n; ++k)); do shards+=" '$out/shard-$k'"; done
+merge=$(sbatch --parsable --dependency="afterok:${array%%;*}" --job-name=raylab-merge --chdir="$out" \
+  --output="$out/raylab-merge-%j.log" --wrap="'$raylab' grade --merge '$out/report'$shards")
+echo "array job $array (grading, $n shares), merge job $merge (report: $out/report/report.html)"

@@ -8,7 +8,7 @@ struct Ray {
 
 // The nearest hit found so far along a ray.
 struct Hit {
-    float t;  // distance along the ray; NO_HIT when nothing was hit
+    float t;  // distance along the ray; findClosest leaves T_FAR when nothing was hit
     int id;   // index of the object that was hit, -1 for none
 };
 

@@ -11,8 +11,9 @@ float intersectSphere(Ray ray, vec3 center, float radius)
     // sphere lies behind the origin. The camera may be inside a sphere.
     // For a small sphere far away b*b - c cancels (guide, section 2): use
     //     h = radius^2 - |oc - b d|^2
-    // and the roots q = -b - sign(b) (square root of h) and c / q (they
-    // multiply to c; the smaller is the near one).
+    // and the roots q = -b - s (square root of h) and c / q (they multiply
+    // to c; the smaller is the near one), with s = 1 for b >= 0, else -1
+    // (not GLSL's sign(b): that is 0 for b = 0, a ray from the centre).
     // Checked by: raylab check --stage 01 (all views).
     labTodo();
     return NO_HIT;

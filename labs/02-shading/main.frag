@@ -1,6 +1,7 @@
-// Stage 02 - shading. The nearest hit is found as in stage 01; instead of a
-// flat colour the pixel gets the Blinn-Phong colour of that point, lit by
-// the scene's point lights.
+// The main program from stage 02 (shading) on, until a later stage replaces
+// it: the nearest hit is found as in stage 01; instead of a flat colour the
+// pixel gets the Blinn-Phong colour of that point, lit by the scene's point
+// lights.
 #include "ray.glsl"
 #include "scene_spheres.glsl"
 #include "scene_materials.glsl"

@@ -232,6 +232,10 @@ FunctionSpec torusNormalSpec() {
     return s;
 }
 
+// 1 + 2^-23: a float step above 1, where a dot product of two unit vectors
+// can land.
+constexpr double kCosAboveOne = 1.0 + 1.0 / 8388608.0;
+
 FunctionSpec fresnelDielectricSpec() {
     FunctionSpec s;
     s.name = "fresnelDielectric";
@@ -244,6 +248,12 @@ FunctionSpec fresnelDielectricSpec() {
             c.in = {dvec4(cosine, ior, 0, 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
             s.cases.push_back(c);
         }
+    // The cosine of two unit vectors can round a float step above 1: pow()
+    // of the negative 1 - cos is undefined in GLSL (NaN on Mesa).
+    FunctionCase above;
+    above.label = "ior 1.5, cos a float step above 1 (rounding): clamp 1 - cos before pow()";
+    above.in = {dvec4(kCosAboveOne, 1.5, 0, 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
+    s.cases.push_back(above);
     s.reference = [](const FunctionCase& c) {
         return dvec4(reference::fresnelDielectric(c.in[0].x, c.in[0].y), 0, 0, 1);
     };
@@ -263,12 +273,15 @@ FunctionSpec fresnelConductorSpec() {
     s.call = "vec4(fresnelConductor(a0.x, a1.xyz, a2.xyz), 1.0)";
     const dvec3 goldN(0.143, 0.375, 1.442), goldK(3.983, 2.386, 1.603),
         silverN(0.155, 0.117, 0.135), silverK(4.83, 3.12, 2.15);
-    for (double cosine : {1.0, 0.7, 0.4, 0.1, 0.0}) {
+    for (double cosine : {1.0, 0.7, 0.4, 0.1, 0.0, kCosAboveOne}) {
         FunctionCase c;
-        c.label = "gold, cos " + num(cosine);
+        c.label = cosine > 1.0
+                      ? "gold, cos a float step above 1 (rounding): clamp 1 - cos before pow()"
+                      : "gold, cos " + num(cosine);
         c.in = {dvec4(cosine, 0, 0, 0), dvec4(goldN, 0), dvec4(goldK, 0), dvec4(0.0)};
         s.cases.push_back(c);
-        c.label = "silver, cos " + num(cosine);
+        c.label = cosine > 1.0 ? "silver, cos a float step above 1: clamp 1 - cos before pow()"
+                               : "silver, cos " + num(cosine);
         c.in = {dvec4(cosine, 0, 0, 0), dvec4(silverN, 0), dvec4(silverK, 0), dvec4(0.0)};
         s.cases.push_back(c);
     }

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
+
+#include <nlohmann/json.hpp>
 
 using namespace raylab::test;
 
@@ -124,4 +127,83 @@ TEST(HandoutCommand, BadRequestsWriteNothing) {
         left.push_back(e.path().filename().string());
     EXPECT_EQ(left, std::vector<std::string>{"taken"});
     EXPECT_EQ(readFile(dir / "taken" / "notes.txt"), "mine");
+}
+
+namespace {
+
+// PrairieLearn's /grade folder in DIR/NAME, with the files of FROM (a
+// folder) as the student's upload; raylab prairielearn run against it.
+nlohmann::json gradeForPrairieLearn(const ScratchDir& dir, const std::string& name,
+                                    const std::function<void(const fs::path&)>& upload) {
+    const fs::path root = dir / name;
+    fs::create_directories(root / "student");
+    upload(root / "student");
+    CommandResult r = runCommand("GRADE_ROOT=" + quote(root) + " " + quote(raylabExe()) +
+                                 " prairielearn --stages 01");
+    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.all();
+    const fs::path results = root / "results" / "results.json";
+    EXPECT_TRUE(fs::exists(results)) << name;
+    EXPECT_LT(fs::file_size(results), 1024u * 1024u) << name << ": PrairieLearn's limit is 1 MB";
+    nlohmann::json j = nlohmann::json::parse(readFile(results));
+    // PrairieLearn's documented fields, with their types.
+    EXPECT_TRUE(j["gradable"].is_boolean()) << name;
+    EXPECT_TRUE(j["score"].is_number()) << name;
+    EXPECT_GE(j["score"].get<double>(), 0.0);
+    EXPECT_LE(j["score"].get<double>(), 1.0);
+    EXPECT_TRUE(j["message"].is_string()) << name;
+    for (const auto& t : j.value("tests", nlohmann::json::array())) {
+        EXPECT_TRUE(t["name"].is_string());
+        EXPECT_TRUE(t["points"].is_number());
+        EXPECT_TRUE(t["max_points"].is_number());
+        EXPECT_LE(t["points"].get<double>(), t["max_points"].get<double>() + 1e-9);
+        for (const auto& image : t.value("images", nlohmann::json::array()))
+            EXPECT_EQ(image["url"].get<std::string>().rfind("data:image/png;base64,", 0), 0u);
+    }
+    return j;
+}
+
+void copyShaders(const fs::path& from, const fs::path& to) {
+    for (const auto& e : fs::directory_iterator(from))
+        if (e.path().extension() == ".glsl" || e.path().extension() == ".frag")
+            fs::copy_file(e.path(), to / e.path().filename());
+}
+
+}  // namespace
+
+TEST(PrairieLearn, GradesSolvedUntouchedBrokenAndEmptySubmissions) {
+    ScratchDir dir;
+    const fs::path solution = sourceDir() / "solution" / "01-raycast";
+    nlohmann::json solved = gradeForPrairieLearn(dir, "solved", [&](const fs::path& s) {
+        copyShaders(solution, s);  // loose files: they replace the lab's own
+    });
+    EXPECT_TRUE(solved["gradable"].get<bool>());
+    EXPECT_DOUBLE_EQ(solved["score"].get<double>(), 1.0);
+
+    nlohmann::json untouched = gradeForPrairieLearn(dir, "untouched", [&](const fs::path& s) {
+        copyShaders(sourceDir() / "labs" / "01-raycast", s);
+    });
+    EXPECT_LT(untouched["score"].get<double>(), 0.2);
+    int heatMaps = 0;
+    for (const auto& t : untouched["tests"]) heatMaps += t.contains("images") ? 1 : 0;
+    EXPECT_GT(heatMaps, 0) << "failed views carry their difference heat map";
+
+    nlohmann::json broken = gradeForPrairieLearn(dir, "broken", [&](const fs::path& s) {
+        copyShaders(solution, s);
+        std::string text = readFile(s / "intersect_sphere.glsl");
+        text.replace(text.find("    return"), 0, "    float = 1.0;\n");
+        writeFile(s / "intersect_sphere.glsl", text);
+    });
+    EXPECT_DOUBLE_EQ(broken["score"].get<double>(), 0.0);
+    EXPECT_NE(broken.dump().find("01-raycast/intersect_sphere.glsl:"), std::string::npos)
+        << broken.dump();
+    EXPECT_EQ(broken.dump().find("raylab-work"), std::string::npos) << "the student's paths only";
+
+    nlohmann::json empty = gradeForPrairieLearn(dir, "empty", [](const fs::path&) {});
+    EXPECT_FALSE(empty["gradable"].get<bool>()) << "no attempt is used up";
+    EXPECT_EQ(empty["format_errors"][0].get<std::string>(), "nothing was submitted");
+
+    // A zip of the labs folder: one extra top folder around the stage folders.
+    nlohmann::json zipped = gradeForPrairieLearn(
+        dir, "zipped", [&](const fs::path& s) { writeSolvedLabs(s / "my-labs"); });
+    EXPECT_DOUBLE_EQ(zipped["score"].get<double>(), 1.0);
 }

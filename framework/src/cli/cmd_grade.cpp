@@ -26,6 +26,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -234,7 +235,7 @@ void printSummary(const ClassResult& result) {
 
 }  // namespace
 
-int cmdGrade(const GradeOptions& g) {
+std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     if (g.jobs < 1 || g.jobs > 64) throw Error("--jobs must be between 1 and 64");
     if (!(g.timeoutSeconds > 0.0) || g.timeoutSeconds > 3600.0)
         throw Error("--timeout must be between 0 and 3600 seconds");
@@ -307,7 +308,7 @@ int cmdGrade(const GradeOptions& g) {
                             (out / "reference" / (stages[i]->id + ".log")).string());
         },
         interrupted);
-    if (!referencesDone) return 130;
+    if (!referencesDone) return std::nullopt;
 
     // 2. Every stage of every submission.
     ClassResult result;
@@ -386,18 +387,27 @@ int cmdGrade(const GradeOptions& g) {
             graded[{item.student, item.stage->id}] = std::move(r);
         });
     }
-    if (!completed) return 130;
+    if (!completed) return std::nullopt;
     for (std::size_t i = 0; i < students.size(); ++i)
         for (const StageInfo* s : stages) result.students[i].stages.push_back(graded[{i, s->id}]);
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    // 3. The reports; a share writes its results for --merge instead.
-    if (shard.count > 1) {
+    return result;
+}
+
+int cmdGrade(const GradeOptions& g) {
+    const std::optional<ClassResult> graded = gradeClass(g);
+    if (!graded) return 130;  // interrupted: no report
+    const ClassResult& result = *graded;
+    const fs::path out = g.outDir;
+    // The reports; a share writes its results for --merge instead.
+    if (!g.shard.empty()) {
+        const Shard shard = parseShard(g.shard);
         writeShardFile(result, shard, out);
         std::printf("graded share %d/%d (%zu students) in %.1f s; merge the shares with: raylab "
                     "grade --merge OUT SHARD_DIR...\n",
-                    shard.index, shard.count, students.size(), result.seconds);
+                    shard.index, shard.count, result.students.size(), result.seconds);
         return 0;
     }
     writeClassReports(result, out);

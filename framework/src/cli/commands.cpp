@@ -22,13 +22,14 @@ Command checkCommand();
 Command shaderCommand();
 Command compareCommand();
 Command handoutCommand();
+Command prairieLearnCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(),  runCommand(),    renderCommand(),    raysCommand(),
-        traceCommand(),   gradeCommand(),  gradeItemCommand(), gradeReferenceCommand(),
-        demoCommand(),    benchCommand(),  checkCommand(),     shaderCommand(),
-        compareCommand(), handoutCommand()};
+        stagesCommand(),  runCommand(),     renderCommand(),      raysCommand(),
+        traceCommand(),   gradeCommand(),   gradeItemCommand(),   gradeReferenceCommand(),
+        demoCommand(),    benchCommand(),   checkCommand(),       shaderCommand(),
+        compareCommand(), handoutCommand(), prairieLearnCommand()};
     return table;
 }
 

@@ -7,6 +7,7 @@
 #include "grade_result.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ void writeShardFile(const ClassResult& result, const Shard& shard,
 // The class reports in OUT: <student>/results.json, summary.csv, junit.xml,
 // report.html, and the summary table on stdout (cmd_grade.cpp).
 void writeClassReports(const ClassResult& result, const std::filesystem::path& outDir);
+
+// Grades the class G describes (its --shard share, if any) into G.outDir's
+// students/ and reference/ folders; nullopt when interrupted (Ctrl-C).
+// cmdGrade writes the reports; the single-submission graders
+// (cmd_prairielearn.cpp) their own results.
+struct GradeOptions;
+std::optional<ClassResult> gradeClass(const GradeOptions& g);
 
 // `raylab grade --merge OUT SHARD_DIR...`. Returns the exit code.
 int cmdGradeMerge(const std::vector<std::string>& args);

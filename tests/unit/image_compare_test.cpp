@@ -59,3 +59,50 @@ TEST(ImageCompare, DifferentSizesDisagree) {
     EXPECT_FALSE(d.sameSize);
     EXPECT_FALSE(imagesAgree(d, kTol));
 }
+
+namespace {
+
+raylab::Image filled(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    raylab::Image img(w, h);
+    for (int i = 0; i < w * h; ++i) {
+        img.rgba[std::size_t(4 * i)] = r;
+        img.rgba[std::size_t(4 * i + 1)] = g;
+        img.rgba[std::size_t(4 * i + 2)] = b;
+        img.rgba[std::size_t(4 * i + 3)] = 255;
+    }
+    return img;
+}
+
+}  // namespace
+
+// Magenta is TODO stripes only while a TODO is open: with none left, a violet
+// picture is just a wrong colour.
+TEST(Diagnose, StripesOnlyWithAnOpenTodo) {
+    raylab::Image expected = filled(40, 30, 40, 40, 40);
+    for (int x = 0; x < 40; ++x) expected.rgba[std::size_t(4 * x)] = 90;  // not flat
+    raylab::Image violet = filled(40, 30, 200, 40, 200);
+    for (int i = 0; i < 80; ++i) violet.rgba[std::size_t(4 * i + 1)] = 200;  // not flat
+    raylab::DiagnoseContext open;
+    EXPECT_NE(raylab::diagnose(violet, expected, 8, open).find("unfinished TODO"),
+              std::string::npos);
+    raylab::DiagnoseContext none;
+    none.openTodos = false;
+    EXPECT_EQ(raylab::diagnose(violet, expected, 8, none).find("unfinished TODO"),
+              std::string::npos);
+}
+
+// A stage's causes come from its stage.json; without them, the fact alone.
+TEST(Diagnose, CausesAreTheStagesOwn) {
+    raylab::Image expected = filled(40, 30, 200, 200, 200);
+    for (int x = 0; x < 40; ++x) expected.rgba[std::size_t(4 * x)] = 150;
+    raylab::Image dark = filled(40, 30, 20, 20, 20);
+    for (int i = 0; i < 80; ++i) dark.rgba[std::size_t(4 * i)] = 60;  // not flat
+    raylab::DiagnoseContext flatColours;
+    const std::string fact = raylab::diagnose(dark, expected, 8, flatColours);
+    EXPECT_NE(fact.find("too dark"), std::string::npos) << fact;
+    EXPECT_EQ(fact.find('('), std::string::npos) << "no cause without the stage's hints: " << fact;
+    raylab::DiagnoseContext shadows;
+    shadows.darkerCause = "shadow acne?";
+    EXPECT_NE(raylab::diagnose(dark, expected, 8, shadows).find("(shadow acne?)"),
+              std::string::npos);
+}

@@ -88,6 +88,18 @@ TEST(ShaderSource, MissingIncludeNamesTheIncludingFileAndLine) {
     }
 }
 
+TEST(ShaderSource, AFileWithNulBytesIsNamedAsSuch) {
+    Tree t;
+    writeFile(t.dir / "stage/a.glsl", std::string("int a;\nint\0b;\n", 14));
+    try {
+        assembleShader("main.frag", t.search(), {});
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        std::string msg = e.what();
+        EXPECT_NE(msg.find("stage/a.glsl:2: the file holds NUL bytes"), std::string::npos) << msg;
+    }
+}
+
 TEST(ShaderSource, IncludesCannotLeaveTheSearchPath) {
     Tree t;
     for (const char* bad : {"../secret.glsl", "/etc/passwd", "sub/../../x.glsl"}) {

@@ -68,7 +68,8 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         if (!ok) {
             std::printf("       this view checks: %s\n", view.why.c_str());
             std::string hint =
-                diagnose(mine, expected, tolerance.channel, stage.track == "raytrace", nonFinite);
+                diagnose(mine, expected, tolerance.channel,
+                         {stage.hintDarker, stage.hintBrighter, !todos.empty(), nonFinite});
             if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
             // A fact, not a guess: unfinished stubs change the picture.
             if (!todos.empty() && hint.find("unfinished TODO") == std::string::npos)

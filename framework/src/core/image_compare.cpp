@@ -73,9 +73,9 @@ Image diffHeatMap(const Image& a, const Image& b) {
 }
 
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
-                     bool rayTracerCauses, long nonFinite) {
-    if (nonFinite > 0)
-        return std::to_string(nonFinite) +
+                     const DiagnoseContext& context) {
+    if (context.nonFinite > 0)
+        return std::to_string(context.nonFinite) +
                " pixels are NaN or Inf (the magenta ones): in GLSL, sqrt() or pow() of a "
                "negative number, normalize() of a zero vector and 0/0 give NaN";
     if (mine.width != expected.width || mine.height != expected.height) return "";
@@ -112,16 +112,16 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
         }
     if (flat >= all * 99 / 100 && expectedFlat < all * 95 / 100)
         return "the picture is one flat colour: nothing was drawn over the background";
-    if (magenta > expectedMagenta + all / 100)
+    if (context.openTodos && magenta > expectedMagenta + all / 100)
         return "magenta stripes on " + percent(magenta, all) +
                " of the image: an unfinished TODO is reached";
     if (differing == 0) return "";
     if (darker >= differing * 8 / 10)
         return percent(darker, differing) + " of the differing pixels are too dark" +
-               (rayTracerCauses ? " (light missing, or shadow acne?)" : "");
+               (context.darkerCause.empty() ? "" : " (" + context.darkerCause + ")");
     if (brighter >= differing * 8 / 10)
         return percent(brighter, differing) + " of the differing pixels are too bright" +
-               (rayTracerCauses ? " (light that should be blocked or weighted?)" : "");
+               (context.brighterCause.empty() ? "" : " (" + context.brighterCause + ")");
     return "";
 }
 

@@ -31,15 +31,23 @@ bool imagesAgree(const ImageDiff& diff, const CompareTolerance& tol);
 // "0.12% of pixels differ (max 37/255)"
 std::string describe(const ImageDiff& diff);
 
-// A hint at what is wrong, for students ("" when nothing stands out): a
-// picture of one flat colour (nothing drawn), magenta TODO stripes, mostly
-// too dark (missing light, acne), mostly too bright.
-// RAYTRACERCAUSES adds the ray tracer's usual causes to the darker / brighter
-// hints ("light missing, or shadow acne?"); other tracks get the fact alone.
-// NONFINITE: the NaN/Inf pixels of MINE (drawn magenta like TODO stripes):
-// when there are any, the hint is about them.
+// What a hint may say beyond the picture's facts.
+struct DiagnoseContext {
+    // The stage's usual causes of a picture that is mostly too dark or too
+    // bright (stage.json "hints"); empty: the fact alone. A stage of flat
+    // colours has no lighting causes to suggest.
+    std::string darkerCause, brighterCause;
+    // Whether the lab still has a TODO stub: only then can magenta pixels be
+    // its stripes (a violet sphere is magenta too).
+    bool openTodos = true;
+    long nonFinite = 0;  // NaN/Inf pixels of MINE (drawn magenta): the hint is about them
+};
+
+// A hint at what is wrong, for students ("" when nothing stands out): NaN
+// pixels, a picture of one flat colour (nothing drawn), magenta TODO stripes
+// (with open TODOs only), mostly too dark, mostly too bright.
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
-                     bool rayTracerCauses = true, long nonFinite = 0);
+                     const DiagnoseContext& context = {});
 
 // A heat map of the per-pixel difference (black = equal, red = max), for reports.
 Image diffHeatMap(const Image& a, const Image& b);

@@ -143,7 +143,15 @@ struct Assembler {
         if (!included.insert(key).second) return;  // once per program: no include guards needed
         out.files.push_back(file);
         std::string shown = displayPath(file);
-        std::istringstream in(readTextFile(file));
+        const std::string text = readTextFile(file);
+        // A NUL byte ends the text for the GL compiler ("lacks `main'"): say so.
+        if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+            throw Error(
+                shown + ":" +
+                std::to_string(1 + std::count(text.begin(), text.begin() + long(nul), '\n')) +
+                ": the file holds NUL bytes (not plain text: saved as UTF-16, or a "
+                "binary file?); save it as UTF-8 text");
+        std::istringstream in(text);
         std::string line, name;
         for (int n = 1; std::getline(in, line); ++n) {
             if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -232,7 +232,7 @@ StageInfo readStageFile(const fs::path& file) {
     r.allowOnly(doc, "",
                 {"id", "title", "track", "builds_on", "scene", "program", "programs", "limits",
                  "features", "function_checks", "count_checks", "mistakes", "check_views",
-                 "defines"});
+                 "defines", "hints"});
     StageInfo s;
     s.id = r.text(r.member(doc, "stage", "id"), "id");
     if (s.id != file.parent_path().filename().string())
@@ -286,6 +286,12 @@ StageInfo readStageFile(const fs::path& file) {
         s.checkViews.push_back(v);
     }
     if (doc.contains("defines")) s.extraDefines = r.strings(doc["defines"], "defines");
+    if (doc.contains("hints")) {
+        const json& h = doc["hints"];
+        r.allowOnly(h, "hints", {"darker", "brighter"});
+        if (h.contains("darker")) s.hintDarker = r.text(h["darker"], "hints.darker");
+        if (h.contains("brighter")) s.hintBrighter = r.text(h["brighter"], "hints.brighter");
+    }
     return s;
 }
 

@@ -69,6 +69,10 @@ struct StageInfo {
     std::filesystem::path mistakes;  // the mistakes catalogue, relative to the project root
     std::vector<CheckView> checkViews;
     std::vector<std::string> extraDefines;  // besides the limits ("defines" in stage.json)
+    // The usual causes of a failed view that is mostly too dark or too
+    // bright, for hints ("hints": {"darker": ..., "brighter": ...}); empty:
+    // hints state the fact alone.
+    std::string hintDarker, hintBrighter;
 
     bool has(const std::string& feature) const { return features.count(feature) > 0; }
     // The part of the id before the first '-' ("01" of "01-raycast"): what

@@ -89,9 +89,12 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             if (nonFinite)
                 check.output = std::to_string(nonFinite) +
                                " pixels are NaN or Inf (shown magenta); " + check.output;
-            std::string hint = check.passed ? ""
-                                            : diagnose(mine, expected, tolerance.channel,
-                                                       stage.track == "raytrace", nonFinite);
+            const bool openTodos = !renderers.forView(view).openTodos().empty();
+            std::string hint =
+                check.passed
+                    ? ""
+                    : diagnose(mine, expected, tolerance.channel,
+                               {stage.hintDarker, stage.hintBrighter, openTodos, nonFinite});
             if (!hint.empty()) check.output += "; " + hint;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
             writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));

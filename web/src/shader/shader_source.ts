@@ -59,7 +59,15 @@ export async function assembleShader(
     if (included.has(shown)) return;  // once per program: no include guards needed
     included.add(shown);
     out.files.push({ folder, name });
-    const lines = (await folder.read(name)).split('\n');
+    const text = await folder.read(name);
+    // A NUL byte ends the text for the GL compiler ("lacks main"): say so (as natively).
+    const nul = text.indexOf('\0');
+    if (nul >= 0)
+      throw new ShaderError(
+        `${shown}:${text.slice(0, nul).split('\n').length}: the file holds NUL bytes (not plain text: ` +
+          'saved as UTF-16, or a binary file?); save it as UTF-8 text',
+      );
+    const lines = text.split('\n');
     if (lines.length > 0 && lines[lines.length - 1] === '') lines.pop();  // getline: no last empty line
     for (let n = 1; n <= lines.length; ++n) {
       let line = lines[n - 1];

@@ -14,7 +14,7 @@ TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodosWithFileAndLine) {
     EXPECT_EQ(r.exitCode, 1) << r.all();
     EXPECT_EQ(failedViews(r.out).size(), 7u) << "six views and the intersectSphere function check\n"
                                              << r.all();
-    EXPECT_NE(r.err.find("labs/01-raycast/intersect_sphere.glsl:17: TODO(01.a)"), std::string::npos)
+    EXPECT_NE(r.err.find("labs/01-raycast/intersect_sphere.glsl:18: TODO(01.a)"), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos)
         << r.err;

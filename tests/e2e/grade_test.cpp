@@ -188,14 +188,6 @@ std::string withoutTimings(std::string text) {
     return text;
 }
 
-std::vector<std::string> relativeFiles(const fs::path& dir) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 }  // namespace
 
 // --shard K/N on every share, then --merge: the report an unsharded run
@@ -224,7 +216,7 @@ TEST(Grade, ShardsMergeIntoTheUnshardedReport) {
     CommandResult merge = runRaylab("grade --merge " + quote(dir / "merged") + " " +
                                     quote(dir / "s1") + " " + quote(dir / "s0"));
     ASSERT_EQ(merge.exitCode, 0) << merge.all();
-    EXPECT_EQ(relativeFiles(dir / "merged"), relativeFiles(dir / "whole"));
+    EXPECT_EQ(filesUnder(dir / "merged"), filesUnder(dir / "whole"));
     for (const char* f : {"summary.csv", "junit.xml", "report.html", "students/ada/results.json",
                           "students/bob/results.json", "students/cy/results.json"})
         EXPECT_EQ(withoutTimings(readFile(dir / "merged" / f)),

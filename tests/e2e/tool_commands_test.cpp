@@ -60,19 +60,6 @@ TEST(ShaderCommand, RefusesAFurStage) {
     EXPECT_NE(r.err.find("raylab shader"), std::string::npos) << r.err;
 }
 
-namespace {
-
-// Every file under DIR, relative to it.
-std::vector<std::string> filesUnder(const fs::path& dir) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-}  // namespace
-
 TEST(HandoutCommand, WritesTheReleasedStagesOnlyAndTheyRun) {
     ScratchDir dir;
     const fs::path out = dir / "week3";

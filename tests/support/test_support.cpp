@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <algorithm>
+
 #include "gl_context.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +65,14 @@ ScratchDir::ScratchDir() {
 ScratchDir::~ScratchDir() {
     std::error_code ec;
     fs::remove_all(path_, ec);
+}
+
+std::vector<std::string> filesUnder(const fs::path& dir) {
+    std::vector<std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir).string());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 void writeSolvedLabs(const fs::path& dir) {

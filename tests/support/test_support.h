@@ -50,6 +50,9 @@ void ensureGlContext();
 // A fully solved copy of the labs (raylab-labgen --solved) in DIR.
 void writeSolvedLabs(const fs::path& dir);
 
+// Every regular file under DIR, as paths relative to it, sorted.
+std::vector<std::string> filesUnder(const fs::path& dir);
+
 // Replaces the first occurrence of FROM by TO in FILE; fails the test if FROM is absent.
 void replaceInFile(const fs::path& file, const std::string& from, const std::string& to);
 

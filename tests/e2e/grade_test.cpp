@@ -253,3 +253,27 @@ TEST(Grade, AMergeOfTheWrongSharesIsRefused) {
         EXPECT_NE(r.err.find("expected K/N"), std::string::npos) << r.err;
     }
 }
+
+// An untouched lab earns nothing for its stage, also from views it already
+// draws right (they never reach the stage's code); a solved lab earns all.
+TEST(Grade, AnUntouchedLabScoresZero) {
+    ScratchDir dir;
+    makeClass(dir / "class");
+    CommandResult r = runRaylab("grade --submissions " + quote(dir / "class") +
+                                " --stages 03,07 --jobs 2 --seed 2 --out " + quote(dir / "out"));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    auto bob = nlohmann::json::parse(readFile(dir / "out" / "students" / "bob" / "results.json"));
+    EXPECT_DOUBLE_EQ(bob["score"].get<double>(), 0.0) << bob.dump(1);
+    bool offView = false;
+    for (const auto& t : bob["tests"])
+        if (t["name"] == "03-shadows / shadows-off") {
+            offView = true;
+            EXPECT_NE(t["output"].get<std::string>().find("does not reach the stage's code"),
+                      std::string::npos)
+                << t.dump();
+        }
+    EXPECT_TRUE(offView);
+    auto ada = nlohmann::json::parse(readFile(dir / "out" / "students" / "ada" / "results.json"));
+    EXPECT_DOUBLE_EQ(ada["score"].get<double>(), 200.0);
+    EXPECT_TRUE(fs::exists(dir / "out" / "reference" / "03-shadows" / "untouched" / "front.png"));
+}

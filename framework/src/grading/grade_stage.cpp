@@ -7,12 +7,15 @@
 #include "paths.h"
 #include "shader_program.h"
 #include "stage_setup.h"
+#include "stage_sources.h"
 #include "view_renderers.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 namespace raylab {
 
@@ -21,6 +24,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
+// Beside a stage's reference pictures: the handed-out lab's, from the same views.
+constexpr const char* kUntouchedFolder = "untouched";
 constexpr double kZeroCreditShare = 0.10;
 
 std::string relativeTo(const fs::path& p, const fs::path& base) {
@@ -40,6 +45,22 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::pa
     ViewRenderers renderers(stage, solutionSources(stage), "", kGradeWidth, kGradeHeight);
     for (const CheckView& view : gradingViews(stage, seed))
         writePngAtomic(renderers.render(view), dir / (view.name + ".png"));
+    // The lab as handed out, from the same views: a view it already draws
+    // right never reaches this stage's code and carries none of its points,
+    // and a student's picture equal to it earns nothing (gradeStage).
+    const fs::path untouched = dir / kUntouchedFolder;
+    try {
+        fs::create_directories(untouched);
+        ViewRenderers lab(stage, labSources(stage, defaultLabRoot()), "", kGradeWidth,
+                          kGradeHeight);
+        for (const CheckView& view : gradingViews(stage, seed))
+            writePngAtomic(lab.render(view), untouched / (view.name + ".png"));
+    } catch (const Error& e) {  // no lab to compare with: every view counts as before
+        std::fprintf(stderr, "raylab: the handed-out lab of %s does not render (%s)\n",
+                     stage.id.c_str(), e.what());
+        std::error_code ec;
+        fs::remove_all(untouched, ec);
+    }
 }
 
 StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student,
@@ -73,7 +94,26 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
                            (c.firstFailure.empty() ? "" : "; first failure: " + c.firstFailure);
             countResults.push_back(check);
         }
-        for (const CheckView& view : views) {
+        // Which views reach this stage's code: those the handed-out lab
+        // draws wrong (all, when its pictures are missing). The others
+        // still catch mistakes (a switch ignored), but their points are
+        // scaled by the share the reaching views earned, so that an
+        // untouched lab scores 0.
+        const fs::path untouchedDir = refDir / kUntouchedFolder;
+        std::vector<bool> reaches(views.size(), true);
+        std::vector<std::optional<Image>> untouched(views.size());
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            const fs::path png = untouchedDir / (views[i].name + ".png");
+            if (!fs::exists(png)) continue;
+            untouched[i] = loadPng(png);
+            reaches[i] = !imagesAgree(compareImages(*untouched[i],
+                                                    loadPng(refDir / (views[i].name + ".png")),
+                                                    tolerance.channel),
+                                      tolerance);
+        }
+        const std::size_t firstView = result.checks.size();
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            const CheckView& view = views[i];
             CheckResult check;
             check.name = view.name;
             check.kind = "image";
@@ -83,9 +123,15 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             Image expected = loadPng(refDir / (view.name + ".png"));
             ImageDiff diff = compareImages(mine, expected, tolerance.channel);
             check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
-            check.score =
-                nonFinite ? 0.0 : check.maxScore * imageCredit(diff.badShare, check.passed);
+            // Still the handed-out lab's picture: nothing of this view's work is done.
+            const bool asHandedOut =
+                !check.passed && untouched[i] &&
+                imagesAgree(compareImages(mine, *untouched[i], tolerance.channel), tolerance);
+            check.score = nonFinite || asHandedOut
+                              ? 0.0
+                              : check.maxScore * imageCredit(diff.badShare, check.passed);
             check.output = describe(diff);
+            if (asHandedOut) check.output += "; the same picture as the lab as handed out";
             if (nonFinite)
                 check.output = std::to_string(nonFinite) +
                                " pixels are NaN or Inf (shown magenta); " + check.output;
@@ -102,6 +148,25 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             check.referenceImage = relativeTo(refDir / (view.name + ".png"), outDir);
             check.diffImage = relativeTo(imageDir / (view.name + "-diff.png"), outDir);
             result.checks.push_back(check);
+        }
+        double earned = 0, possible = 0;
+        for (std::size_t i = 0; i < views.size(); ++i)
+            if (reaches[i]) {
+                earned += result.checks[firstView + i].score;
+                possible += result.checks[firstView + i].maxScore;
+            }
+        const double share = possible > 0 ? earned / possible : 1.0;
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            CheckResult& c = result.checks[firstView + i];
+            if (reaches[i] || share >= 1.0) continue;
+            c.score *= share;
+            c.passed = c.passed && share >= 1.0;
+            char note[160];
+            std::snprintf(note, sizeof note,
+                          "; this view does not reach the stage's code (the lab as handed out "
+                          "draws it right): it earns %.0f%%, the share the other views earned",
+                          100.0 * share);
+            c.output += note;
         }
     } catch (const ShaderError& e) {
         result.status = "compile error";

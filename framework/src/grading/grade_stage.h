@@ -12,6 +12,10 @@
 //     of `raylab check`) earns its points; one that fails earns half of them
 //     scaled down linearly to nothing at 10% of pixels differing; a view with
 //     NaN or Inf pixels earns nothing;
+//   - a picture still equal to the lab as handed out (labs/<stage>) earns
+//     nothing, and a view the handed-out lab already draws right (it never
+//     reaches the stage's code) earns at most the share of their points the
+//     other views earned, so an untouched lab scores 0;
 //   - a function check earns the share of its cases that agree, a count
 //     check (stage.json "count_checks") the share of views that agree; both
 //     share the 30 points.
@@ -33,7 +37,8 @@ inline constexpr int kGradeWidth = 160;
 inline constexpr int kGradeHeight = 120;
 
 // OUT/reference/<stage>/<view>.png for every grading view (solution, float
-// target converted to 8 bits exactly as for submissions).
+// target converted to 8 bits exactly as for submissions), and the lab as
+// handed out from the same views in OUT/reference/<stage>/untouched/.
 void renderGradingReferences(const StageInfo& stage, unsigned seed,
                              const std::filesystem::path& outDir);
 

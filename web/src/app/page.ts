@@ -32,10 +32,10 @@ export class Page {
   private loading = 0;
   private demo = false;
   private sceneShells = 0;
-  private shown: StageJson | null = null;
+  private shown: StageJson | null = null;  // the stage being drawn (the select can be ahead of it while loading)
   private sourceShown = 'solution';  // the Code choice being drawn (a cancelled picker goes back to it)
   private busy = false;  // a load is under way
-  private overlayHidden = false;  // the stage being drawn (the select can be ahead of it while loading)
+  private overlayHidden = false;  // key H
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {}
 
@@ -121,6 +121,7 @@ export class Page {
     if (!full) return;
     $<HTMLSelectElement>('stage').value = full.info.id;
     $<HTMLSelectElement>('source').value = 'solution';
+    this.sourceShown = 'solution';
     this.fillScenes();
     $<HTMLSelectElement>('scene').value = scene;
     this.demo = track === 'raytrace';  // the fly-through; fur scenes spin by themselves

@@ -48,7 +48,7 @@ TEST(LabGuides, TheCheckFindsWhatItLooksFor) {
     EXPECT_EQ(badReferences("the views are in solution/05-primitives/stage.json").size(), 1u);
     EXPECT_EQ(badReferences("run ctest -L numerics").size(), 1u);
     EXPECT_EQ(badReferences("written by tools/scenes/make_demo_scenes.py").size(), 1u);
-    EXPECT_TRUE(badReferences("build/raylab check --stage 01; framework/shaders/ray.glsl; "
+    EXPECT_TRUE(badReferences("raylab check --stage 01; framework/shaders/ray.glsl; "
                               "assets/scenes/lite.json; labs/01-raycast/tests.txt")
                     .empty());
 }

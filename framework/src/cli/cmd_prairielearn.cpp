@@ -84,8 +84,12 @@ int cmdPrairieLearn(const PlOptions& o) {
     const fs::path work = root / "raylab-work";
     std::error_code ec;
     fs::remove_all(work, ec);
-    const SubmissionLayout layout =
-        layOutSubmission(root / "student", stages, work / "class" / "student");
+    SubmissionLayout layout;
+    try {
+        layout = layOutSubmission(root / "student", stages, work / "class" / "student");
+    } catch (const fs::filesystem_error& e) {  // an upload that cannot be read or copied
+        layout.problem = "the submission cannot be read: " + std::string(e.what());
+    }
     std::string notes;
     for (const std::string& n : layout.notes) notes += n + "\n";
     if (!layout.problem.empty())  // not gradable: no attempt is used up

@@ -2,31 +2,16 @@
 // formulas, seams that share positions exactly, unit normals, and - through
 // a digest of every float's bits, every index and the edge adjacency - the
 // very meshes the native build makes (digests from framework/src/fur/mesh's
-// makeShape and buildEdgeAdjacency, printed as by dumpMesh below).
+// makeShape and buildEdgeAdjacency, printed as by mesh_dump.mjs).
 import assert from 'node:assert/strict';
-import { createHash } from 'node:crypto';
 import { test } from 'node:test';
 
 import { buildEdgeAdjacency } from '../../dist/fur/mesh/adjacency.js';
 import { MeshError, validateMesh } from '../../dist/fur/mesh/mesh.js';
 import { positionIds } from '../../dist/fur/mesh/position_ids.js';
 import { defaultDetail, detailForTriangles, makeShape, shapeNames } from '../../dist/fur/mesh/mesh_shapes.js';
+import { dumpMesh, sha256 } from './mesh_dump.mjs';
 
-// The mesh and its adjacency as text: one line per vertex with the float
-// bits of position, normal, uv; the indices; the edge counts and indices.
-function dumpMesh(m) {
-    const hex = (a) => [...new Uint32Array(Float32Array.from(a).buffer)].map((u) => u.toString(16).padStart(8, '0') + ' ').join('');
-    const lines = [`name ${m.name}`, `V ${m.positions.length / 3} T ${m.indices.length / 3}`];
-    for (let i = 0; i < m.positions.length / 3; ++i)
-        lines.push(hex(m.positions.subarray(3 * i, 3 * i + 3)) + hex(m.normals.subarray(3 * i, 3 * i + 3)) + hex(m.uvs.subarray(2 * i, 2 * i + 2)));
-    lines.push([...m.indices].map((i) => `${i} `).join(''));
-    const a = buildEdgeAdjacency(m);
-    lines.push(`E ${a.indices.length / 4} ${a.interiorEdges} ${a.boundaryEdges} ${a.nonManifoldEdges} ${a.degenerateTriangles}`);
-    lines.push([...a.indices].map((i) => `${i} `).join(''));
-    return lines.join('\n') + '\n';
-}
-
-const sha256 = (text) => createHash('sha256').update(text).digest('hex');
 
 const NATIVE = {
     'sphere 6': '8defae6cce68168c2cf8d07a195095c2e78fa00e96e3d0c19ffc1c897c2623fb',

@@ -17,9 +17,18 @@ void labTodoIf(bool reachedEarlier)
 }
 
 #ifdef RAYLAB_FRAGMENT_SHADER
+#ifdef RAYLAB_TODO_MARK
+// The checks' second target: 1 where a stub was reached. Its alpha makes
+// "over" blending keep a mark that an earlier layer wrote.
+layout(location = 1) out vec4 labTodoMark;
+#endif
+
 // Call last in main(): adds the stripes where a stub was reached.
 vec3 labOverlay(vec3 color)
 {
+#ifdef RAYLAB_TODO_MARK
+    labTodoMark = gLabTodoReached ? vec4(1.0) : vec4(0.0);
+#endif
     if (!gLabTodoReached) return color;
     bool stripe = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 12.0), 2.0) == 0.0;
     return stripe ? mix(color, vec3(1.0, 0.0, 1.0), 0.75) : color;

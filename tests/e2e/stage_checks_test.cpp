@@ -45,6 +45,8 @@ TEST_P(StageChecks, UntouchedLabFailsAndListsItsOpenTodos) {
     EXPECT_EQ(r.exitCode, 1) << r.all();
     EXPECT_FALSE(failedViews(r.out).empty()) << r.out;
     EXPECT_NE(r.err.find("open TODO"), std::string::npos) << r.err;
+    // The shader marks the pixels that reach a stub; the hint reports them.
+    EXPECT_NE(r.out.find("of the image reaches an unfinished TODO"), std::string::npos) << r.out;
 }
 
 TEST_P(StageChecks, SolvedLabCopyPassesWithNoOpenTodos) {
@@ -72,6 +74,9 @@ TEST_P(StageChecks, EveryKnownMistakeIsCaught) {
             replaceInFile(lab / stage() / spec["file"].get<std::string>(), pair[0], pair[1]);
         CommandResult r = runRaylab("check " + stageArg() + " --lab " + quote(lab.path()));
         EXPECT_EQ(r.exitCode, 1) << r.all();
+        // No stub is left, so no hint may blame one (a violet sphere is not
+        // TODO stripes: stage 02's `inside` view once said so).
+        EXPECT_EQ(r.out.find("unfinished TODO"), std::string::npos) << r.out;
         std::vector<std::string> failed = failedViews(r.out);
         for (const auto& view : spec["caught_by"])
             EXPECT_NE(std::find(failed.begin(), failed.end(), view.get<std::string>()),
@@ -89,3 +94,30 @@ INSTANTIATE_TEST_SUITE_P(AllStages, StageChecks, ::testing::ValuesIn(availableSt
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
+
+// The TODO hint comes from the pixels the shader marks, not from the list of
+// open TODOs nor from magenta: a lab with a stub that no pixel reaches and a
+// real mistake elsewhere hears about the mistake. (Stage 02's `inside` view is
+// inside a violet sphere, which a colour detector took for stripes.)
+TEST(TodoHints, AnOpenTodoThatNoPixelReachesIsNotBlamed) {
+    ScratchDir lab;
+    writeSolvedLabs(lab.path());
+    const fs::path shading = lab / "02-shading" / "blinn_phong.glsl";
+    // The ambient term added once per light, and an open stub on a path no
+    // pixel takes (no material has a negative exponent).
+    replaceInFile(shading, "    color += m.ambient;\n",
+                  "    if (m.shininess < -1.0) labTodo();  // TODO(02.x): never reached\n");
+    replaceInFile(shading, "color += uLightColors[i] * m.diffuse * lambert;",
+                  "color += m.ambient + uLightColors[i] * m.diffuse * lambert;");
+    CommandResult r = runRaylab("check --stage 02 --lab " + quote(lab.path()));
+    EXPECT_EQ(r.exitCode, 1) << r.all();
+    EXPECT_NE(r.err.find("1 open TODO"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("unfinished TODO"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("too bright (ambient added once per light"), std::string::npos) << r.out;
+
+    // The control: the same stub on every pixel's path is reported.
+    replaceInFile(shading, "if (m.shininess < -1.0) labTodo();", "labTodo();");
+    r = runRaylab("check --stage 02 --lab " + quote(lab.path()));
+    EXPECT_NE(r.out.find("100% of the image reaches an unfinished TODO"), std::string::npos)
+        << r.out;
+}

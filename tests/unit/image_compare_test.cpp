@@ -75,20 +75,24 @@ raylab::Image filled(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t 
 
 }  // namespace
 
-// Magenta is TODO stripes only while a TODO is open: with none left, a violet
-// picture is just a wrong colour.
-TEST(Diagnose, StripesOnlyWithAnOpenTodo) {
+// The TODO hint comes from the pixels the shader marked as reaching a stub,
+// never from colour: a violet picture with no marked pixel is a wrong colour.
+TEST(Diagnose, TodoHintOnlyFromMarkedPixels) {
     raylab::Image expected = filled(40, 30, 40, 40, 40);
     for (int x = 0; x < 40; ++x) expected.rgba[std::size_t(4 * x)] = 90;  // not flat
     raylab::Image violet = filled(40, 30, 200, 40, 200);
     for (int i = 0; i < 80; ++i) violet.rgba[std::size_t(4 * i + 1)] = 200;  // not flat
-    raylab::DiagnoseContext open;
-    EXPECT_NE(raylab::diagnose(violet, expected, 8, open).find("unfinished TODO"),
-              std::string::npos);
-    raylab::DiagnoseContext none;
-    none.openTodos = false;
-    EXPECT_EQ(raylab::diagnose(violet, expected, 8, none).find("unfinished TODO"),
-              std::string::npos);
+    raylab::DiagnoseContext unmarked;
+    EXPECT_EQ(raylab::diagnose(violet, expected, 8, unmarked).find("TODO"), std::string::npos);
+    raylab::DiagnoseContext marked;
+    marked.todoPixels = 120;  // 10% of 1200
+    EXPECT_NE(raylab::diagnose(violet, expected, 8, marked)
+                  .find("10% of the image reaches an "
+                        "unfinished TODO"),
+              std::string::npos)
+        << raylab::diagnose(violet, expected, 8, marked);
+    marked.todoPixels = 1;
+    EXPECT_NE(raylab::diagnose(violet, expected, 8, marked).find("under 1%"), std::string::npos);
 }
 
 // A stage's causes come from its stage.json; without them, the fact alone.

@@ -46,8 +46,8 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 tolerance.maxBadShare * 100.0, tolerance.channel);
     int passed = 0;
     for (const CheckView& view : stage.checkViews) {
-        long nonFinite = 0;
-        Image mine = students.render(view, &nonFinite);
+        long nonFinite = 0, todoPixels = 0;
+        Image mine = students.render(view, &nonFinite, &todoPixels);
         Image expected;
         if (references) {
             expected = references->render(view);
@@ -69,7 +69,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
             std::printf("       this view checks: %s\n", view.why.c_str());
             std::string hint =
                 diagnose(mine, expected, tolerance.channel,
-                         {stage.hintDarker, stage.hintBrighter, !todos.empty(), nonFinite});
+                         {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
             if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
             // A fact, not a guess: unfinished stubs change the picture.
             if (!todos.empty() && hint.find("unfinished TODO") == std::string::npos)

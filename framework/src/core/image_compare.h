@@ -37,15 +37,16 @@ struct DiagnoseContext {
     // bright (stage.json "hints"); empty: the fact alone. A stage of flat
     // colours has no lighting causes to suggest.
     std::string darkerCause, brighterCause;
-    // Whether the lab still has a TODO stub: only then can magenta pixels be
-    // its stripes (a violet sphere is magenta too).
-    bool openTodos = true;
+    // Pixels of MINE whose computation reached a TODO stub, as the shader
+    // itself marked them (never guessed from magenta: a violet sphere is
+    // magenta too). Which stub is not known: the hint does not name one.
+    long todoPixels = 0;
     long nonFinite = 0;  // NaN/Inf pixels of MINE (drawn magenta): the hint is about them
 };
 
 // A hint at what is wrong, for students ("" when nothing stands out): NaN
-// pixels, a picture of one flat colour (nothing drawn), magenta TODO stripes
-// (with open TODOs only), mostly too dark, mostly too bright.
+// pixels, pixels that reached a TODO stub, a picture of one flat colour
+// (nothing drawn), mostly too dark, mostly too bright.
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
                      const DiagnoseContext& context = {});
 

@@ -96,6 +96,7 @@ void FurRenderer::setMesh(Mesh mesh) {
 
 void FurRenderer::rebuild() {
     std::vector<std::string> defines = stage_.defines();
+    if (target_->hasTodoMarks()) defines.push_back("RAYLAB_TODO_MARK");  // a check target
     if (stage_.has("fur_shader"))
         for (const std::string& d : budget_.defines()) defines.push_back(d);
     const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
@@ -228,8 +229,7 @@ void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSe
     const Frame f = frameFor(camera, timeSeconds, settings);
 
     target_->bind();
-    glClearColor(scene_.background.r, scene_.background.g, scene_.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    target_->clear(scene_.background.r, scene_.background.g, scene_.background.b);
     // The frame is a picture: its alpha stays the clear's 1. The shaders'
     // alpha drives blending and discard only (a skin drawn with alpha 0.3
     // must not make a see-through PNG).

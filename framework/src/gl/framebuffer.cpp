@@ -27,6 +27,17 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+    if (format == PixelFormat::Rgba32F) {
+        glGenTextures(1, &todo_);
+        glBindTexture(GL_TEXTURE_2D, todo_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, todo_, 0);
+        const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glDrawBuffers(2, both);
+    }
     // A depth buffer for the tracks that rasterise meshes (the ray tracer
     // draws one canvas and leaves the depth test off).
     glGenRenderbuffers(1, &depth_);
@@ -40,6 +51,7 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
         glDeleteFramebuffers(1, &fbo_);
         glDeleteRenderbuffers(1, &depth_);
         glDeleteTextures(1, &color_);
+        glDeleteTextures(1, &todo_);
         throw Error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
                     " framebuffer (status 0x" + std::to_string(status) + ")");
     }
@@ -49,11 +61,34 @@ Framebuffer::~Framebuffer() {
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(1, &depth_);
     glDeleteTextures(1, &color_);
+    glDeleteTextures(1, &todo_);
 }
 
 void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, width_, height_);
+}
+
+void Framebuffer::clear(float r, float g, float b) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    const GLfloat colour[] = {r, g, b, 1.0f}, zero[] = {0, 0, 0, 0}, depth = 1.0f;
+    glClearBufferfv(GL_COLOR, 0, colour);
+    if (todo_) glClearBufferfv(GL_COLOR, 1, zero);
+    glClearBufferfv(GL_DEPTH, 0, &depth);
+}
+
+long Framebuffer::countTodoMarks() const {
+    if (!todo_) return -1;
+    std::vector<std::uint8_t> marks(std::size_t(width_) * std::size_t(height_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RED, GL_UNSIGNED_BYTE, marks.data());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    long n = 0;
+    for (std::uint8_t m : marks) n += m > 127;
+    return n;
 }
 
 Image Framebuffer::read() const {

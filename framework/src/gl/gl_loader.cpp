@@ -27,7 +27,7 @@ namespace {
     X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)                            \
     X(GenRenderbuffers) X(BindRenderbuffer) X(RenderbufferStorage) X(FramebufferRenderbuffer)      \
     X(DeleteRenderbuffers) X(GenQueries) X(BeginQuery) X(EndQuery)                                \
-    X(GetQueryObjectui64v) X(DeleteQueries)
+    X(GetQueryObjectui64v) X(DeleteQueries) X(DrawBuffers) X(ClearBufferfv)
 // clang-format on
 
 bool allLoaded(std::string* missing) {

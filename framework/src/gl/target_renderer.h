@@ -13,6 +13,7 @@ class TargetRenderer : public TrackRenderer {
 public:
     Image read() const override { return target_->read(); }
     std::vector<float> readFloats() const override { return target_->readFloats(); }
+    long todoPixels() const override { return target_->countTodoMarks(); }
     int width() const override { return target_->width(); }
     int height() const override { return target_->height(); }
     void blitToScreen(int screenWidth, int screenHeight) const override {

@@ -118,8 +118,8 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             check.name = view.name;
             check.kind = "image";
             check.maxScore = imagePoints / double(views.size());
-            long nonFinite = 0;
-            Image mine = renderers.render(view, &nonFinite);
+            long nonFinite = 0, todoPixels = 0;
+            Image mine = renderers.render(view, &nonFinite, &todoPixels);
             Image expected = loadPng(refDir / (view.name + ".png"));
             ImageDiff diff = compareImages(mine, expected, tolerance.channel);
             check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
@@ -135,12 +135,11 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             if (nonFinite)
                 check.output = std::to_string(nonFinite) +
                                " pixels are NaN or Inf (shown magenta); " + check.output;
-            const bool openTodos = !renderers.forView(view).openTodos().empty();
             std::string hint =
                 check.passed
                     ? ""
                     : diagnose(mine, expected, tolerance.channel,
-                               {stage.hintDarker, stage.hintBrighter, openTodos, nonFinite});
+                               {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
             if (!hint.empty()) check.output += "; " + hint;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
             writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));

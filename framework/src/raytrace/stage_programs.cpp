@@ -9,6 +9,7 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (bvh) d.push_back("RAYLAB_BVH");
     if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
     if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
+    if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
     return d;
 }
 

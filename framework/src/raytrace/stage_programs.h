@@ -21,6 +21,7 @@ struct ShaderVariant {
     bool specialized = false;  // the scene's static data compiled in as constants (scene_baking.h)
     bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
     bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
+    bool todoMarks = false;        // RAYLAB_TODO_MARK: also mark the pixels that reach a TODO stub
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -89,6 +89,7 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
         throw Error(displayPath(stage_.folder() / "stage.json") +
                     ": program.geometry: the ray tracer's renderer takes no geometry shader");
     checkSceneFits(stage_, scene_);
+    variant_.todoMarks = target_->hasTodoMarks();  // a float (check) target counts them
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
     rebuild();
@@ -235,8 +236,7 @@ void StageRenderer::uploadStaticShapes() {
 void StageRenderer::render(const Camera& camera, float timeSeconds,
                            const RenderSettings& settings) {
     target_->bind();
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
+    target_->clear(0, 0, 0);
     const ShaderProgram& p = *program_;
     p.use();
     const CameraPose& pose = camera.pose();

@@ -40,9 +40,10 @@ Camera ViewRenderers::cameraOf(const CheckView& view) {
     return Camera(view.pose ? *view.pose : it->second.pose, it->second.fovYDeg);
 }
 
-Image ViewRenderers::render(const CheckView& view, long* nonFinite) {
+Image ViewRenderers::render(const CheckView& view, long* nonFinite, long* todoPixels) {
     TrackRenderer& r = forView(view);
     r.render(cameraOf(view), view.time, settingsOf(view));
+    if (todoPixels) *todoPixels = r.todoPixels();
     return imageFromFloats(r.readFloats(), r.width(), r.height(), nonFinite);
 }
 

@@ -31,8 +31,9 @@ public:
     std::filesystem::path sceneFileOf(const CheckView& view) const;
 
     // VIEW drawn with its camera, time and settings, read back to 8 bits
-    // (imageFromFloats); *NONFINITE counts NaN/Inf pixels when given.
-    Image render(const CheckView& view, long* nonFinite = nullptr);
+    // (imageFromFloats); *NONFINITE counts NaN/Inf pixels and *TODOPIXELS
+    // the pixels that reached a TODO stub (as the shader marked them), when given.
+    Image render(const CheckView& view, long* nonFinite = nullptr, long* todoPixels = nullptr);
 
     // The count check NAME for VIEW (track_renderer.h).
     CountResult countCheck(const std::string& name, const CheckView& view);

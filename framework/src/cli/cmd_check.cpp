@@ -1,3 +1,4 @@
+#include "check_sandbox.h"
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
@@ -14,6 +15,13 @@ namespace raylab {
 int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     StageSetup setup = resolveStageOptions(options);
     const StageInfo& stage = *setup.stage;
+    // The work runs in a child, as grading runs it: a crash or an endless
+    // compile becomes a one-line cause (check_sandbox.h).
+    if (!insideCheckSandbox())
+        return runCheckInSandbox(stage,
+                                 setup.sources.lab ? setup.sources.search.front().parent_path()
+                                                   : std::filesystem::path(),
+                                 {check.timeoutSeconds, check.memoryMb});
     const std::filesystem::path against = check.againstDir;
     std::error_code ec;
     if (!against.empty() && !std::filesystem::is_directory(against, ec))
@@ -115,6 +123,10 @@ Command checkCommand() {
             cmd.add_option("--against", check->againstDir,
                            "compare with DIR/<view>.png instead of the solution rendered now");
             cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");
+            cmd.add_option("--timeout", check->timeoutSeconds,
+                           "stop the check after this many seconds (default 600)");
+            cmd.add_option("--memory-mb", check->memoryMb,
+                           "memory limit of the check, as in grading (default 2048)");
             auto backend = std::make_shared<BackendOption>(cmd);
             return std::function<int()>([=] {
                 check->backend = backend->resolve();

@@ -53,6 +53,8 @@ struct CheckOptions {
     std::string againstDir;  // compare with these PNGs instead of the live solution
     std::string saveDir;     // write the checked images here
     Backend backend = Backend::Auto;
+    double timeoutSeconds = 600.0;  // the whole check, in its child process (check_sandbox.h)
+    long memoryMb = 2048;
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 

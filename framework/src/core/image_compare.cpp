@@ -77,7 +77,8 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
     if (context.nonFinite > 0)
         return std::to_string(context.nonFinite) +
                " pixels are NaN or Inf (the magenta ones): in GLSL, sqrt() or pow() of a "
-               "negative number, normalize() of a zero vector and 0/0 give NaN";
+               "negative number, normalize() of a zero vector and 0/0 give NaN; exp() of a large "
+               "number and x/0 give Inf";
     if (mine.width != expected.width || mine.height != expected.height) return "";
     const long all = long(mine.width) * long(mine.height);
     auto percent = [&](long n, long of) {

@@ -1,7 +1,8 @@
 #pragma once
 // Running an untrusted job in a child process: its own process group, a
 // wall-clock timeout (the whole group is killed), an address-space limit,
-// stdout and stderr to a log file. Used by `raylab grade`.
+// stdout and stderr to a log file (or the parent's own). Used by `raylab grade`
+// and `raylab check`.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,7 +25,8 @@ struct ChildOutcome {
 
 class Child {
 public:
-    // Starts ARGV (argv[0] a path) with its output appended to LOG.
+    // Starts ARGV (argv[0] a path) with its output appended to LOG; an empty
+    // LOG: to this process's stdout and stderr.
     Child(const std::vector<std::string>& argv, const std::filesystem::path& log,
           const ChildLimits& limits);
     // Non-blocking: true (and the outcome filled in) once the child has ended.

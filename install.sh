@@ -31,6 +31,7 @@ packages=(
   clang libclang-rt-14-dev clang-format            # tests: libFuzzer targets (ctest -L fuzz), tools/check-format.sh
   chromium                                         # the web build's tests (ctest -L web): WebGL 2 headless
   slurm-wlm munge                                  # the cluster test (ctest -L cluster): a one-node Slurm cluster
+  zip unzip                                        # `raylab autograder` (Gradescope's zip) and its test
 )
 # The web build (web/) compiles with TypeScript from the npm registry: Node.js
 # and npm from Debian unless a Node.js is already installed (NodeSource's

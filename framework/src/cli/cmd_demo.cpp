@@ -11,7 +11,7 @@
 #include "paths.h"
 #include "stage_renderer.h"
 #include "track_registry.h"
-#include "viewer_app.h"
+#include "viewer_window.h"
 
 #include <cstdio>
 #include <ctime>
@@ -67,11 +67,13 @@ int cmdDemo(const DemoOptions& demo) {
     const std::string sceneName = std::filesystem::path(setup.scene.file).stem().string();
 
     if (displayAvailable() && !demo.headless) {
-        std::printf("raylab: demo of stage %s, scene %s, in a window (Esc quits; --headless "
-                    "renders to files instead)\n",
-                    stage.id.c_str(), setup.scene.file.c_str());
-        ViewerApp app(std::move(setup), {}, true);
-        return app.run();
+        if (windowBuiltIn()) {
+            std::printf("raylab: demo of stage %s, scene %s, in a window (Esc quits; --headless "
+                        "renders to files instead)\n",
+                        stage.id.c_str(), setup.scene.file.c_str());
+            return openViewerWindow(std::move(setup), {});
+        }
+        std::printf("raylab: a headless build (RAYLAB_WINDOW=OFF): rendering to files\n");
     }
 
     // Everything that can fail on bad input (scene, shaders) fails before the

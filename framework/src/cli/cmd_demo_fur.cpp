@@ -11,7 +11,7 @@
 #include "gl_loader.h"
 #include "paths.h"
 #include "stage_setup.h"
-#include "viewer_app.h"
+#include "viewer_window.h"
 
 #include <cstdio>
 #include <ctime>
@@ -61,11 +61,13 @@ int cmdDemoFur(const DemoOptions& demo) {
     options.scene = furSceneFile(names.front()).string();
     StageSetup setup = resolveStageOptions(options);
     if (displayAvailable() && !demo.headless) {
-        std::printf("raylab: fur demo of stage %s in a window (T: shells + fins / fur shader, M: "
-                    "mesh, [ ]: shells, F: fins; Esc quits; --headless renders to files)\n",
-                    stage.id.c_str());
-        ViewerApp app(std::move(setup), {}, true);
-        return app.run();
+        if (windowBuiltIn()) {
+            std::printf("raylab: fur demo of stage %s in a window (T: shells + fins / fur shader, "
+                        "M: mesh, [ ]: shells, F: fins; Esc quits; --headless renders to files)\n",
+                        stage.id.c_str());
+            return openViewerWindow(std::move(setup), {});
+        }
+        std::printf("raylab: a headless build (RAYLAB_WINDOW=OFF): rendering to files\n");
     }
 
     auto context = createHeadlessContext(demo.backend);

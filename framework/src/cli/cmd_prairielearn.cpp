@@ -9,16 +9,13 @@
 #include "command.h"
 #include "commands.h"
 #include "error.h"
-#include "grade_shards.h"
-#include "grade_stage.h"
 #include "paths.h"
-#include "submission_layout.h"
+#include "upload_grading.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 namespace raylab {
 
@@ -50,13 +47,6 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::vector<std::string> splitList(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream in(list);
-    for (std::string id; std::getline(in, id, ',');) out.push_back(findStage(id).id);
-    return out;
-}
-
 struct PlOptions {
     std::string root;
     std::string stages;
@@ -70,7 +60,7 @@ int cmdPrairieLearn(const PlOptions& o) {
     const fs::path root =
         !o.root.empty() ? fs::path(o.root) : fs::path(env && *env ? env : "/grade");
     if (o.stages.empty()) throw Error("--stages is required (the stages this question grades)");
-    const std::vector<std::string> stages = splitList(o.stages);
+    const std::vector<std::string> stages = stageList(o.stages);
     const fs::path results = root / "results" / "results.json";
     fs::create_directories(results.parent_path());
     using Json = nlohmann::ordered_json;
@@ -81,43 +71,20 @@ int cmdPrairieLearn(const PlOptions& o) {
         return 0;
     };
 
-    const fs::path work = root / "raylab-work";
-    std::error_code ec;
-    fs::remove_all(work, ec);
-    SubmissionLayout layout;
-    try {
-        layout = layOutSubmission(root / "student", stages, work / "class" / "student");
-    } catch (const fs::filesystem_error& e) {  // an upload that cannot be read or copied
-        layout.problem = "the submission cannot be read: " + std::string(e.what());
-    }
+    const UploadGrade graded = gradeUpload(root / "student", root / "raylab-work",
+                                           {stages, o.seed, o.timeoutSeconds, o.memoryMb});
     std::string notes;
-    for (const std::string& n : layout.notes) notes += n + "\n";
-    if (!layout.problem.empty())  // not gradable: no attempt is used up
+    for (const std::string& n : graded.layout.notes) notes += n + "\n";
+    const std::string& problem = graded.layout.problem;
+    if (!problem.empty())  // not gradable: no attempt is used up
         return write(Json{{"gradable", false},
                           {"score", 0.0},
-                          {"format_errors", Json::array({layout.problem})},
-                          {"message", layout.problem},
+                          {"format_errors", Json::array({problem})},
+                          {"message", problem},
                           {"output", notes}});
-
-    GradeOptions g;
-    g.submissions = (work / "class").string();
-    g.outDir = (work / "out").string();
-    g.stages = o.stages;
-    g.jobs = 1;
-    g.seed = o.seed;
-    g.timeoutSeconds = o.timeoutSeconds;
-    g.memoryMb = o.memoryMb;
-    const std::optional<ClassResult> graded = gradeClass(g);
-    if (!graded || graded->students.empty()) throw Error("grading was interrupted");
-    const StudentResult& st = graded->students.front();
-    // Messages name the student's own files ("01-raycast/intersect_sphere.glsl:24"),
-    // not the grader's working copy.
-    const std::string workPrefix = (work / "class" / "student").string() + "/";
-    auto shown = [&](std::string text) {
-        for (std::size_t at; (at = text.find(workPrefix)) != std::string::npos;)
-            text.erase(at, workPrefix.size());
-        return text;
-    };
+    const StudentResult& st = *graded.student;
+    auto shown = [&](const std::string& text) { return graded.shown(text); };
+    std::error_code ec;
 
     Json tests = Json::array();
     std::size_t imageBytes = 0;
@@ -144,7 +111,7 @@ int cmdPrairieLearn(const PlOptions& o) {
                    {"message", shown(c.output)}};
             // The difference heat map of a failed view, while the budget lasts.
             if (!c.passed && !c.diffImage.empty()) {
-                const fs::path png = work / "out" / c.diffImage;
+                const fs::path png = graded.outDir / c.diffImage;
                 if (fs::is_regular_file(png, ec)) {
                     const std::string url = "data:image/png;base64," + base64(readTextFile(png));
                     if (imageBytes + url.size() <= kImageBudget) {

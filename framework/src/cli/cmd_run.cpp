@@ -1,7 +1,7 @@
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
-#include "viewer_app.h"
+#include "viewer_window.h"
 
 #include <cstdlib>
 
@@ -15,9 +15,7 @@ bool displayAvailable() {
 
 int cmdRun(const StageOptions& options, const RunOptions& run) {
     StageSetup setup = resolveStageOptions(options);
-    ViewerApp app(std::move(setup), ViewerApp::Automation{run.exitAfterFrames, run.screenshot},
-                  !run.noVsync);
-    return app.run();
+    return openViewerWindow(std::move(setup), {run.exitAfterFrames, run.screenshot, !run.noVsync});
 }
 
 Command runCommand() {

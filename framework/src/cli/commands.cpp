@@ -23,13 +23,16 @@ Command shaderCommand();
 Command compareCommand();
 Command handoutCommand();
 Command prairieLearnCommand();
+Command gradescopeCommand();
+Command autograderCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(),  runCommand(),     renderCommand(),      raysCommand(),
-        traceCommand(),   gradeCommand(),   gradeItemCommand(),   gradeReferenceCommand(),
-        demoCommand(),    benchCommand(),   checkCommand(),       shaderCommand(),
-        compareCommand(), handoutCommand(), prairieLearnCommand()};
+        stagesCommand(),    runCommand(),     renderCommand(),       raysCommand(),
+        traceCommand(),     gradeCommand(),   gradeItemCommand(),    gradeReferenceCommand(),
+        demoCommand(),      benchCommand(),   checkCommand(),        shaderCommand(),
+        compareCommand(),   handoutCommand(), prairieLearnCommand(), gradescopeCommand(),
+        autograderCommand()};
     return table;
 }
 

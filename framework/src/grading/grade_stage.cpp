@@ -117,6 +117,7 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             CheckResult check;
             check.name = view.name;
             check.kind = "image";
+            check.seeded = i >= stage.checkViews.size();  // gradingViews() appends them
             check.maxScore = imagePoints / double(views.size());
             long nonFinite = 0, todoPixels = 0;
             Image mine = renderers.render(view, &nonFinite, &todoPixels);
@@ -207,6 +208,7 @@ std::string stageResultToJson(const StageResult& r) {
                                {"score", c.score},
                                {"max_score", c.maxScore},
                                {"passed", c.passed},
+                               {"seeded", c.seeded},
                                {"output", c.output},
                                {"student_image", c.studentImage},
                                {"reference_image", c.referenceImage},
@@ -231,6 +233,7 @@ StageResult stageResultFromJson(const std::string& text) {
             k.score = c.at("score").get<double>();
             k.maxScore = c.at("max_score").get<double>();
             k.passed = c.at("passed").get<bool>();
+            k.seeded = c.value("seeded", false);  // shard files written before it existed
             k.output = c.at("output").get<std::string>();
             k.studentImage = c.at("student_image").get<std::string>();
             k.referenceImage = c.at("reference_image").get<std::string>();

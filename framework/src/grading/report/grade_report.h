@@ -23,6 +23,25 @@ namespace raylab {
 std::string gradescopeJson(const StudentResult& student);
 void writeGradescopeResults(const StudentResult& student, const std::filesystem::path& file);
 
+// The same for Gradescope's autograder itself (`raylab gradescope`): every
+// test also gets its "visibility", a "number" ("2.3": stage 2, check 3) and
+// "tags" (the stage, the kind of check), and the top-level "output" is a
+// readable report per stage (what failed and how, the compiler messages with
+// file:line, the hints) of what students may see now: a check shown only
+// later is counted there, never described, and the total is left out while
+// any test is hidden (Gradescope hides it then too). Visibility values are
+// Gradescope's: "visible", "hidden", "after_due_date", "after_published".
+struct GradescopeOptions {
+    std::string visibility = "visible";               // the submission as a whole
+    std::string testVisibility = "visible";           // every test but the seeded views'
+    std::string seededVisibility = "after_due_date";  // the seeded views (CheckResult::seeded)
+    std::string stdoutVisibility = "hidden";          // the autograder's own log
+    std::string notes;    // first lines of the output (files left out of the upload)
+    double seconds = -1;  // execution_time; negative: the stages' own times
+};
+std::string gradescopeJson(const StudentResult& student, const GradescopeOptions& options);
+bool isGradescopeVisibility(const std::string& value);
+
 // student,<stage ids...>,total,max,notes - one row per student in ClassResult
 // order. Stage columns hold the score (numeric, empty when the student has no
 // result for the stage); notes lists the stages that were not graded

@@ -14,8 +14,12 @@ struct CheckResult {
     double score = 0;  // 0..maxScore (partial credit)
     double maxScore = 0;
     bool passed = false;  // full marks
-    std::string output;   // one line: what was measured, why it failed ("3.1% of pixels differ (max
-                          // 255/255)")
+    // An image check from a view drawn from the seed (grade_views.h): the
+    // views students never see in `raylab check`, which a course may keep
+    // hidden until after the due date (Gradescope's visibility).
+    bool seeded = false;
+    std::string output;  // one line: what was measured, why it failed ("3.1% of pixels differ (max
+                         // 255/255)")
     // Image checks: paths relative to the output folder, empty when not available.
     std::string studentImage, referenceImage, diffImage;
 };

@@ -1,0 +1,56 @@
+#include "upload_grading.h"
+
+#include "commands.h"
+#include "error.h"
+#include "grade_shards.h"
+#include "stage_catalog.h"
+
+#include <sstream>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> stageList(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream in(list);
+    for (std::string id; std::getline(in, id, ',');) out.push_back(findStage(id).id);
+    return out;
+}
+
+std::string UploadGrade::shown(std::string text) const {
+    if (workPrefix.empty()) return text;
+    for (std::size_t at; (at = text.find(workPrefix)) != std::string::npos;)
+        text.erase(at, workPrefix.size());
+    return text;
+}
+
+UploadGrade gradeUpload(const fs::path& uploaded, const fs::path& work,
+                        const UploadGradeOptions& o) {
+    UploadGrade r;
+    std::error_code ec;
+    fs::remove_all(work, ec);
+    try {
+        r.layout = layOutSubmission(uploaded, o.stages, work / "class" / "student");
+    } catch (const fs::filesystem_error& e) {  // an upload that cannot be read or copied
+        r.layout.problem = "the submission cannot be read: " + std::string(e.what());
+    }
+    if (!r.layout.problem.empty()) return r;
+
+    GradeOptions g;
+    g.submissions = (work / "class").string();
+    g.outDir = (work / "out").string();
+    for (const std::string& s : o.stages) g.stages += (g.stages.empty() ? "" : ",") + s;
+    g.jobs = 1;  // one stage at a time: the memory of one child at most
+    g.seed = o.seed;
+    g.timeoutSeconds = o.timeoutSeconds;
+    g.memoryMb = o.memoryMb;
+    std::optional<ClassResult> graded = gradeClass(g);
+    if (!graded || graded->students.empty()) throw Error("grading was interrupted");
+    r.student = graded->students.front();
+    r.outDir = work / "out";
+    r.workPrefix = (work / "class" / "student").string() + "/";
+    return r;
+}
+
+}  // namespace raylab

@@ -16,6 +16,7 @@ out vec3 vsRay;
 void main()
 {
     gl_Position = vec4(aCorner, 0.0, 1.0);
-    vec3 corner = uEye + uForward * uFocal + uRight * (uAspect * aCorner.x) + uUp * aCorner.y;
-    vsRay = corner - uEye;
+    // The corner relative to the eye, never uEye + ... - uEye: far from the
+    // origin that difference cancels and loses digits of the direction.
+    vsRay = uForward * uFocal + uRight * (uAspect * aCorner.x) + uUp * aCorner.y;
 }

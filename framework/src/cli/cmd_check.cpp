@@ -48,11 +48,26 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 setup.sources.label.c_str(),
                 against.empty() ? "the solution rendered here" : displayPath(against).c_str(), w, h,
                 context->backendName().c_str());
+    int passed = 0, failed = 0;
+    // Function checks first: a failing one names the one input, the
+    // expected and the actual value, the cheapest hint there is.
+    const auto functions = functionSpecsFor(stage);
+    if (!functions.empty())
+        std::printf("  function checks: each function on a table of inputs (hard cases included) "
+                    "against double precision\n");
+    std::vector<std::string> failedFunctions;
+    for (const FunctionSpec* spec : functions) {
+        FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
+        bool ok = f.passed == f.total;
+        (ok ? passed : failed) += 1;
+        if (!ok) failedFunctions.push_back(f.name);
+        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
+                    f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
+    }
     std::printf("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 from "
                 "every pixel of the\n"
                 "  reference's 3x3 neighbourhood\n",
                 tolerance.maxBadShare * 100.0, tolerance.channel);
-    int passed = 0;
     for (const CheckView& view : stage.checkViews) {
         long nonFinite = 0, todoPixels = 0;
         Image mine = students.render(view, &nonFinite, &todoPixels);
@@ -66,7 +81,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
             writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
         ImageDiff diff = compareImages(mine, expected, tolerance.channel);
         bool ok = imagesAgree(diff, tolerance) && nonFinite == 0;
-        passed += ok;
+        (ok ? passed : failed) += 1;
         std::printf(
             "  %s %-14s %s%s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str(),
             nonFinite
@@ -79,6 +94,10 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                 diagnose(mine, expected, tolerance.channel,
                          {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
             if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
+            if (hint.empty() && !failedFunctions.empty())
+                std::printf("       note: the function check %s failed above, with its first "
+                            "wrong input\n",
+                            failedFunctions.front().c_str());
             // A fact, not a guess: unfinished stubs change the picture.
             if (!todos.empty() && hint.find("unfinished TODO") == std::string::npos)
                 std::printf("       note: %zu TODO%s of this lab %s still open (listed above)\n",
@@ -86,19 +105,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
                             todos.size() == 1 ? "is" : "are");
         }
     }
-    int failed = int(stage.checkViews.size()) - passed;
 
-    const auto functions = functionSpecsFor(stage);
-    if (!functions.empty())
-        std::printf("  function checks: each function on a table of inputs (hard cases included) "
-                    "against double precision\n");
-    for (const FunctionSpec* spec : functions) {
-        FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
-        bool ok = f.passed == f.total;
-        (ok ? passed : failed) += 1;
-        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
-                    f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
-    }
     for (const std::string& name : stage.countChecks) {
         // Counted from the check views' cameras: a number the GPU produced
         // against the same number worked out on the CPU.

@@ -142,6 +142,9 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
                     : diagnose(mine, expected, tolerance.channel,
                                {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
             if (!hint.empty()) check.output += "; " + hint;
+            // What the view exercises points at the code to look at.
+            if (!check.passed && !view.why.empty())
+                check.output += "; this view checks: " + view.why;
             writePngAtomic(mine, imageDir / (view.name + ".png"));
             writePngAtomic(diffHeatMap(mine, expected), imageDir / (view.name + "-diff.png"));
             check.studentImage = relativeTo(imageDir / (view.name + ".png"), outDir);

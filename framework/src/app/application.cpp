@@ -61,9 +61,10 @@ Application::~Application() {
 }
 
 void Application::setVsync(bool on) {
-    vsync_ = on;
-    if (SDL_GL_SetSwapInterval(on ? 1 : 0) != 0 && on)
-        std::fprintf(stderr, "raylab: vsync is not available here\n");
+    const bool refused = SDL_GL_SetSwapInterval(on ? 1 : 0) != 0 && on;
+    if (refused && !vsyncRefused_) std::fprintf(stderr, "raylab: vsync is not available here\n");
+    vsyncRefused_ = refused;
+    vsync_ = on && !refused;
 }
 
 int Application::run() {

@@ -34,7 +34,10 @@ protected:
 
     void quit() { quit_ = true; }
     bool vsync() const { return vsync_; }
+    // Asks for vsync; where the driver refuses it (llvmpipe often does),
+    // vsync() stays false and vsyncState() says "unavailable".
     void setVsync(bool on);
+    const char* vsyncState() const { return vsync_ ? "on" : vsyncRefused_ ? "unavailable" : "off"; }
     // Text shown in the title after the frame rate (e.g. a shader error).
     void setStatus(const std::string& status) { status_ = status; }
     void drawableSize(int* width, int* height) const {
@@ -47,6 +50,7 @@ private:
     SDL_GLContext context_ = nullptr;
     bool quit_ = false;
     bool vsync_ = true;
+    bool vsyncRefused_ = false;  // the driver refused the last request for vsync
     std::string status_;
 };
 

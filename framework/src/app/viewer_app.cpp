@@ -123,8 +123,8 @@ void ViewerApp::onKey(SDL_Keycode key) {
     switch (key) {
     case SDLK_ESCAPE: quit(); break;
     case SDLK_v:
-        setVsync(!vsync());
-        std::printf("vsync %s\n", onOff(vsync()));
+        setVsync(!vsync());  // from "unavailable": asks again
+        std::printf("vsync %s\n", vsyncState());
         break;
     case SDLK_p:
         paused_ = !paused_;
@@ -156,7 +156,7 @@ void ViewerApp::drawOverlay() {
                   frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
     std::vector<std::pair<std::string, std::string>> rows = {{"frame", frame}};
     for (auto& row : settingsRows(s, setup_.stage->track)) rows.push_back(std::move(row));
-    rows.insert(rows.end(), {{"[V] vsync", onOff(vsync())},
+    rows.insert(rows.end(), {{"[V] vsync", vsyncState()},
                              {"[P] animation", paused_ ? "paused" : "running"},
                              {"[H] hide this panel", ""}});
     overlay_->draw("RayLab " + setup_.stage->id + " - " + displayPath(setup_.sceneFile), rows);

@@ -4,6 +4,7 @@
 #include "function_checks.h"
 #include "function_compare.h"
 #include "fur_function_cases.h"
+#include "shading_function_cases.h"
 
 #include "reference_intersect.h"
 #include "reference_shading.h"
@@ -379,6 +380,7 @@ const std::vector<FunctionSpec>& functionSpecs() {
             sphereSpec(), fresnelDielectricSpec(), fresnelConductorSpec(), planeSpec(),
             discSpec(),   triangleSpec(),          torusNormalSpec(),      sphereUvSpec(),
             planeUvSpec()};
+        for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));
         return all;
     }();

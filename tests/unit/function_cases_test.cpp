@@ -135,6 +135,11 @@ TEST(FunctionCases, TablesHoldTheHardCases) {
     EXPECT_TRUE(has("intersectPlane", "parallel, in the plane"));
     EXPECT_TRUE(has("intersectTriangle", "on the edge a-b"));
     EXPECT_TRUE(has("sphereUV", "across the seam"));
+    // A pole with |d.y| a float step above 1: asin() needs the clamp.
+    const FunctionCase& pole = caseStartingWith("sphereUV", "north pole, d.y a float step");
+    EXPECT_GT(pole.in[0].y, 1.0);
+    EXPECT_EQ(float(pole.in[0].y), std::nextafter(1.0f, 2.0f));  // what the harness reads
+    EXPECT_LT(caseStartingWith("sphereUV", "south pole, d.y a float step").in[0].y, -1.0);
     // The tangent of a normal-map case need be neither unit nor perpendicular.
     const FunctionCase& skew = caseStartingWith("applyNormalMap", "tangent neither unit");
     EXPECT_GT(std::abs(glm::length(glm::dvec3(skew.in[1])) - 1.0), 0.1);
@@ -150,6 +155,28 @@ TEST(FunctionCases, ComparisonRejectsAWrongAnswerAndNaN) {
     EXPECT_NE(s.compare(head, want + glm::dvec4(0.01, 0, 0, 0), want), "");
     EXPECT_NE(s.compare(head, glm::dvec4(-1, 0, 0, 1), want).find("got no hit"), std::string::npos);
     EXPECT_NE(s.compare(head, glm::dvec4(std::nan(""), 0, 0, 1), want).find("NaN"),
+              std::string::npos);
+}
+
+// u is compared modulo 1 (the picture repeats: u and u + 1 are the same
+// place), and a failure shows the value as the function returned it.
+TEST(FunctionCases, UvComparisonIsModuloOneAndShowsTheValueReturned) {
+    const FunctionSpec& s = spec("sphereUV");
+    const FunctionCase& c = s.cases.front();
+    EXPECT_EQ(s.compare(c, glm::dvec4(1.25, 0.5, 0, 1), glm::dvec4(0.25, 0.5, 0, 1)), "");
+    EXPECT_EQ(s.compare(c, glm::dvec4(0.0, 0.5, 0, 1), glm::dvec4(1.0, 0.5, 0, 1)), "");
+    const std::string why = s.compare(c, glm::dvec4(0.25, 0.5, 0, 1), glm::dvec4(0.9, 0.5, 0, 1));
+    EXPECT_NE(why.find("got (0.25, 0.5)"), std::string::npos) << why;
+    EXPECT_NE(why.find("expected (0.9, 0.5)"), std::string::npos) << why;
+    EXPECT_NE(why.find("modulo 1"), std::string::npos) << why;
+    // A wrong v: no word about u.
+    const std::string v = s.compare(c, glm::dvec4(0.5, 0.2, 0, 1), glm::dvec4(0.5, 0.5, 0, 1));
+    EXPECT_NE(v.find("got (0.5, 0.2)"), std::string::npos) << v;
+    EXPECT_EQ(v.find("modulo"), std::string::npos) << v;
+    // At a pole any u is right; NaN is named.
+    const FunctionCase& pole = caseStartingWith("sphereUV", "north pole, d.y a float step");
+    EXPECT_EQ(s.compare(pole, glm::dvec4(0.123, 1.0, 0, 1), s.reference(pole)), "");
+    EXPECT_NE(s.compare(pole, glm::dvec4(0.5, std::nan(""), 0, 1), s.reference(pole)).find("NaN"),
               std::string::npos);
 }
 

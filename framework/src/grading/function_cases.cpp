@@ -295,6 +295,67 @@ FunctionSpec fresnelConductorSpec() {
     return s;
 }
 
+// a0: the ray's unit direction; a1: the unit normal facing the ray; a2.x: 1
+// entering the glass, 0 leaving it; a2.y: the index of refraction.
+FunctionCase glassCase(const std::string& what, double degrees, bool entering, double ior) {
+    const double a = glm::radians(degrees);
+    const dvec3 normal(0, 1, 0), dir(std::sin(a), -std::cos(a), 0);
+    FunctionCase c;
+    c.label = what + " [" + (entering ? "entering" : "leaving") + ", ior " + num(ior) + ", " +
+              num(degrees) + " degrees from the normal]";
+    c.in = {dvec4(dir, 0), dvec4(normal, 0), dvec4(entering ? 1.0 : 0.0, ior, 0, 0), dvec4(0.0)};
+    return c;
+}
+
+FunctionSpec refractGlassSpec() {
+    FunctionSpec s;
+    s.name = "refractGlass";
+    s.includes = {"ray.glsl", "fresnel.glsl"};
+    s.call = "refractGlass(a0.xyz, a1.xyz, a2.x > 0.5, a2.y)";
+    s.cases = {
+        glassCase("head-on into glass", 0, true, 1.5),
+        glassCase("into glass", 30, true, 1.5),
+        glassCase("into glass, steep", 60, true, 1.5),
+        glassCase("into glass, grazing", 85, true, 1.5),
+        glassCase("into water", 45, true, 1.33),
+        glassCase("into diamond", 45, true, 2.4),
+        glassCase("out of glass, head-on", 0, false, 1.5),
+        glassCase("out of glass (Schlick with the refracted ray's cosine)", 30, false, 1.5),
+        glassCase("out of glass, just below the critical angle 41.8", 41, false, 1.5),
+        glassCase("out of glass beyond the critical angle: total internal reflection", 45, false,
+                  1.5),
+        glassCase("out of glass, grazing: total internal reflection", 80, false, 1.5),
+        glassCase("out of water below its critical angle 48.8", 45, false, 1.33),
+        glassCase("out of diamond below its critical angle 24.6", 20, false, 2.4),
+        glassCase("out of diamond beyond the critical angle: total internal reflection", 30, false,
+                  2.4),
+    };
+    s.reference = [](const FunctionCase& c) {
+        return reference::refractGlass(xyz(c.in[0]), xyz(c.in[1]), c.in[2].x > 0.5, c.in[2].y);
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
+        if (!finite(got)) return c.label + ": got NaN or Inf";
+        const bool gotTir = xyz(got) == dvec3(0.0), wantTir = xyz(want) == dvec3(0.0);
+        auto text = [](const dvec4& v) {
+            return "refracted (" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) +
+                   "), F = " + num(v.w);
+        };
+        if (wantTir && !gotTir)
+            return c.label +
+                   ": expected total internal reflection (nothing refracted, F = 1), got " +
+                   text(got);
+        if (!wantTir && gotTir)
+            return c.label + ": expected " + text(want) +
+                   ", got total internal reflection (F = " + num(got.w) + ")";
+        if (std::fabs(got.w - want.w) > 1e-4 || glm::length(xyz(got) - xyz(want)) > 1e-4)
+            return c.label + ": expected " +
+                   (wantTir ? "total internal reflection, F = 1" : text(want)) + ", got " +
+                   (gotTir ? "F = " + num(got.w) : text(got));
+        return "";
+    };
+    return s;
+}
+
 // u agrees modulo 1: the picture repeats (GL_REPEAT), so u and u + 1 are the
 // same place, and at the seam u = 0 and u = 1 meet. A failure shows the
 // values as returned.
@@ -390,10 +451,16 @@ FunctionSpec planeUvSpec() {
 
 const std::vector<FunctionSpec>& functionSpecs() {
     static const std::vector<FunctionSpec> specs = [] {
-        std::vector<FunctionSpec> all = {
-            sphereSpec(), fresnelDielectricSpec(), fresnelConductorSpec(), planeSpec(),
-            discSpec(),   triangleSpec(),          torusNormalSpec(),      sphereUvSpec(),
-            planeUvSpec()};
+        std::vector<FunctionSpec> all = {sphereSpec(),
+                                         fresnelDielectricSpec(),
+                                         fresnelConductorSpec(),
+                                         refractGlassSpec(),
+                                         planeSpec(),
+                                         discSpec(),
+                                         triangleSpec(),
+                                         torusNormalSpec(),
+                                         sphereUvSpec(),
+                                         planeUvSpec()};
         for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));
         return all;

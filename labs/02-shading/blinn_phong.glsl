@@ -13,7 +13,7 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
 
     // TODO(02.a): the ambient colour, added once: it stands for light that
     // arrives from everywhere, not from one lamp.
-    // Checked by: raylab check --stage 02 (views dark-side, inside).
+    // Checked by: raylab check --stage 02 (function blinnPhong, views dark-side, inside).
     labTodo();
 
     for (int i = 0; i < uLightCount; ++i) {
@@ -23,7 +23,7 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
         // TODO(02.b): the diffuse term of light i,
         //     uLightColors[i] * m.diffuse * max(N . L, 0)
         // with L = toLight.
-        // Checked by: raylab check --stage 02 (views front, dark-side).
+        // Checked by: raylab check --stage 02 (function blinnPhong, views front, dark-side).
         labTodo();
         color += m.diffuse / float(uLightCount);  // placeholder: the flat colour of lab 01
 
@@ -31,7 +31,7 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
         //     uLightColors[i] * m.specular * max(N . H, 0)^m.shininess
         // with H the unit half vector between L and toEye - only where the
         // light reaches the front of the surface (N . L > 0).
-        // Checked by: raylab check --stage 02 (view highlights).
+        // Checked by: raylab check --stage 02 (function blinnPhong, view highlights).
         labTodo();
     }
     return color;

@@ -24,13 +24,13 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     // leaves from - the side the light is on: offsetRayOrigin(point, side),
     // with side = normal if the light is in front of the surface, -normal if
     // behind it.
-    // Checked by: raylab check --stage 03 (views front, grazing).
+    // Checked by: raylab check --stage 03 (function lightVisible, views front, grazing).
     labTodo();
     Ray shadowRay = Ray(point, dir);
 
     // TODO(03.b): the light is blocked when findClosest finds an object
     // between the start of the shadow ray and the light - not beyond it.
-    // Checked by: raylab check --stage 03 (views front, beyond-light).
+    // Checked by: raylab check --stage 03 (function lightVisible, views front, beyond-light).
     labTodo();
     return true;
 }

@@ -54,14 +54,13 @@ vec3 trace(Ray primary)
                 } else if (m.type == MAT_METAL) {
                     reflectance = fresnelConductor(cosIncident, m.n, m.k);
                 } else {
-                    // TODO(04.b): glass. The relative index eta is 1/ior entering
-                    // the glass and ior leaving it. refract() returns vec3(0.0)
-                    // under total internal reflection: then everything is
-                    // reflected (F = 1). Otherwise push the refracted ray - it
-                    // starts just INSIDE the surface it crosses, at
+                    // TODO(04.b): glass. refractGlass (fresnel.glsl, TODO 04.e) gives
+                    // the refracted direction and the share F of the light that is
+                    // reflected. Unless nothing is refracted (total internal
+                    // reflection: the direction is vec3(0.0)), push the refracted ray
+                    // - it starts just INSIDE the surface it crosses, at
                     // offsetRayOrigin(point, -normal) - with weight
-                    // current.weight * (1 - F), F from fresnelDielectric with the
-                    // cosine on the air side.
+                    // current.weight * (1 - F). The reflected ray carries F.
                     // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
                     labTodo();
                     reflectance = vec3(1.0);  // placeholder: glass as a perfect mirror

@@ -22,3 +22,19 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
     vec3 f0 = ((n - 1.0) * (n - 1.0) + k * k) / ((n + 1.0) * (n + 1.0) + k * k);
     return f0 + (1.0 - f0) * pow(clamp(1.0 - cosIncident, 0.0, 1.0), 5.0);
 }
+
+// Glass: a ray with unit direction `dir` meets a glass surface of index of
+// refraction `ior`; `normal` is the unit normal facing the ray, and
+// `entering` is true when the ray comes from the air. Returns the refracted
+// direction in xyz and in w the share F of the light that is reflected (the
+// rest goes on in the refracted ray). Under total internal reflection
+// nothing is refracted: vec4(0.0, 0.0, 0.0, 1.0).
+vec4 refractGlass(vec3 dir, vec3 normal, bool entering, float ior)
+{
+    float eta = entering ? 1.0 / ior : ior;
+    vec3 refracted = refract(dir, normal, eta);
+    if (refracted == vec3(0.0)) return vec4(0.0, 0.0, 0.0, 1.0);  // total internal reflection
+    float cosIncident = -dot(dir, normal);
+    float cosTransmitted = -dot(refracted, normal);
+    return vec4(refracted, fresnelDielectric(entering ? cosIncident : cosTransmitted, ior));
+}

@@ -54,17 +54,12 @@ vec3 trace(Ray primary)
                 } else if (m.type == MAT_METAL) {
                     reflectance = fresnelConductor(cosIncident, m.n, m.k);
                 } else {
-                    float eta = entering ? 1.0 / m.ior : m.ior;
-                    vec3 refracted = refract(current.ray.dir, normal, eta);
-                    float F = 1.0;  // total internal reflection
-                    if (refracted != vec3(0.0)) {
-                        float cosTransmitted = -dot(refracted, normal);
-                        F = fresnelDielectric(entering ? cosIncident : cosTransmitted, m.ior);
-                        if (stackSize < MAX_DEPTH) {
-                            stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), refracted),
-                                                          current.weight * (1.0 - F), current.depth + 1);
-                            ++stackSize;
-                        }
+                    vec4 glass = refractGlass(current.ray.dir, normal, entering, m.ior);
+                    float F = glass.w;
+                    if (glass.xyz != vec3(0.0) && stackSize < MAX_DEPTH) {
+                        stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), glass.xyz),
+                                                      current.weight * (1.0 - F), current.depth + 1);
+                        ++stackSize;
                     }
                     reflectance = vec3(F);
                 }

@@ -16,7 +16,7 @@ vec2 planeUV(vec3 point, vec3 origin, vec3 n, float tile)
     // TODO(06.b): project point - origin onto the two axes from planeAxes
     // and divide by the tile size. The texture repeats by itself (its wrap
     // mode is GL_REPEAT), so u and v may grow without bound.
-    // Checked by: raylab check --stage 06 (views front, floor-closeup).
+    // Checked by: raylab check --stage 06 (function planeUV, views front, floor-closeup).
     labTodo();
     return vec2(0.0);
 }

@@ -28,7 +28,7 @@ void applyNormalMap(inout Surface s)
     // TODO(07.a): the tangent frame. s.tangent points east but need not be
     // exactly perpendicular to N: remove its part along N and normalise
     // (Gram-Schmidt), then B = cross(N, T) points north.
-    // Checked by: raylab check --stage 07 (views front, earth-closeup, moon-closeup).
+    // Checked by: raylab check --stage 07 (function applyNormalMap, views front, earth-closeup, moon-closeup).
     labTodo();
     vec3 T = vec3(0.0);
     vec3 B = vec3(0.0);
@@ -36,6 +36,6 @@ void applyNormalMap(inout Surface s)
     // TODO(07.b): read the normal map (textureLayer(s.material.normalMap,
     // s.uv).xyz), decode it to -1..1, rotate it into the world with T, B, N
     // and store the normalised result in s.normal.
-    // Checked by: raylab check --stage 07 (views front, earth-closeup, moon-closeup).
+    // Checked by: raylab check --stage 07 (function applyNormalMap, views front, earth-closeup, moon-closeup).
     labTodo();
 }

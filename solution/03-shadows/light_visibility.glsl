@@ -24,7 +24,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     // leaves from - the side the light is on: offsetRayOrigin(point, side),
     // with side = normal if the light is in front of the surface, -normal if
     // behind it.
-    // Checked by: raylab check --stage 03 (views front, grazing).
+    // Checked by: raylab check --stage 03 (function lightVisible, views front, grazing).
     //@solution
     vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;
     Ray shadowRay = Ray(offsetRayOrigin(point, side), dir);
@@ -35,7 +35,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
 
     // TODO(03.b): the light is blocked when findClosest finds an object
     // between the start of the shadow ray and the light - not beyond it.
-    // Checked by: raylab check --stage 03 (views front, beyond-light).
+    // Checked by: raylab check --stage 03 (function lightVisible, views front, beyond-light).
     //@solution
     Hit blocker;
     return !(findClosest(shadowRay, blocker) && blocker.t < distanceToLight);

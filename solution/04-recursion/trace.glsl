@@ -54,27 +54,21 @@ vec3 trace(Ray primary)
                 } else if (m.type == MAT_METAL) {
                     reflectance = fresnelConductor(cosIncident, m.n, m.k);
                 } else {
-                    // TODO(04.b): glass. The relative index eta is 1/ior entering
-                    // the glass and ior leaving it. refract() returns vec3(0.0)
-                    // under total internal reflection: then everything is
-                    // reflected (F = 1). Otherwise push the refracted ray - it
-                    // starts just INSIDE the surface it crosses, at
+                    // TODO(04.b): glass. refractGlass (fresnel.glsl, TODO 04.e) gives
+                    // the refracted direction and the share F of the light that is
+                    // reflected. Unless nothing is refracted (total internal
+                    // reflection: the direction is vec3(0.0)), push the refracted ray
+                    // - it starts just INSIDE the surface it crosses, at
                     // offsetRayOrigin(point, -normal) - with weight
-                    // current.weight * (1 - F), F from fresnelDielectric with the
-                    // cosine on the air side.
+                    // current.weight * (1 - F). The reflected ray carries F.
                     // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
                     //@solution
-                    float eta = entering ? 1.0 / m.ior : m.ior;
-                    vec3 refracted = refract(current.ray.dir, normal, eta);
-                    float F = 1.0;  // total internal reflection
-                    if (refracted != vec3(0.0)) {
-                        float cosTransmitted = -dot(refracted, normal);
-                        F = fresnelDielectric(entering ? cosIncident : cosTransmitted, m.ior);
-                        if (stackSize < MAX_DEPTH) {
-                            stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), refracted),
-                                                          current.weight * (1.0 - F), current.depth + 1);
-                            ++stackSize;
-                        }
+                    vec4 glass = refractGlass(current.ray.dir, normal, entering, m.ior);
+                    float F = glass.w;
+                    if (glass.xyz != vec3(0.0) && stackSize < MAX_DEPTH) {
+                        stack[stackSize] = PendingRay(Ray(offsetRayOrigin(point, -normal), glass.xyz),
+                                                      current.weight * (1.0 - F), current.depth + 1);
+                        ++stackSize;
                     }
                     reflectance = vec3(F);
                     //@stub

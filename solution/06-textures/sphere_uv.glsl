@@ -13,7 +13,7 @@ vec2 sphereUV(vec3 d)
 {
     // TODO(06.a): u and v as above. GLSL's two-argument atan(y, x) is
     // atan2: it returns the angle in (-pi, pi] of the point (x, y).
-    // Checked by: raylab check --stage 06 (views front, earth-closeup, moon-closeup).
+    // Checked by: raylab check --stage 06 (function sphereUV, views front, earth-closeup, moon-closeup).
     //@solution
     float phi = atan(-d.z, d.x);
     float theta = asin(clamp(d.y, -1.0, 1.0));

@@ -28,7 +28,7 @@ void applyNormalMap(inout Surface s)
     // TODO(07.a): the tangent frame. s.tangent points east but need not be
     // exactly perpendicular to N: remove its part along N and normalise
     // (Gram-Schmidt), then B = cross(N, T) points north.
-    // Checked by: raylab check --stage 07 (views front, earth-closeup, moon-closeup).
+    // Checked by: raylab check --stage 07 (function applyNormalMap, views front, earth-closeup, moon-closeup).
     //@solution
     vec3 T = normalize(s.tangent - dot(s.tangent, N) * N);
     vec3 B = cross(N, T);
@@ -41,7 +41,7 @@ void applyNormalMap(inout Surface s)
     // TODO(07.b): read the normal map (textureLayer(s.material.normalMap,
     // s.uv).xyz), decode it to -1..1, rotate it into the world with T, B, N
     // and store the normalised result in s.normal.
-    // Checked by: raylab check --stage 07 (views front, earth-closeup, moon-closeup).
+    // Checked by: raylab check --stage 07 (function applyNormalMap, views front, earth-closeup, moon-closeup).
     //@solution
     vec3 m = textureLayer(s.material.normalMap, s.uv).xyz * 2.0 - 1.0;
     s.normal = normalize(T * m.x + B * m.y + N * m.z);

@@ -36,7 +36,7 @@ void insertStage(const fs::path& root) {
     swap("\"builds_on\": \"03-shadows\"", "\"builds_on\": \"04-recursion\"");
     swap("\"title\": \"", "\"title\": \"an inserted stage: the sky, written by the student; ");
     // Its TODO is the sky; the Fresnel functions stay 04's to check.
-    swap("\"function_checks\": [\"fresnelDielectric\", \"fresnelConductor\"]",
+    swap("\"function_checks\": [\"fresnelDielectric\", \"fresnelConductor\", \"refractGlass\"]",
          "\"function_checks\": []");
     writeFile(dir / "stage.json", json);
     writeFile(dir / "sky.glsl", "// The colour of a ray that hits nothing.\n"

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 using namespace raylab;
 
@@ -22,6 +24,25 @@ glm::dvec4 referenceFor(const std::string& name, const std::string& label) {
                            [&](const FunctionCase& c) { return c.label == label; });
     if (it == s.cases.end()) throw std::runtime_error(name + " has no case '" + label + "'");
     return s.reference(*it);
+}
+
+// The case whose label begins with PREFIX (the tables that need a scene add
+// their inputs to the label).
+const FunctionCase& caseStartingWith(const std::string& name, const std::string& prefix) {
+    const FunctionSpec& s = spec(name);
+    auto it = std::find_if(s.cases.begin(), s.cases.end(), [&](const FunctionCase& c) {
+        return c.label.compare(0, prefix.size(), prefix) == 0;
+    });
+    if (it == s.cases.end()) throw std::runtime_error(name + " has no case '" + prefix + "...'");
+    return *it;
+}
+
+glm::dvec4 referenceStartingWith(const std::string& name, const std::string& prefix) {
+    return spec(name).reference(caseStartingWith(name, prefix));
+}
+
+void expectNear(const glm::dvec4& got, const glm::dvec3& want) {
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], want[i], 1e-9) << "component " << i;
 }
 
 }  // namespace
@@ -64,6 +85,45 @@ TEST(FunctionCases, FresnelAndUvReferenceByHand) {
     EXPECT_NEAR(std::abs(tile.x) + std::abs(tile.y), 1.0, 1e-12);  // 2 units at tile size 2
 }
 
+TEST(FunctionCases, ShadingReferencesByHand) {
+    // Ambient (0.1, 0.05, 0.02) plus light (1, 0.8, 0.6) times diffuse
+    // (0.5, 0.6, 0.7) and specular (0.9, 0.8, 0.7), both at full strength.
+    expectNear(referenceStartingWith("blinnPhong", "light and eye straight above"),
+               {1.5, 1.17, 0.86});
+    // A light behind the surface adds nothing, not even a highlight.
+    expectNear(referenceStartingWith("blinnPhong", "light behind the surface, the half vector"),
+               {0.1, 0.05, 0.02});
+    EXPECT_EQ(referenceStartingWith("lightVisible", "light above the point").x, 1.0);
+    EXPECT_EQ(referenceStartingWith("lightVisible", "a sphere between").x, 0.0);
+    EXPECT_EQ(referenceStartingWith("lightVisible", "a sphere beyond the light").x, 1.0);
+    EXPECT_EQ(referenceStartingWith("lightVisible", "light on the far side").x, 0.0);
+    EXPECT_EQ(referenceStartingWith("lightVisible", "eye inside a sphere").x, 1.0);
+    expectNear(referenceStartingWith("applyNormalMap", "flat texel"), {0, 0, 1});
+    // N = y, tangent (0.8, 0.6, 0) -> T = x, B = N x T = -z; texel (0.8, 0.3,
+    // 0.9) decodes to (0.6, -0.4, 0.8): (0.6, 0.8, 0.4) / |(0.6, 0.8, 0.4)|.
+    expectNear(referenceStartingWith("applyNormalMap", "tangent not perpendicular"),
+               glm::dvec3(0.6, 0.8, 0.4) / std::sqrt(1.16));
+    expectNear(referenceStartingWith("applyColorMode", "mode 1 (BRB), colour (0.1, 0.5, 0.9)"),
+               {0.9, 0.1, 0.9});
+    expectNear(referenceStartingWith("applyColorMode", "mode 4 (GGR), colour (0.1, 0.5, 0.9)"),
+               {0.5, 0.5, 0.1});
+}
+
+// The switches the checked code reads (keys N and 1, the colour mode) are
+// set for each case.
+TEST(FunctionCases, KeyUniformsAreSetPerCase) {
+    const std::pair<const char*, const char*> switches[] = {{"applyColorMode", "uColorMode"},
+                                                            {"applyNormalMap", "uNormalMaps"},
+                                                            {"lightVisible", "uShadows"}};
+    for (const auto& [function, uniform] : switches)
+        for (const FunctionCase& c : spec(function).cases) {
+            ASSERT_EQ(c.uniforms.size(), 1u) << c.label;
+            EXPECT_EQ(c.uniforms.front().first, uniform) << c.label;
+            if (std::string(uniform) != "uColorMode") { EXPECT_EQ(c.uniforms.front().second, 1); }
+        }
+    EXPECT_EQ(caseStartingWith("applyColorMode", "mode 3").uniforms.front().second, 3);
+}
+
 TEST(FunctionCases, TablesHoldTheHardCases) {
     auto has = [](const std::string& name, const std::string& label) {
         const auto& cases = spec(name).cases;
@@ -75,6 +135,15 @@ TEST(FunctionCases, TablesHoldTheHardCases) {
     EXPECT_TRUE(has("intersectPlane", "parallel, in the plane"));
     EXPECT_TRUE(has("intersectTriangle", "on the edge a-b"));
     EXPECT_TRUE(has("sphereUV", "across the seam"));
+    // A pole with |d.y| a float step above 1: asin() needs the clamp.
+    const FunctionCase& pole = caseStartingWith("sphereUV", "north pole, d.y a float step");
+    EXPECT_GT(pole.in[0].y, 1.0);
+    EXPECT_EQ(float(pole.in[0].y), std::nextafter(1.0f, 2.0f));  // what the harness reads
+    EXPECT_LT(caseStartingWith("sphereUV", "south pole, d.y a float step").in[0].y, -1.0);
+    // The tangent of a normal-map case need be neither unit nor perpendicular.
+    const FunctionCase& skew = caseStartingWith("applyNormalMap", "tangent neither unit");
+    EXPECT_GT(std::abs(glm::length(glm::dvec3(skew.in[1])) - 1.0), 0.1);
+    EXPECT_GT(std::abs(glm::dot(glm::dvec3(skew.in[0]), glm::dvec3(skew.in[1]))), 0.1);
     for (const FunctionSpec& s : functionSpecs()) EXPECT_GE(s.cases.size(), 6u) << s.name;
 }
 
@@ -87,4 +156,41 @@ TEST(FunctionCases, ComparisonRejectsAWrongAnswerAndNaN) {
     EXPECT_NE(s.compare(head, glm::dvec4(-1, 0, 0, 1), want).find("got no hit"), std::string::npos);
     EXPECT_NE(s.compare(head, glm::dvec4(std::nan(""), 0, 0, 1), want).find("NaN"),
               std::string::npos);
+}
+
+// u is compared modulo 1 (the picture repeats: u and u + 1 are the same
+// place), and a failure shows the value as the function returned it.
+TEST(FunctionCases, UvComparisonIsModuloOneAndShowsTheValueReturned) {
+    const FunctionSpec& s = spec("sphereUV");
+    const FunctionCase& c = s.cases.front();
+    EXPECT_EQ(s.compare(c, glm::dvec4(1.25, 0.5, 0, 1), glm::dvec4(0.25, 0.5, 0, 1)), "");
+    EXPECT_EQ(s.compare(c, glm::dvec4(0.0, 0.5, 0, 1), glm::dvec4(1.0, 0.5, 0, 1)), "");
+    const std::string why = s.compare(c, glm::dvec4(0.25, 0.5, 0, 1), glm::dvec4(0.9, 0.5, 0, 1));
+    EXPECT_NE(why.find("got (0.25, 0.5)"), std::string::npos) << why;
+    EXPECT_NE(why.find("expected (0.9, 0.5)"), std::string::npos) << why;
+    EXPECT_NE(why.find("modulo 1"), std::string::npos) << why;
+    // A wrong v: no word about u.
+    const std::string v = s.compare(c, glm::dvec4(0.5, 0.2, 0, 1), glm::dvec4(0.5, 0.5, 0, 1));
+    EXPECT_NE(v.find("got (0.5, 0.2)"), std::string::npos) << v;
+    EXPECT_EQ(v.find("modulo"), std::string::npos) << v;
+    // At a pole any u is right; NaN is named.
+    const FunctionCase& pole = caseStartingWith("sphereUV", "north pole, d.y a float step");
+    EXPECT_EQ(s.compare(pole, glm::dvec4(0.123, 1.0, 0, 1), s.reference(pole)), "");
+    EXPECT_NE(s.compare(pole, glm::dvec4(0.5, std::nan(""), 0, 1), s.reference(pole)).find("NaN"),
+              std::string::npos);
+}
+
+TEST(FunctionCases, ShadingComparisonsNameTheInputAndBothAnswers) {
+    const FunctionSpec& light = spec("lightVisible");
+    const FunctionCase& between = caseStartingWith("lightVisible", "a sphere between");
+    const std::string why =
+        light.compare(between, glm::dvec4(1, 0, 0, 1), light.reference(between));
+    EXPECT_NE(why.find("expected the light blocked, got visible"), std::string::npos) << why;
+    EXPECT_NE(why.find("[point (0, 1, 0)"), std::string::npos) << why;
+    const FunctionSpec& blinn = spec("blinnPhong");
+    const FunctionCase& behind = caseStartingWith("blinnPhong", "light behind the surface, the");
+    const std::string b =
+        blinn.compare(behind, glm::dvec4(0.7, 0.5, 0.3, 1), blinn.reference(behind));
+    EXPECT_NE(b.find("expected (0.1, 0.05, 0.02), got (0.7, 0.5, 0.3)"), std::string::npos) << b;
+    EXPECT_NE(b.find("shininess 4"), std::string::npos) << b;
 }

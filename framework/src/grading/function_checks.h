@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -22,12 +23,20 @@ struct FunctionCase {
     std::array<glm::dvec4, 4> in{};
     bool hitOrMiss =
         false;  // on the boundary: either answer is right (if a hit, its t must be right)
+    // Integer uniforms the checked code reads (uColorMode, uShadows), set
+    // for this case alone; a case with any is drawn on its own.
+    std::vector<std::pair<std::string, int>> uniforms;
 };
 
 struct FunctionSpec {
     std::string name;                   // the GLSL function, e.g. "intersectSphere"
     std::vector<std::string> includes;  // harness includes after lab_todo.glsl
     std::string call;                   // GLSL expression: a vec4 from a0..a3
+    // GLSL before the includes: stand-ins for what the scene would provide
+    // (plain globals in place of the light and sphere uniforms, a texture
+    // lookup), set by HELPERS from the case's inputs.
+    std::string prelude;
+    std::string helpers;  // GLSL after the includes, for CALL to use
     std::vector<FunctionCase> cases;
     std::function<glm::dvec4(const FunctionCase&)> reference;
     // Empty when GOT agrees with WANT, else one line saying how it does not.

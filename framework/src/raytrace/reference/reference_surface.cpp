@@ -73,14 +73,10 @@ glm::dvec3 ReferenceTracer::Impl::textureLayer(int layer, const glm::dvec2& uv) 
 // 07 normal_map.glsl
 void ReferenceTracer::Impl::applyNormalMap(Surface& s, std::ostream* log) const {
     if (!features.normalMaps || !settings.normalMaps || s.material.normalMap < 0) return;
-    const glm::dvec3 N = s.normal;
-    const glm::dvec3 along = s.tangent - glm::dot(s.tangent, N) * N;
-    if (glm::length(along) == 0.0)
+    if (glm::length(s.tangent - glm::dot(s.tangent, s.normal) * s.normal) == 0.0)
         return;  // no tangent (the GLSL would give NaN; scene files refuse this)
-    const glm::dvec3 T = glm::normalize(along);
-    const glm::dvec3 B = glm::cross(N, T);
     const glm::dvec3 m = textureLayer(s.material.normalMap, s.uv) * 2.0 - 1.0;
-    s.normal = glm::normalize(T * m.x + B * m.y + N * m.z);
+    s.normal = reference::applyNormalMap(s.normal, s.tangent, m);
     if (log)
         *log << "  normal map (layer " << s.material.normalMap << "): tangent-space " << fmt(m)
              << ", normal tilted to " << fmt(s.normal) << "\n";
@@ -161,13 +157,10 @@ glm::dvec3 ReferenceTracer::Impl::blinnPhong(const glm::dvec3& point, const glm:
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!lightVisible(point, normal, int(i), log)) continue;
         const glm::dvec3 toLight = glm::normalize(lights[i].position - point);
-        const double lambert = std::max(glm::dot(normal, toLight), 0.0);
-        glm::dvec3 diffuse = lights[i].color * m.diffuse * lambert, specular(0.0);
-        if (lambert > 0.0) {
-            const glm::dvec3 halfway = glm::normalize(toLight + toEye);
-            specular = lights[i].color * m.specular *
-                       std::pow(std::max(glm::dot(normal, halfway), 0.0), m.shininess);
-        }
+        const reference::LightTerms terms = reference::blinnPhongLight(
+            normal, toEye, toLight, lights[i].color, m.diffuse, m.specular, m.shininess);
+        const double lambert = terms.lambert;
+        const glm::dvec3 diffuse = terms.diffuse, specular = terms.specular;
         color += diffuse + specular;
         if (log)
             *log << "  light " << i << ": visible, N.L " << fmt(lambert) << ", diffuse "
@@ -184,10 +177,7 @@ glm::dvec3 ReferenceTracer::Impl::skyColor(const glm::dvec3& dir) const {
 
 // GLSL refract(): vec3(0) under total internal reflection.
 glm::dvec3 ReferenceTracer::Impl::refract(const glm::dvec3& I, const glm::dvec3& N, double eta) {
-    const double cosI = glm::dot(N, I);
-    const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-    if (k < 0.0) return glm::dvec3(0.0);
-    return eta * I - (eta * cosI + std::sqrt(k)) * N;
+    return reference::refract(I, N, eta);
 }
 
 glm::dvec3 ReferenceTracer::Impl::reflect(const glm::dvec3& I, const glm::dvec3& N) {
@@ -228,12 +218,6 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
 
 // 08 color_mode.glsl
 glm::dvec3 ReferenceTracer::Impl::applyColorMode(const glm::dvec3& c, int mode) {
-    switch (mode) {
-    case 1: return {c.b, c.r, c.b};
-    case 2: return {c.b, c.r, c.r};
-    case 3: return {c.r, c.b, c.b};
-    case 4: return {c.g, c.g, c.r};
-    default: return c;
-    }
+    return reference::applyColorMode(c, mode);
 }
 }  // namespace raylab

@@ -149,13 +149,13 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                     if (log)
                         what = "  metal: F=" + fmt(reflectance) + " (cos " + fmt(cosIncident) + ")";
                 } else {
-                    const double eta = entering ? 1.0 / m.ior : m.ior;
-                    const glm::dvec3 refracted = refract(current.ray.dir, normal, eta);
-                    double F = 1.0;  // total internal reflection
+                    const glm::dvec4 glass =
+                        reference::refractGlass(current.ray.dir, normal, entering, m.ior);
+                    const glm::dvec3 refracted(glass);
+                    const double F = glass.w;  // 1 under total internal reflection
                     if (refracted != glm::dvec3(0.0)) {
-                        const double cosTransmitted = -glm::dot(refracted, normal);
-                        const double cosOutside = entering ? cosIncident : cosTransmitted;
-                        F = fresnelDielectric(cosOutside, m.ior);
+                        const double cosOutside =
+                            entering ? cosIncident : -glm::dot(refracted, normal);
                         if (log) what = "  glass: F=" + fmt(F) + " (cos " + fmt(cosOutside) + ")";
                         if (stackSize < kMaxDepth) {
                             stack[stackSize] = PendingRay{

@@ -1,0 +1,346 @@
+// The function-check tables of the functions that need a scene: lights,
+// spheres, a material, a normal-map texel or a key's uniform. The harness
+// stands in for the scene with plain globals (the prelude) that a helper
+// fills from the case's inputs, so each case is a scene of its own.
+#include "shading_function_cases.h"
+
+#include "function_compare.h"
+
+#include "reference_shading.h"
+
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+using glm::dvec3;
+using glm::dvec4;
+
+dvec3 xyz(const dvec4& v) { return dvec3(v); }
+
+std::string text(const dvec3& v) {
+    return "(" + caseNumber(v.x) + ", " + caseNumber(v.y) + ", " + caseNumber(v.z) + ")";
+}
+
+FunctionCase makeCase(std::string label, dvec4 a0, dvec4 a1 = dvec4(0.0), dvec4 a2 = dvec4(0.0),
+                      dvec4 a3 = dvec4(0.0)) {
+    FunctionCase c;
+    c.label = std::move(label);
+    c.in = {a0, a1, a2, a3};
+    return c;
+}
+
+// Within a relative TOLERANCE of the larger of 1 and WANT's largest component.
+std::string compareColor(const FunctionCase& c, const dvec4& got, const dvec4& want,
+                         double tolerance) {
+    const double scale = std::max({1.0, std::fabs(want.x), std::fabs(want.y), std::fabs(want.z)});
+    return compareVector(c, got, want, 3, tolerance * scale);
+}
+
+// ---- 02 blinn_phong.glsl ---------------------------------------------------
+
+// The scene's lights (scene_lights.glsl) as globals the helper sets.
+const char* kLightsPrelude = "// Stand-ins for the scene's lights, set by the case.\n"
+                             "int uLightCount;\n"
+                             "vec3 uLightPositions[MAX_LIGHTS];\n"
+                             "vec3 uLightColors[MAX_LIGHTS];\n";
+
+// The material and light colours of every blinnPhong case: each channel
+// different, so a colour forgotten or taken from the wrong term shows.
+const dvec3 kAmbient(0.1, 0.05, 0.02), kDiffuse(0.5, 0.6, 0.7), kSpecular(0.9, 0.8, 0.7);
+const dvec3 kLightColor[2] = {{1.0, 0.8, 0.6}, {0.3, 0.5, 0.9}};
+
+// a0: the unit normal, a0.w the shininess; a1: the unit direction to the eye;
+// a2: light 0's position; a3: light 1's, a3.w = 0 for one light only. The
+// point is the origin.
+FunctionCase blinnCase(std::string label, dvec3 normal, dvec3 toEye, double shininess, dvec3 light0,
+                       dvec3 light1 = dvec3(0.0), bool twoLights = false) {
+    label += " [N " + text(glm::normalize(normal)) + ", to the eye " + text(glm::normalize(toEye)) +
+             ", shininess " + caseNumber(shininess) + ", light at " + text(light0) +
+             (twoLights ? " and " + text(light1) : "") + "]";
+    return makeCase(std::move(label), dvec4(glm::normalize(normal), shininess),
+                    dvec4(glm::normalize(toEye), 0.0), dvec4(light0, 0.0),
+                    dvec4(light1, twoLights ? 1.0 : 0.0));
+}
+
+FunctionSpec blinnPhongSpec() {
+    FunctionSpec s;
+    s.name = "blinnPhong";
+    s.prelude = kLightsPrelude;
+    s.includes = {"ray.glsl", "scene_materials.glsl", "blinn_phong.glsl"};
+    s.helpers = "vec4 checkBlinnPhong(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    uLightCount = a3.w > 0.0 ? 2 : 1;\n"
+                "    uLightPositions[0] = a2.xyz;\n"
+                "    uLightColors[0] = vec3(1.0, 0.8, 0.6);\n"
+                "    uLightPositions[1] = a3.xyz;\n"
+                "    uLightColors[1] = vec3(0.3, 0.5, 0.9);\n"
+                "    Material m;\n"
+                "    m.ambient = vec3(0.1, 0.05, 0.02);\n"
+                "    m.diffuse = vec3(0.5, 0.6, 0.7);\n"
+                "    m.specular = vec3(0.9, 0.8, 0.7);\n"
+                "    m.shininess = a0.w;\n"
+                "    m.type = 0;\n"
+                "    m.ior = 1.0;\n"
+                "    m.n = vec3(0.0);\n"
+                "    m.k = vec3(0.0);\n"
+                "    m.texture = -1;\n"
+                "    m.normalMap = -1;\n"
+                "    return vec4(blinnPhong(vec3(0.0), a0.xyz, a1.xyz, m), 1.0);\n"
+                "}\n";
+    s.call = "checkBlinnPhong(a0, a1, a2, a3)";
+    const dvec3 up(0, 1, 0);
+    s.cases = {
+        blinnCase("light and eye straight above", up, up, 20, {0, 5, 0}),
+        blinnCase("light at 60 degrees, eye above", up, up, 20,
+                  5.0 * glm::normalize(dvec3(std::sqrt(3.0), 1, 0))),
+        blinnCase("eye in the mirror direction (N . H = 1)", up, {3, 4, 0}, 30, {-3, 4, 0}),
+        blinnCase("eye off the mirror direction", up, {1, 4, 2}, 30, {-3, 4, 0}),
+        blinnCase("tilted normal, shininess 80", {0.3, 0.8, -0.5}, {0.1, 1, 0.3}, 80, {1.5, 4, -2}),
+        blinnCase("two lights of different colours", up, {0.2, 1, 0.4}, 16, {-3, 4, 1}, {2, 3, -2},
+                  true),
+        blinnCase("light behind the surface (N . L < 0): ambient only", up, up, 20, {1, -4, 0}),
+        blinnCase("light behind the surface, the half vector still toward the normal: "
+                  "no specular without N . L > 0",
+                  up, {-1, 0.6, 0}, 4, 5.0 * glm::normalize(dvec3(1, -0.2, 0))),
+        blinnCase("one light in front, one behind the surface", up, {-1, 0.6, 0}, 4, {-2, 4, 1},
+                  5.0 * glm::normalize(dvec3(1, -0.2, 0)), true),
+    };
+    s.reference = [](const FunctionCase& c) {
+        const dvec3 normal = xyz(c.in[0]), toEye = xyz(c.in[1]);
+        dvec3 color = kAmbient;
+        const int lights = c.in[3].w > 0.0 ? 2 : 1;
+        for (int i = 0; i < lights; ++i) {
+            const dvec3 toLight = glm::normalize(xyz(c.in[std::size_t(2 + i)]));
+            const reference::LightTerms t = reference::blinnPhongLight(
+                normal, toEye, toLight, kLightColor[i], kDiffuse, kSpecular, c.in[0].w);
+            color += t.diffuse + t.specular;
+        }
+        return dvec4(color, 1.0);
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareColor(c, got, want, 2e-4);
+    };
+    return s;
+}
+
+// ---- 03 light_visibility.glsl ----------------------------------------------
+
+// a0: the point, a0.w the radius of a blocking sphere (0: none); a1: the
+// unit normal facing the eye, a1.w where the blocker's centre lies on the
+// way from the point (0) to the light (1); a2: the light's position; a3 the
+// sphere the point lies on (centre, radius).
+FunctionCase visibilityCase(std::string label, dvec3 center, double radius, dvec3 outward,
+                            bool eyeInside, dvec3 light, double blockerRadius = 0.0,
+                            double blockerAt = 0.0) {
+    const dvec3 out = glm::normalize(outward);
+    label += " [point " + text(center + radius * out) + ", normal " + text(eyeInside ? -out : out) +
+             ", light at " + text(light) + "]";
+    return makeCase(std::move(label), dvec4(center + radius * out, blockerRadius),
+                    dvec4(eyeInside ? -out : out, blockerAt), dvec4(light, 0.0),
+                    dvec4(center, radius));
+}
+
+// Does the open segment from P (on the sphere CENTER, RADIUS) to the light
+// at distance DIST along the unit direction D cross a sphere?
+bool crosses(const dvec3& p, const dvec3& d, double dist, const dvec3& center, double radius,
+             bool pointOnIt) {
+    const dvec3 oc = p - center;
+    const double b = glm::dot(oc, d);
+    if (pointOnIt) {  // roots 0 and -2b: the other one is where the segment leaves or enters
+        const double other = -2.0 * b;
+        return other > 0.0 && other < dist;
+    }
+    const double h = b * b - (glm::dot(oc, oc) - radius * radius);
+    if (h < 0.0) return false;
+    const double t0 = -b - std::sqrt(h), t1 = -b + std::sqrt(h);
+    return (t0 > 0.0 && t0 < dist) || (t1 > 0.0 && t1 < dist);
+}
+
+FunctionSpec lightVisibilitySpec() {
+    FunctionSpec s;
+    s.name = "lightVisible";
+    s.prelude = std::string(kLightsPrelude) +
+                "// Stand-ins for the scene's spheres, set by the case.\n"
+                "int uSphereCount;\n"
+                "vec4 uSpheres[MAX_SPHERES];\n";
+    s.includes = {"ray.glsl", "intersect_sphere.glsl", "find_closest.glsl",
+                  "light_visibility.glsl"};
+    s.helpers = "vec4 checkLightVisible(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    uLightCount = 1;\n"
+                "    uLightPositions[0] = a2.xyz;\n"
+                "    uLightColors[0] = vec3(1.0);\n"
+                "    uSphereCount = 1;\n"
+                "    uSpheres[0] = a3;\n"
+                "    if (a0.w > 0.0) {\n"
+                "        uSpheres[1] = vec4(mix(a0.xyz, a2.xyz, a1.w), a0.w);\n"
+                "        uSphereCount = 2;\n"
+                "    }\n"
+                "    return vec4(lightVisible(a0.xyz, a1.xyz, 0) ? 1.0 : 0.0, 0.0, 0.0, 1.0);\n"
+                "}\n";
+    s.call = "checkLightVisible(a0, a1, a2, a3)";
+    const dvec3 o(0.0);
+    s.cases = {
+        visibilityCase("light above the point, nothing between", o, 1, {0, 1, 0}, false, {0, 5, 0}),
+        visibilityCase("a sphere between the point and the light", o, 1, {0, 1, 0}, false,
+                       {0, 5, 0}, 0.5, 0.5),
+        visibilityCase("a sphere beyond the light", o, 1, {0, 1, 0}, false, {0, 5, 0}, 0.5, 1.5),
+        visibilityCase("light on the far side of the point's own sphere", o, 1, {0, 1, 0}, false,
+                       {0.5, -5, 0}),
+        visibilityCase("grazing light, radius 100", o, 100, {0, 1, 0}, false, {400, 101, 0}),
+        // The eye inside the sphere: the normal faces inward, the light is
+        // outside - behind the surface seen from the eye.
+        visibilityCase("eye inside a sphere of radius 100, light outside: the shadow ray starts "
+                       "on the light's side, -normal",
+                       o, 100, {0, 1, 0}, true, {30, 140, 0}),
+        visibilityCase("eye outside a sphere of radius 100, light inside it: the shadow ray "
+                       "starts on the light's side, -normal",
+                       o, 100, {0, 1, 0}, false, {20, 30, 10}),
+    };
+    // Far from the origin float steps are large (1e-3 near 10^4, 8e-3 near
+    // 10^5): a point computed there lies measurably above or below its
+    // surface, and a shadow ray started on it, or a fixed 1e-3 off it, hits
+    // its own sphere.
+    struct Far {
+        dvec3 center;
+        double radius;
+        const char* name;
+    } far[] = {{{12000.0, -3000.0, 8000.0}, 5000.0, "radius 5000, 10^4 from the origin"},
+               {{120000.0, -30000.0, 80000.0}, 50000.0, "radius 50000, 10^5 from the origin"}};
+    for (const Far& f : far)
+        for (int i = 0; i < 8; ++i) {
+            const double a = 0.7 + 0.61 * i, z = -0.6 + 0.17 * i, r = std::sqrt(1.0 - z * z);
+            const dvec3 outward(r * std::cos(a), z, r * std::sin(a));
+            const dvec3 light = f.center + f.radius * outward +
+                                0.8 * f.radius * glm::normalize(outward + dvec3(0.3, 0.5, -0.2));
+            s.cases.push_back(visibilityCase(std::string("sphere of ") + f.name + ", point " +
+                                                 std::to_string(i + 1) + ", light in front",
+                                             f.center, f.radius, outward, false, light));
+        }
+    for (FunctionCase& c : s.cases) c.uniforms = {{"uShadows", 1}};
+    s.reference = [](const FunctionCase& c) {
+        const dvec3 p = xyz(c.in[0]), toLight = xyz(c.in[2]) - p;
+        const double dist = glm::length(toLight);
+        const dvec3 d = toLight / dist;
+        bool blocked = crosses(p, d, dist, xyz(c.in[3]), c.in[3].w, true);
+        if (c.in[0].w > 0.0)
+            blocked = blocked ||
+                      crosses(p, d, dist, glm::mix(p, xyz(c.in[2]), c.in[1].w), c.in[0].w, false);
+        return dvec4(blocked ? 0.0 : 1.0, 0.0, 0.0, 1.0);
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
+        auto text = [](double v) { return v > 0.5 ? "visible" : "blocked"; };
+        if (!allFinite(got)) return c.label + ": got NaN or Inf";
+        if ((got.x > 0.5) == (want.x > 0.5)) return "";
+        return c.label + ": expected the light " + text(want.x) + ", got " + text(got.x);
+    };
+    return s;
+}
+
+// ---- 07 normal_map.glsl ----------------------------------------------------
+
+// a0: the unit normal N; a1: the tangent (any length, not necessarily
+// perpendicular to N); a2: the normal-map texel (0..1, encoded).
+FunctionSpec applyNormalMapSpec() {
+    FunctionSpec s;
+    s.name = "applyNormalMap";
+    s.prelude = "// A stand-in for the scene's textures: every lookup returns the case's texel.\n"
+                "vec3 gCheckTexel;\n"
+                "vec4 textureLayer(int layer, vec2 uv)\n"
+                "{\n"
+                "    return vec4(gCheckTexel, 1.0);\n"
+                "}\n";
+    s.includes = {"ray.glsl", "scene_materials.glsl", "surface.glsl", "normal_map.glsl"};
+    s.helpers = "vec4 checkApplyNormalMap(vec4 a0, vec4 a1, vec4 a2)\n"
+                "{\n"
+                "    gCheckTexel = a2.xyz;\n"
+                "    Surface s;\n"
+                "    s.point = vec3(0.0);\n"
+                "    s.normal = a0.xyz;\n"
+                "    s.tangent = a1.xyz;\n"
+                "    s.uv = vec2(0.25, 0.75);\n"
+                "    s.material.texture = -1;\n"
+                "    s.material.normalMap = 0;\n"
+                "    applyNormalMap(s);\n"
+                "    return vec4(s.normal, 1.0);\n"
+                "}\n";
+    s.call = "checkApplyNormalMap(a0, a1, a2)";
+    struct Row {
+        const char* label;
+        dvec3 normal, tangent, texel;
+    } rows[] = {
+        {"flat texel (0.5, 0.5, 1): the normal unchanged", {0, 0, 1}, {1, 0, 0}, {0.5, 0.5, 1.0}},
+        {"texel leaning toward T (east)", {0, 0, 1}, {1, 0, 0}, {0.85, 0.5, 0.86}},
+        {"texel leaning toward B (north)", {0, 0, 1}, {1, 0, 0}, {0.5, 0.85, 0.86}},
+        {"tilted normal, perpendicular unit tangent",
+         {0.6, 0.0, 0.8},
+         {0.8, 0.0, -0.6},
+         {0.3, 0.7, 0.9}},
+        {"tangent of length 3 (normalise T)", {0, 1, 0}, {0, 0, -3}, {0.8, 0.3, 0.9}},
+        {"tangent not perpendicular to N (remove its part along N)",
+         {0, 1, 0},
+         {0.8, 0.6, 0},
+         {0.8, 0.3, 0.9}},
+        {"tangent neither unit nor perpendicular to N",
+         {0.3, 0.8, -0.5},
+         {2.0, 1.5, 0.4},
+         {0.25, 0.65, 0.85}},
+        {"texel that decodes to a vector shorter than 1 (normalise the result)",
+         {0, 0, 1},
+         {0.9, 0.3, 0.7},
+         {0.7, 0.4, 0.9}},
+    };
+    for (const Row& r : rows)
+        s.cases.push_back(makeCase(
+            std::string(r.label) + " [N " + text(glm::normalize(r.normal)) + ", tangent " +
+                text(r.tangent) + ", texel " + text(r.texel) + "]",
+            dvec4(glm::normalize(r.normal), 0.0), dvec4(r.tangent, 0.0), dvec4(r.texel, 0.0)));
+    for (FunctionCase& c : s.cases) c.uniforms = {{"uNormalMaps", 1}};
+    s.reference = [](const FunctionCase& c) {
+        return dvec4(
+            reference::applyNormalMap(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]) * 2.0 - 1.0), 1.0);
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
+        if (!allFinite(got)) return c.label + ": got NaN or Inf";
+        std::string why = compareVector(c, got, want, 3, 1e-4);
+        if (!why.empty() && std::fabs(glm::length(xyz(got)) - 1.0) > 1e-3)
+            why += " (not of unit length: " + caseNumber(glm::length(xyz(got))) + ")";
+        return why;
+    };
+    return s;
+}
+
+// ---- 08 color_mode.glsl ----------------------------------------------------
+
+FunctionSpec applyColorModeSpec() {
+    FunctionSpec s;
+    s.name = "applyColorMode";
+    s.includes = {"color_mode.glsl"};
+    s.call = "vec4(applyColorMode(a0.xyz), 1.0)";
+    const char* names[] = {"RGB", "BRB", "BRR", "RBB", "GGR"};
+    for (int mode = 0; mode < 5; ++mode)
+        for (const dvec3& color : {dvec3(0.1, 0.5, 0.9), dvec3(0.8, 0.3, 0.05)}) {
+            FunctionCase c = makeCase("mode " + std::to_string(mode) + " (" + names[mode] +
+                                          "), colour " + text(color),
+                                      dvec4(color, 0.0));
+            c.uniforms = {{"uColorMode", mode}};
+            s.cases.push_back(c);
+        }
+    s.reference = [](const FunctionCase& c) {
+        return dvec4(reference::applyColorMode(xyz(c.in[0]), c.uniforms.front().second), 1.0);
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareVector(c, got, want, 3, 1e-6);
+    };
+    return s;
+}
+
+}  // namespace
+
+std::vector<FunctionSpec> shadingFunctionSpecs() {
+    return {blinnPhongSpec(), lightVisibilitySpec(), applyNormalMapSpec(), applyColorModeSpec()};
+}
+
+}  // namespace raylab

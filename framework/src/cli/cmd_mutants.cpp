@@ -55,7 +55,7 @@ struct StagePlan {
 
 struct Verdict {
     bool caught = false;
-    std::string by;  // "checks", "compiler", "limits"
+    std::string by;  // "checks", "compiler", "limits", "error"
     std::string detail;
 };
 
@@ -110,10 +110,14 @@ Verdict verdictOf(const StageResult& r) {
     } else if (r.status == "compile error") {
         v.caught = true;
         v.by = "compiler";
-    } else {  // timed out, crashed, out of memory, error
+    } else if (r.status == "timed out" || r.status == "crashed" || r.status == "out of memory") {
         v.caught = true;
         v.by = "limits";
         v.detail = r.status;
+    } else {  // "error": shown apart, as it may be the grader's fault rather than the mutant's
+        v.caught = true;
+        v.by = "error";
+        v.detail = r.message.substr(0, r.message.find('\n'));
     }
     return v;
 }
@@ -130,7 +134,7 @@ std::string changeText(const Mutant& m) {
 }
 
 struct StageOutcome {
-    std::size_t caught = 0, byChecks = 0, byCompiler = 0, byLimits = 0;
+    std::size_t caught = 0, byChecks = 0, byCompiler = 0, byLimits = 0, byError = 0;
     std::vector<std::string> survivors;  // ids
 };
 
@@ -145,8 +149,8 @@ std::string report(const StagePlan& p, const std::vector<Verdict>& verdicts, con
        << ", each graded like a submission (grading seed " << o.seed << ").\n\n"
        << "**Caught " << s.caught << " of " << n << "**: " << s.byChecks << " by the checks, "
        << s.byCompiler << " by the compiler, " << s.byLimits
-       << " by the limits (timeout, crash, memory). " << s.survivors.size()
-       << " survived (score 100).\n\n"
+       << " by the limits (timeout, crash, memory), " << s.byError
+       << " by another error of grading. " << s.survivors.size() << " survived (score 100).\n\n"
        << "| # | where | change | result | by |\n| --- | --- | --- | --- | --- |\n";
     for (std::size_t i = 0; i < n; ++i) {
         const Mutant& m = p.mutants[i];
@@ -228,7 +232,10 @@ int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o) {
         Verdict v = verdictOf(byName.at(studentName(i)));
         if (v.caught) {
             ++s.caught;
-            ++(v.by == "checks" ? s.byChecks : v.by == "compiler" ? s.byCompiler : s.byLimits);
+            ++(v.by == "checks"     ? s.byChecks
+               : v.by == "compiler" ? s.byCompiler
+               : v.by == "limits"   ? s.byLimits
+                                    : s.byError);
         } else {
             s.survivors.push_back(mutantId(p.mutants[i]));
             survivorsText += s.survivors.back() + "\n";
@@ -238,10 +245,11 @@ int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o) {
     writeTextFileAtomic(out / "mutants.md", report(p, verdicts, s, o));
     writeTextFileAtomic(out / "survivors.txt", survivorsText);
     std::printf(
-        "%s: caught %zu of %zu (%zu by the checks, %zu by the compiler, %zu by the limits); "
+        "%s: caught %zu of %zu (%zu by the checks, %zu by the compiler, %zu by the limits%s); "
         "%zu survived: %s\n",
-        stage.id.c_str(), s.caught, n, s.byChecks, s.byCompiler, s.byLimits, s.survivors.size(),
-        (out / "mutants.md").c_str());
+        stage.id.c_str(), s.caught, n, s.byChecks, s.byCompiler, s.byLimits,
+        s.byError ? (", " + std::to_string(s.byError) + " by other errors").c_str() : "",
+        s.survivors.size(), (out / "mutants.md").c_str());
 
     if (p.knownFile.empty()) return 0;
     for (std::size_t i = 0; i < n; ++i)

@@ -36,7 +36,7 @@ struct MutantsOptions {
     std::string stage;  // an id, or "all"
     std::string outDir;
     std::string knownDir;  // tests/mutants: <stage>.txt files; empty: no check
-    std::size_t max = 0;   // 0: every mutant
+    long max = 0;          // 0: every mutant
     unsigned seed = 0;     // of the sample and of grading's seeded views
     int jobs = 2;
     double timeoutSeconds = 60.0;
@@ -84,7 +84,7 @@ StagePlan planStage(const StageInfo& stage, const MutantsOptions& o) {
         for (Mutant& m : generateMutants(name, p.marked[name])) all.push_back(std::move(m));
     }
     p.total = all.size();
-    p.mutants = sampleMutants(all, o.max, o.seed);
+    p.mutants = sampleMutants(all, std::size_t(o.max), o.seed);
     if (!o.knownDir.empty()) {
         const fs::path file = fs::path(o.knownDir) / (stage.id + ".txt");
         p.knownFile = file.string();
@@ -178,8 +178,10 @@ std::string report(const StagePlan& p, const std::vector<Verdict>& verdicts, con
     return md.str();
 }
 
-// Mutates, grades and reports one stage into OUT. Returns the exit code.
-int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o) {
+// Mutates, grades and reports one stage into OUT, and adds its counts to
+// TOTAL. Returns the exit code.
+int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o,
+             StageOutcome& total) {
     const StageInfo& stage = *p.stage;
     const std::size_t n = p.mutants.size();
     if (n == 0) {
@@ -242,6 +244,12 @@ int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o) {
         }
         verdicts.push_back(v);
     }
+    total.caught += s.caught;
+    total.byChecks += s.byChecks;
+    total.byCompiler += s.byCompiler;
+    total.byLimits += s.byLimits;
+    total.byError += s.byError;
+    total.survivors.insert(total.survivors.end(), s.survivors.begin(), s.survivors.end());
     writeTextFileAtomic(out / "mutants.md", report(p, verdicts, s, o));
     writeTextFileAtomic(out / "survivors.txt", survivorsText);
     std::printf(
@@ -273,6 +281,7 @@ int cmdMutants(const MutantsOptions& o) {
     // written: bad input leaves no partial output.
     if (o.stage.empty()) throw Error("--stage is required (a stage id, or all)");
     if (o.outDir.empty()) throw Error("--out is required");
+    if (o.max < 0) throw Error("--max must be 0 (every mutant) or more");
     if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be between 1 and 64");
     if (!(o.timeoutSeconds > 0.0) || o.timeoutSeconds > 3600.0)
         throw Error("--timeout must be between 0 and 3600 seconds");
@@ -291,12 +300,19 @@ int cmdMutants(const MutantsOptions& o) {
     for (const StageInfo* s : stages) plans.push_back(planStage(*s, o));
 
     int code = 0;
+    StageOutcome total;
     for (const StagePlan& p : plans) {
         const fs::path out =
             o.stage == "all" ? fs::path(o.outDir) / p.stage->id : fs::path(o.outDir);
-        const int c = runStage(p, out, o);
+        const int c = runStage(p, out, o, total);
         if (c == 130) return c;
         code = std::max(code, c);
+    }
+    if (plans.size() > 1) {
+        std::size_t graded = 0;
+        for (const StagePlan& p : plans) graded += p.mutants.size();
+        std::printf("all stages: caught %zu of %zu; %zu survived\n", total.caught, graded,
+                    total.survivors.size());
     }
     return code;
 }

@@ -10,11 +10,9 @@
 // of earlier stages in solved form. Hand-written files (README.md, images) are
 // left alone.
 #include "error.h"
-#include "lab_markers.h"
+#include "lab_files.h"
 #include "paths.h"
-#include "shader_source.h"
 #include "stage_catalog.h"
-#include "stage_sources.h"
 
 #include <CLI/CLI.hpp>
 
@@ -31,31 +29,6 @@ namespace {
 bool isShaderFile(const fs::path& p) {
     const std::string e = p.extension().string();
     return e == ".glsl" || e == ".frag" || e == ".vert" || e == ".geom";
-}
-
-// File name -> generated text for one stage.
-std::map<std::string, std::string> generateStage(const StageInfo& stage,
-                                                 MarkedForm formOfOwnFiles) {
-    StageSources sources = solutionSources(stage);
-    const fs::path own = projectRoot() / "solution" / stage.id;
-    const fs::path framework = projectRoot() / "framework";
-    std::map<std::string, std::string> files;
-    std::vector<std::string> entries;
-    for (const auto& [key, program] : stage.allPrograms())
-        entries.insert(entries.end(), {program->vertex, program->geometry, program->fragment});
-    for (const std::string& entry : entries) {
-        if (entry.empty()) continue;
-        ShaderSource src = assembleShader(entry, sources.search, stage.defines());
-        for (const fs::path& f : src.files) {
-            fs::path canonical = fs::weakly_canonical(f);
-            if (canonical.lexically_relative(framework).begin()->string() != "..") continue;
-            bool isOwn = canonical.parent_path() == fs::weakly_canonical(own);
-            MarkedForm form = isOwn ? formOfOwnFiles : MarkedForm::Solved;
-            files[f.filename().string()] =
-                transformMarkedSource(readTextFile(f), form, displayPath(f));
-        }
-    }
-    return files;
 }
 
 void writeFile(const fs::path& file, const std::string& text) {
@@ -94,7 +67,7 @@ int main(int argc, char** argv) {
         const fs::path root = solved ? fs::path(solvedDir) : fs::path(labsDir);
         int drift = 0;
         for (const StageInfo& stage : allStages()) {
-            auto files = generateStage(stage, solved ? MarkedForm::Solved : MarkedForm::Lab);
+            auto files = labFiles(stage, solved ? MarkedForm::Solved : MarkedForm::Lab);
             const fs::path dir = root / stage.id;
             std::set<std::string> stale;
             std::error_code ec;

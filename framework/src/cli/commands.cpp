@@ -25,14 +25,15 @@ Command handoutCommand();
 Command prairieLearnCommand();
 Command gradescopeCommand();
 Command autograderCommand();
+Command mutantsCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(),    runCommand(),     renderCommand(),       raysCommand(),
-        traceCommand(),     gradeCommand(),   gradeItemCommand(),    gradeReferenceCommand(),
-        demoCommand(),      benchCommand(),   checkCommand(),        shaderCommand(),
-        compareCommand(),   handoutCommand(), prairieLearnCommand(), gradescopeCommand(),
-        autograderCommand()};
+        stagesCommand(),     runCommand(),     renderCommand(),       raysCommand(),
+        traceCommand(),      gradeCommand(),   gradeItemCommand(),    gradeReferenceCommand(),
+        demoCommand(),       benchCommand(),   checkCommand(),        shaderCommand(),
+        compareCommand(),    handoutCommand(), prairieLearnCommand(), gradescopeCommand(),
+        autograderCommand(), mutantsCommand()};
     return table;
 }
 

@@ -74,4 +74,17 @@ std::string transformMarkedSource(const std::string& text, MarkedForm form,
     return result;
 }
 
+std::vector<int> solutionLineNumbers(const std::string& text) {
+    std::vector<int> lines;
+    bool inSolution = false;
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const std::string t = leftTrimmed(line);
+        if (startsWith(t, "//@")) inSolution = startsWith(t, "//@solution");
+        else if (inSolution) lines.push_back(n);
+    }
+    return lines;
+}
+
 }  // namespace raylab

@@ -17,6 +17,7 @@
 // solution; the solved form (what later stages' labs include) keeps only the
 // solution code.
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -25,5 +26,10 @@ enum class MarkedForm { Lab, Solved };
 // Throws Error("FILE:LINE: ...") on a malformed region.
 std::string transformMarkedSource(const std::string& text, MarkedForm form,
                                   const std::string& fileForMessages);
+
+// The 1-based numbers of TEXT's solution lines (those between "//@solution"
+// and "//@stub"): the code students write, which `raylab mutants` mutates.
+// Does not validate the markers (transformMarkedSource does).
+std::vector<int> solutionLineNumbers(const std::string& text);
 
 }  // namespace raylab

@@ -337,10 +337,90 @@ FunctionSpec applyColorModeSpec() {
     return s;
 }
 
+// ---- 01 find_closest.glsl -------------------------------------------------
+
+// a0: the ray's origin, a0.w the sphere count (1 or 2); a1: its unit
+// direction; a2, a3: spheres 0 and 1 (centre, radius). The slot just past
+// the count always holds a live sphere on the ray, nearer than any counted
+// one: a loop that runs one step too far (i <= uSphereCount) finds it.
+FunctionCase closestCase(std::string label, dvec3 origin, dvec3 dir, int count, dvec4 sphere0,
+                         dvec4 sphere1 = dvec4(0.0)) {
+    return makeCase(std::move(label), dvec4(origin, count), dvec4(glm::normalize(dir), 0.0),
+                    sphere0, sphere1);
+}
+
+// The nearest root above T_MIN of a ray and a sphere, or -1.
+double sphereRoot(const dvec3& o, const dvec3& d, const dvec4& sphere) {
+    const dvec3 oc = o - xyz(sphere);
+    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - sphere.w * sphere.w;
+    const double h = b * b - c;
+    if (h < 0.0) return -1.0;
+    for (double t : {-b - std::sqrt(h), -b + std::sqrt(h)})
+        if (t > 1e-4) return t;
+    return -1.0;
+}
+
+FunctionSpec findClosestSpec() {
+    FunctionSpec s;
+    s.name = "findClosest";
+    s.prelude = "// Stand-ins for the scene's spheres, set by the case.\n"
+                "int uSphereCount;\n"
+                "vec4 uSpheres[MAX_SPHERES];\n";
+    s.includes = {"ray.glsl", "intersect_sphere.glsl", "find_closest.glsl"};
+    s.helpers = "vec4 checkFindClosest(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    uSphereCount = int(a0.w);\n"
+                "    uSpheres[0] = a2;\n"
+                "    uSpheres[1] = a3;\n"
+                "    uSpheres[uSphereCount] = vec4(a0.xyz + 0.5 * a1.xyz, 0.2);  // not counted\n"
+                "    Hit hit;\n"
+                "    bool found = findClosest(Ray(a0.xyz, a1.xyz), hit);\n"
+                "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"
+                "}\n";
+    s.call = "checkFindClosest(a0, a1, a2, a3)";
+    const dvec3 back(0, 0, -1);
+    s.cases = {
+        closestCase("one sphere ahead (a sphere past the count sits nearer on the ray)", {0, 0, 5},
+                    back, 1, {0, 0, 0, 1}),
+        closestCase("two spheres, the second nearer", {0, 0, 5}, back, 2, {0, 0, -5, 1},
+                    {0, 0, 0, 1}),
+        closestCase("two spheres, the first nearer", {0, 0, 5}, back, 2, {0, 0, 0, 1},
+                    {0, 0, -5, 1}),
+        closestCase("two overlapping spheres: the nearer entry wins", {0, 0, 5}, back, 2,
+                    {0, 0, 0, 1}, {0, 0, 0.5, 1}),
+        closestCase("no counted sphere on the ray", {0, 0, 5}, back, 2, {5, 0, 0, 1},
+                    {-5, 0, 0, 1}),
+        closestCase("from inside sphere 0: its exit", {0, 0, 0}, {1, 0, 0}, 1, {0, 0, 0, 2}),
+    };
+    s.reference = [](const FunctionCase& c) {
+        const dvec3 o = xyz(c.in[0]), d = xyz(c.in[1]);
+        dvec4 best(0.0, 0.0, -1.0, 1.0);
+        for (int i = 0; i < int(c.in[0].w); ++i) {
+            const double t = sphereRoot(o, d, c.in[std::size_t(2 + i)]);
+            if (t > 0.0 && (best.x == 0.0 || t < best.y)) best = dvec4(1.0, t, i, 1.0);
+        }
+        return best;
+    };
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
+        auto text = [](const dvec4& v) {
+            return v.x > 0.5 ? "sphere " + std::to_string(int(std::lround(v.z))) +
+                                   " at t = " + caseNumber(v.y)
+                             : std::string("no hit");
+        };
+        if (!allFinite(got)) return c.label + ": got NaN or Inf";
+        const bool same = (got.x > 0.5) == (want.x > 0.5) &&
+                          (want.x < 0.5 || (std::lround(got.z) == std::lround(want.z) &&
+                                            std::fabs(got.y - want.y) <= 1e-4 * want.y));
+        return same ? "" : c.label + ": expected " + text(want) + ", got " + text(got);
+    };
+    return s;
+}
+
 }  // namespace
 
 std::vector<FunctionSpec> shadingFunctionSpecs() {
-    return {blinnPhongSpec(), lightVisibilitySpec(), applyNormalMapSpec(), applyColorModeSpec()};
+    return {findClosestSpec(), blinnPhongSpec(), lightVisibilitySpec(), applyNormalMapSpec(),
+            applyColorModeSpec()};
 }
 
 }  // namespace raylab

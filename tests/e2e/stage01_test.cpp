@@ -12,8 +12,9 @@ using namespace raylab::test;
 TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodosWithFileAndLine) {
     CommandResult r = runRaylab("check --stage 01 --lab");
     EXPECT_EQ(r.exitCode, 1) << r.all();
-    EXPECT_EQ(failedViews(r.out).size(), 8u) << "six views, the intersectSphere and findClosest checks\n"
-                                             << r.all();
+    EXPECT_EQ(failedViews(r.out).size(), 8u)
+        << "six views, the intersectSphere and findClosest checks\n"
+        << r.all();
     EXPECT_NE(r.err.find("labs/01-raycast/intersect_sphere.glsl:18: TODO(01.a)"), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos)

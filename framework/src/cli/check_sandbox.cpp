@@ -1,15 +1,19 @@
 #include "check_sandbox.h"
 
+#include "atomic_file.h"
 #include "child_process.h"
 #include "error.h"
 #include "gl_context.h"
+#include "lab_files.h"
 #include "paths.h"
 #include "stage_sources.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace raylab {
@@ -33,8 +37,11 @@ fs::path thisProgram() { return fs::read_symlink("/proc/self/exe"); }
 // error or a failed view is fine: the compiler survived it).
 bool survives(const StageInfo& stage, const fs::path& labRoot, const CheckLimits& limits,
               const fs::path& log) {
+    const char* backend = limits.backend == Backend::Egl      ? "egl"
+                          : limits.backend == Backend::OsMesa ? "osmesa"
+                                                              : "auto";
     Child probe({thisProgram().string(), "check", "--stage", stage.id, "--lab", labRoot.string(),
-                 "--size", "16x12"},
+                 "--size", "16x12", "--backend", backend},
                 log, {limits.timeoutSeconds, limits.memoryMb});
     const ChildOutcome& o = probe.wait();
     return !o.timedOut && o.signal == 0;
@@ -45,9 +52,10 @@ bool survives(const StageInfo& stage, const fs::path& labRoot, const CheckLimits
 // does (then none is named: a guess would mislead).
 std::string crashingFile(const StageInfo& stage, const fs::path& labRoot,
                          const CheckLimits& limits) {
-    const fs::path mine = labRoot / stage.id, handedOut = defaultLabRoot() / stage.id;
-    std::error_code ec;
-    if (fs::equivalent(mine, handedOut, ec)) return "";
+    const fs::path mine = labRoot / stage.id;
+    // The handed-out text comes from solution/ (as labgen writes labs/), so
+    // a student editing labs/ in place is compared with the lab as it was.
+    const std::map<std::string, std::string> handedOut = labFiles(stage, MarkedForm::Lab);
     const fs::path scratch =
         fs::temp_directory_path() / ("raylab-check-crash-" + std::to_string(::getpid()));
     struct Cleanup {
@@ -57,17 +65,17 @@ std::string crashingFile(const StageInfo& stage, const fs::path& labRoot,
             fs::remove_all(dir, e);
         }
     } cleanup{scratch};
-    for (const fs::directory_entry& entry : fs::directory_iterator(mine)) {
-        const fs::path original = handedOut / entry.path().filename();
-        if (!entry.is_regular_file() || !fs::is_regular_file(original)) continue;
-        if (fileText(entry.path()) == fileText(original)) continue;
+    // Each probe is a short check; a few minutes at most in all.
+    CheckLimits probeLimits = limits;
+    probeLimits.timeoutSeconds = std::min(limits.timeoutSeconds, 60.0);
+    for (const auto& [name, text] : handedOut) {
+        const fs::path file = mine / name;
+        if (!fs::is_regular_file(file) || fileText(file) == text) continue;
         fs::remove_all(scratch);
         fs::create_directories(scratch);
         fs::copy(mine, scratch / stage.id, fs::copy_options::recursive);
-        fs::copy_file(original, scratch / stage.id / entry.path().filename(),
-                      fs::copy_options::overwrite_existing);
-        if (survives(stage, scratch, limits, scratch / "probe.log"))
-            return entry.path().filename().string();
+        writeTextFileAtomic(scratch / stage.id / name, text);
+        if (survives(stage, scratch, probeLimits, scratch / "probe.log")) return name;
     }
     return "";
 }
@@ -107,11 +115,16 @@ int runCheckInSandbox(const StageInfo& stage, const fs::path& labRoot, const Che
                      "handed-out %s in its place the check runs\n",
                      displayPath(labRoot / stage.id / culprit).c_str(), o.describe().c_str(),
                      culprit.c_str());
-    else
+    else if (limits.memoryMb > 0)
         std::fprintf(stderr,
                      "raylab check: stage %s crashed (%s): a crash in the shader compiler or "
                      "driver, or memory beyond --memory-mb %ld\n",
                      stage.id.c_str(), o.describe().c_str(), limits.memoryMb);
+    else
+        std::fprintf(stderr,
+                     "raylab check: stage %s crashed (%s): a crash in the shader compiler or "
+                     "driver\n",
+                     stage.id.c_str(), o.describe().c_str());
     return 2;
 }
 

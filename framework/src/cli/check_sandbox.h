@@ -3,6 +3,7 @@
 // uses (cmd_grade.cpp): a lab whose shader crashes the driver's compiler, loops
 // for ever or eats all memory gets a one-line cause instead of a dead
 // terminal, and a crash names the file that causes it.
+#include "gl_context.h"
 #include "stage_catalog.h"
 
 #include <filesystem>
@@ -12,7 +13,8 @@ namespace raylab {
 
 struct CheckLimits {
     double timeoutSeconds = 600.0;
-    long memoryMb = 2048;  // as `raylab grade`
+    long memoryMb = 0;                // address space; 0: none (a GPU driver reserves much)
+    Backend backend = Backend::Auto;  // the probes that look for a crash use it too
 };
 
 // True inside the child (the work is done here, not sandboxed again).

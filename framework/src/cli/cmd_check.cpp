@@ -21,7 +21,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         return runCheckInSandbox(stage,
                                  setup.sources.lab ? setup.sources.search.front().parent_path()
                                                    : std::filesystem::path(),
-                                 {check.timeoutSeconds, check.memoryMb});
+                                 {check.timeoutSeconds, check.memoryMb, check.backend});
     const std::filesystem::path against = check.againstDir;
     std::error_code ec;
     if (!against.empty() && !std::filesystem::is_directory(against, ec))
@@ -131,9 +131,11 @@ Command checkCommand() {
                            "compare with DIR/<view>.png instead of the solution rendered now");
             cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");
             cmd.add_option("--timeout", check->timeoutSeconds,
-                           "stop the check after this many seconds (default 600)");
+                           "stop the check after this many seconds (default 600)")
+                ->check(CLI::PositiveNumber);
             cmd.add_option("--memory-mb", check->memoryMb,
-                           "memory limit of the check, as in grading (default 2048)");
+                           "limit the check's address space, as grading does (default: none)")
+                ->check(CLI::NonNegativeNumber);
             auto backend = std::make_shared<BackendOption>(cmd);
             return std::function<int()>([=] {
                 check->backend = backend->resolve();

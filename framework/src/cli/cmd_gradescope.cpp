@@ -61,8 +61,12 @@ BundleConfig readBundleConfig(const fs::path& file) {
     visibility("stdout_visibility", c.report.stdoutVisibility);
     if (doc.contains("timeout_s"))
         c.grading.timeoutSeconds = r.positive(doc["timeout_s"], "timeout_s");
-    if (doc.contains("memory_mb"))
-        c.grading.memoryMb = long(r.positive(doc["memory_mb"], "memory_mb"));
+    if (doc.contains("memory_mb")) {
+        // 0 is "no limit", as `raylab autograder --memory-mb 0` writes it.
+        const float mb = r.number(doc["memory_mb"], "memory_mb");
+        if (mb < 0) r.fail("memory_mb", "expected 0 (no limit) or a positive number");
+        c.grading.memoryMb = long(mb);
+    }
     return c;
 }
 

@@ -193,6 +193,9 @@ int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o,
     if (ec) throw Error("--out '" + out.string() + "': cannot create the folder");
     const fs::path submissions = out / "submissions";
     fs::remove_all(submissions, ec);  // only our own folder: no stale mutant is graded
+    // A failed run must not leave an earlier run's verdicts looking current.
+    fs::remove(out / "mutants.md", ec);
+    fs::remove(out / "survivors.txt", ec);
     // "original" (the solution itself) proves the grader gives it 100: else
     // every mutant would look caught.
     writeLab(submissions / "original", stage, p.solvedLab);

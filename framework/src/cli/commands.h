@@ -54,7 +54,7 @@ struct CheckOptions {
     std::string saveDir;     // write the checked images here
     Backend backend = Backend::Auto;
     double timeoutSeconds = 600.0;  // the whole check, in its child process (check_sandbox.h)
-    long memoryMb = 2048;
+    long memoryMb = 0;              // its address space; 0: no limit
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 

@@ -38,7 +38,7 @@ public:
     // and Inf, which grading must see).
     virtual std::vector<float> readFloats() const = 0;
     // Pixels of the last frame whose computation reached a TODO stub, as the
-    // shader marked them (float targets only); -1 where not counted.
+    // shader marked them (check targets only); -1 where not counted.
     virtual long todoPixels() const { return -1; }
     virtual int width() const = 0;
     virtual int height() const = 0;

@@ -16,7 +16,7 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
                     " is not supported (at most " + std::to_string(maxSize) + " per side)");
     glGenTextures(1, &color_);
     glBindTexture(GL_TEXTURE_2D, color_);
-    if (format == PixelFormat::Rgba32F)
+    if (format != PixelFormat::Rgba8)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
     else
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -27,7 +27,7 @@ Framebuffer::Framebuffer(int width, int height, PixelFormat format)
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
-    if (format == PixelFormat::Rgba32F) {
+    if (format == PixelFormat::Rgba32FWithTodoMarks) {
         glGenTextures(1, &todo_);
         glBindTexture(GL_TEXTURE_2D, todo_);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);

@@ -4,7 +4,8 @@
 // drawn into one of these, so both paths produce the same pixels; the window
 // only copies it to the screen.
 //
-// A float target also has a second, 8-bit attachment: the TODO marks. A lab
+// A check's target (Rgba32FWithTodoMarks) also has a second, 8-bit
+// attachment: the TODO marks. A lab
 // compiled with RAYLAB_TODO_MARK writes 1 there for every pixel whose
 // computation reached a TODO stub (lab_todo.glsl), so the checks tell
 // unfinished work from a magenta object by what the shader did, not by colour.
@@ -41,7 +42,7 @@ private:
     PixelFormat format_;
     GLuint fbo_ = 0;
     GLuint color_ = 0;
-    GLuint todo_ = 0;   // R8 TODO marks, float targets only
+    GLuint todo_ = 0;   // R8 TODO marks, Rgba32FWithTodoMarks only
     GLuint depth_ = 0;  // 24-bit depth renderbuffer
 };
 

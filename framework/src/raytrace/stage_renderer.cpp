@@ -89,7 +89,7 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
         throw Error(displayPath(stage_.folder() / "stage.json") +
                     ": program.geometry: the ray tracer's renderer takes no geometry shader");
     checkSceneFits(stage_, scene_);
-    variant_.todoMarks = target_->hasTodoMarks();  // a float (check) target counts them
+    variant_.todoMarks = target_->hasTodoMarks();  // a check target counts them
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
     rebuild();

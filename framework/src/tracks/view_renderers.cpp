@@ -20,8 +20,8 @@ TrackRenderer& ViewRenderers::forView(const CheckView& view) {
     const std::string key = sceneFileOf(view).string();
     auto it = byScene_.find(key);
     if (it != byScene_.end()) return *it->second;
-    auto renderer = makeTrackRenderer(stage_, sources_, key, width_, height_, PixelFormat::Rgba32F,
-                                      RendererUse::Generic);
+    auto renderer = makeTrackRenderer(stage_, sources_, key, width_, height_,
+                                      PixelFormat::Rgba32FWithTodoMarks, RendererUse::Generic);
     return *byScene_.emplace(key, std::move(renderer)).first->second;
 }
 

@@ -6,6 +6,7 @@
 
 #include "function_compare.h"
 
+#include "reference_intersect.h"
 #include "reference_shading.h"
 
 #include <cmath>
@@ -349,17 +350,6 @@ FunctionCase closestCase(std::string label, dvec3 origin, dvec3 dir, int count, 
                     sphere0, sphere1);
 }
 
-// The nearest root above T_MIN of a ray and a sphere, or -1.
-double sphereRoot(const dvec3& o, const dvec3& d, const dvec4& sphere) {
-    const dvec3 oc = o - xyz(sphere);
-    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - sphere.w * sphere.w;
-    const double h = b * b - c;
-    if (h < 0.0) return -1.0;
-    for (double t : {-b - std::sqrt(h), -b + std::sqrt(h)})
-        if (t > 1e-4) return t;
-    return -1.0;
-}
-
 FunctionSpec findClosestSpec() {
     FunctionSpec s;
     s.name = "findClosest";
@@ -396,8 +386,10 @@ FunctionSpec findClosestSpec() {
         const dvec3 o = xyz(c.in[0]), d = xyz(c.in[1]);
         dvec4 best(0.0, 0.0, -1.0, 1.0);
         for (int i = 0; i < int(c.in[0].w); ++i) {
-            const double t = sphereRoot(o, d, c.in[std::size_t(2 + i)]);
-            if (t > 0.0 && (best.x == 0.0 || t < best.y)) best = dvec4(1.0, t, i, 1.0);
+            const dvec4& sphere = c.in[std::size_t(2 + i)];
+            const double t = reference::intersectSphere({o, d}, xyz(sphere), sphere.w);
+            if (t != reference::kNoHit && (best.x == 0.0 || t < best.y))
+                best = dvec4(1.0, t, i, 1.0);
         }
         return best;
     };

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 using namespace raylab::test;
 
 namespace {
@@ -87,6 +89,37 @@ void expectWindowEqualsHeadless(const std::string& view) {
 TEST(Backends, FurWindowUnderXvfbGivesTheHeadlessImage) { expectWindowEqualsHeadless(kFurView); }
 
 TEST(Backends, WindowUnderXvfbGivesTheHeadlessImage) { expectWindowEqualsHeadless(kView); }
+
+// The number after LABEL ("reduced while moving: 12 frames") in the window's
+// summary line, -1 when it is missing.
+int framesIn(const std::string& out, const std::string& label) {
+    const std::size_t at = out.find(label + ": ");
+    return at == std::string::npos ? -1 : std::atoi(out.c_str() + at + label.size() + 2);
+}
+
+// While the camera moves (a scripted walk) the window draws fewer pixels; the
+// screenshot taken at the end is still of the full size. Switched off, every
+// frame is full size. Stage 08 at 800x600 takes far longer than the 50 ms
+// target on llvmpipe, so the walk must be reduced.
+TEST(Backends, WindowDrawsFewerPixelsWhileTheCameraMoves) {
+    if (runCommand("command -v xvfb-run").exitCode != 0)
+        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
+    ScratchDir dir;
+    const fs::path shot = dir / "moving.png";
+    const std::string run = "xvfb-run -a -s '-screen 0 1024x768x24' " + quote(RAYLAB_EXE) +
+                            " run --stage 08 --solution --no-vsync";
+    CommandResult r = runCommand(run + " --frames 24 --walk 20 --screenshot " + quote(shot));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_GE(framesIn(r.out, "reduced while moving"), 12) << r.out;
+    raylab::Image image = raylab::loadPng(shot);
+    EXPECT_EQ(image.width, 800);
+    EXPECT_EQ(image.height, 600);
+
+    r = runCommand(run + " --full-resolution --frames 5 --walk 5");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_EQ(framesIn(r.out, "reduced while moving"), 0) << r.out;
+    EXPECT_EQ(framesIn(r.out, "full resolution (800x600)"), 3) << r.out;
+}
 
 // With no usable EGL (here: glvnd finds no EGL vendor), `auto` falls back to
 // OSMesa with a note, and still renders the same image.

@@ -17,12 +17,19 @@ constexpr float kMoveSpeed = 3.0f;   // units per second
 constexpr float kSlowFactor = 0.2f;  // while Left Shift is held
 constexpr float kMouseDegPerPixel = 0.2f;
 constexpr float kReloadPollSeconds = 0.3f;
+constexpr float kWalkStep = 0.02f;  // units per frame of a scripted walk (--walk)
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
 }  // namespace
 
-ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync)
+ViewerApp::ViewerApp(StageSetup setup, Automation automation, bool vsync, bool reduceWhileMoving)
     : Application(Options{"RayLab " + setup.stage->id + " (" + setup.sources.label + ")",
                           setup.size.width, setup.size.height, vsync}),
-      setup_(std::move(setup)), automation_(std::move(automation)) {}
+      setup_(std::move(setup)), automation_(std::move(automation)), motion_(reduceWhileMoving) {}
 
 void ViewerApp::init() {
     int w = 0, h = 0;
@@ -64,7 +71,21 @@ void ViewerApp::update(float dt) {
     float step = kMoveSpeed * dt * (keys[SDL_SCANCODE_LSHIFT] ? kSlowFactor : 1.0f);
     float forward = float(keys[SDL_SCANCODE_W]) - float(keys[SDL_SCANCODE_S]);
     float right = float(keys[SDL_SCANCODE_D]) - float(keys[SDL_SCANCODE_A]);
-    if (forward != 0.0f || right != 0.0f) setup_.camera.move(forward * step, right * step);
+    if (forward != 0.0f || right != 0.0f) {
+        setup_.camera.move(forward * step, right * step);
+        cameraMoved_ = true;
+    }
+    if (frames_ < automation_.walkFrames) {
+        setup_.camera.move(kWalkStep, 0.0f);
+        cameraMoved_ = true;
+    }
+    // dt is the previous frame's time; a scripted run keeps it for its
+    // summary (the first frame compiles the shaders and is left out).
+    const int drawnAt = motion_.divisor();
+    if (automation_.exitAfterFrames > 0 && frames_ > 1)
+        (drawnAt > 1 ? reducedMs_ : fullMs_).push_back(dt * 1000.0);
+    motion_.update(dt * 1000.0, cameraMoved_);
+    cameraMoved_ = false;
 
     sinceReloadCheck_ += dt;
     if (sinceReloadCheck_ >= kReloadPollSeconds) {
@@ -73,21 +94,43 @@ void ViewerApp::update(float dt) {
     }
 }
 
+// Draws the frame at 1/DIVISOR of the window's width and height.
+void ViewerApp::renderAtDivisor(int divisor) {
+    int w = 0, h = 0;
+    drawableSize(&w, &h);
+    const int rw = reducedSize(w, divisor), rh = reducedSize(h, divisor);
+    if (rw != renderer_->width() || rh != renderer_->height()) renderer_->resize(rw, rh);
+    renderer_->render(setup_.camera, time_, setup_.settings);
+}
+
 void ViewerApp::render() {
     int w = 0, h = 0;
     drawableSize(&w, &h);
-    if (w != renderer_->width() || h != renderer_->height()) renderer_->resize(w, h);
-    renderer_->render(setup_.camera, time_, setup_.settings);
+    renderAtDivisor(motion_.divisor());
     renderer_->blitToScreen(w, h);
     if (overlay_ && showOverlay_) drawOverlay();
     ++frames_;
     if (automation_.exitAfterFrames > 0 && frames_ >= automation_.exitAfterFrames) {
         if (!automation_.screenshotFile.empty()) screenshot(automation_.screenshotFile);
+        printFrameSummary();
         quit();
     }
 }
 
+// One line for scripts: the median frame time at full and reduced resolution.
+void ViewerApp::printFrameSummary() const {
+    std::printf("raylab: %d frames; full resolution (%dx%d): %zu frames, median %.1f ms; "
+                "reduced while moving: %zu frames, median %.1f ms\n",
+                frames_, setup_.size.width, setup_.size.height, fullMs_.size(), median(fullMs_),
+                reducedMs_.size(), median(reducedMs_));
+    std::fflush(stdout);
+}
+
+// A screenshot is always of the full resolution, also while moving.
 void ViewerApp::screenshot(const std::string& file) {
+    int w = 0, h = 0;
+    drawableSize(&w, &h);
+    if (w != renderer_->width() || h != renderer_->height()) renderAtDivisor(1);
     writePngAtomic(renderer_->read(), file);
     std::printf("raylab: screenshot written to %s\n", file.c_str());
     std::fflush(stdout);
@@ -103,9 +146,11 @@ void ViewerApp::onEvent(const SDL_Event& event) {
         if (event.button.button == SDL_BUTTON_LEFT) looking_ = false;
         break;
     case SDL_MOUSEMOTION:
-        if (looking_)
+        if (looking_) {
             setup_.camera.turn(float(event.motion.xrel) * kMouseDegPerPixel,
                                -float(event.motion.yrel) * kMouseDegPerPixel);
+            cameraMoved_ = true;
+        }
         break;
     case SDL_KEYDOWN:
         if (!event.key.repeat) onKey(event.key.keysym.sym);
@@ -125,6 +170,11 @@ void ViewerApp::onKey(SDL_Keycode key) {
     case SDLK_v:
         setVsync(!vsync());  // from "unavailable": asks again
         std::printf("vsync %s\n", vsyncState());
+        break;
+    case SDLK_r:
+        motion_.setEnabled(!motion_.enabled());
+        std::printf("while moving: %s\n",
+                    motion_.enabled() ? "reduced resolution" : "full resolution");
         break;
     case SDLK_p:
         paused_ = !paused_;
@@ -154,11 +204,16 @@ void ViewerApp::drawOverlay() {
     char frame[64];
     std::snprintf(frame, sizeof frame, "%.1f ms (%.0f FPS)", frameMs_,
                   frameMs_ > 0.0f ? 1000.0f / frameMs_ : 0.0f);
-    std::vector<std::pair<std::string, std::string>> rows = {{"frame", frame}};
+    char drawn[64];
+    std::snprintf(drawn, sizeof drawn, "%dx%d%s", renderer_->width(), renderer_->height(),
+                  motion_.divisor() > 1 ? " (moving)" : "");
+    std::vector<std::pair<std::string, std::string>> rows = {{"frame", frame}, {"drawn at", drawn}};
     for (auto& row : settingsRows(s, setup_.stage->track)) rows.push_back(std::move(row));
-    rows.insert(rows.end(), {{"[V] vsync", vsyncState()},
-                             {"[P] animation", paused_ ? "paused" : "running"},
-                             {"[H] hide this panel", ""}});
+    rows.insert(rows.end(),
+                {{"[R] while moving", motion_.enabled() ? "fewer pixels" : "full resolution"},
+                 {"[V] vsync", vsyncState()},
+                 {"[P] animation", paused_ ? "paused" : "running"},
+                 {"[H] hide this panel", ""}});
     overlay_->draw("RayLab " + setup_.stage->id + " - " + displayPath(setup_.sceneFile), rows);
 }
 

@@ -13,7 +13,9 @@ int cmdStages();
 
 struct RunOptions {
     bool noVsync = false;
+    bool fullResolution = false;  // also while the camera moves
     int exitAfterFrames = 0;
+    int walkFrames = 0;
     std::string screenshot;
 };
 int cmdRun(const StageOptions& stage, const RunOptions& run);

@@ -8,9 +8,10 @@ namespace raylab {
 bool windowBuiltIn() { return true; }
 
 int openViewerWindow(StageSetup setup, const ViewerWindowOptions& options) {
-    ViewerApp app(std::move(setup),
-                  ViewerApp::Automation{options.exitAfterFrames, options.screenshot},
-                  options.vsync);
+    ViewerApp app(
+        std::move(setup),
+        ViewerApp::Automation{options.exitAfterFrames, options.screenshot, options.walkFrames},
+        options.vsync, options.reduceWhileMoving);
     return app.run();
 }
 

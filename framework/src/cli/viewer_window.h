@@ -13,6 +13,8 @@ struct ViewerWindowOptions {
     int exitAfterFrames = 0;  // 0: run until closed
     std::string screenshot;   // with exitAfterFrames: the last frame to this PNG
     bool vsync = true;
+    bool reduceWhileMoving = true;  // fewer pixels while the camera moves (key R)
+    int walkFrames = 0;             // with exitAfterFrames: walk forward during the first N
 };
 
 // Whether this raylab was built with the window (RAYLAB_WINDOW).

@@ -121,8 +121,11 @@ std::vector<float> Framebuffer::readFloats() const {
 void Framebuffer::blitToScreen(int screenWidth, int screenHeight) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    // Scaled up (a frame drawn with fewer pixels while the camera moves):
+    // smooth rather than blocky.
+    const bool sameSize = screenWidth == width_ && screenHeight == height_;
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, screenWidth, screenHeight, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+                      sameSize ? GL_NEAREST : GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

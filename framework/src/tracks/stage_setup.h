@@ -23,6 +23,10 @@ struct StageOptions {
     std::string scene;  // empty: the stage's default scene
     std::string size = "800x600";
     std::string camera;  // empty: the scene's camera
+    // The whole scene resized and moved (ray-tracing stages): "" is 1 and
+    // 0,0,0. The depth view then measures in the new units; --camera is
+    // given in the scene file's units and moved with the scene.
+    std::string sceneScale, sceneOffset;
     float time = 0.0f;
     bool noShadows = false;
     int maxDepth = RenderSettings::kMaxDepth;

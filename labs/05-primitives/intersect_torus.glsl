@@ -31,11 +31,10 @@ float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
     return t;
 }
 
-// The nearest t > tMin where the ray (in the torus frame, measured in major
-// radii: R = 1) meets the torus, or NO_HIT. (Provided.)
-float intersectTorusUnit(Ray ray, float r, float tMin)
+// The nearest t > tMin where the ray (in the torus frame, in units where
+// 1 <= R < 2) meets the torus, or NO_HIT. (Provided.)
+float intersectTorusUnit(Ray ray, float R, float r, float tMin)
 {
-    const float R = 1.0;
     // Float precision: the quartic's coefficients grow with the fourth power
     // of the distance to the torus, and the roots drown in rounding error a
     // few radii away (the seed thesis saw exactly this). So first jump to
@@ -102,13 +101,16 @@ float intersectTorusUnit(Ray ray, float r, float tMin)
 }
 
 // The same for a torus of any size (in the torus frame): solved in units of
-// its major radius, so the quartic's coefficients stay near 1 however large
-// or small the torus (in world units they grow with R^4 and overflow float
-// from about R = 1e3 on). (Provided.)
+// the power of two just below its major radius, so the quartic's
+// coefficients stay near 1 however large or small the torus (in world units
+// they grow with R^4 and overflowed float from about R = 1e3 on). A power of
+// two, because dividing by it is exact: a torus of any size is solved with
+// the same numbers. (Provided.)
 float intersectTorusLocal(Ray ray, float R, float r)
 {
-    float t = intersectTorusUnit(Ray(ray.origin / R, ray.dir), r / R, T_MIN / R);
-    return t == NO_HIT ? NO_HIT : t * R;
+    float unit = exp2(floor(log2(R)));
+    float t = intersectTorusUnit(Ray(ray.origin / unit, ray.dir), R / unit, r / unit, T_MIN / unit);
+    return t == NO_HIT ? NO_HIT : t * unit;
 }
 
 // The unit outward normal of the torus at a surface point p (torus frame).

@@ -21,6 +21,7 @@
 #include "debug_views.h"
 #include "image_compare.h"
 #include "numerics_support.h"
+#include "pfm.h"
 #include "reference_tracer.h"
 #include "scene_transform.h"
 #include "stage_renderer.h"
@@ -193,3 +194,29 @@ TEST_P(SceneScale, PicturesAndDepthsDoNotDependOnSizeOrPlace) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DemoScenes, SceneScale, ::testing::Values("lite", "pro"));
+
+// The command line does the same: `raylab render --scene-scale S` draws the
+// resized scene, and its depth view measures in the new units.
+TEST(SceneScaleCommand, RenderResizesTheSceneAndItsDepths) {
+    raylab::test::ScratchDir dir;
+    const std::string scene =
+        raylab::test::quote((raylab::test::sourceDir() / "assets/scenes/stage02.json").string());
+    auto depth = [&](const std::string& name, const std::string& extra) {
+        const auto out = dir / (name + ".pfm");
+        const auto r = raylab::test::runRaylab(
+            "render --stage 03 --solution --size 64x48 --scene " + scene + " --view depth --out " +
+            raylab::test::quote(out.string()) + extra);
+        EXPECT_EQ(r.exitCode, 0) << r.all();
+        return decodePfm(raylab::test::readFile(out), out.string());
+    };
+    const FloatImage plain = depth("plain", "");
+    const FloatImage big = depth("big", " --scene-scale 1e4 --scene-offset 1e3,0,0");
+    ASSERT_EQ(plain.values.size(), big.values.size());
+    int hits = 0;
+    for (std::size_t i = 0; i < plain.values.size(); ++i) {
+        if (plain.values[i] <= 0.0f) continue;
+        ++hits;
+        EXPECT_NEAR(big.values[i] / 1e4, plain.values[i], 1e-4 * plain.values[i]) << i;
+    }
+    EXPECT_GT(hits, 100);
+}

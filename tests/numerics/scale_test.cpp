@@ -220,3 +220,18 @@ TEST(SceneScaleCommand, RenderResizesTheSceneAndItsDepths) {
     }
     EXPECT_GT(hits, 100);
 }
+
+// `raylab check --scene-scale S --scene-offset X,Y,Z` draws every check view
+// resized and moved, and the pictures still match the stored references
+// (drawn at the scenes' own size) within the graders' tolerance.
+TEST(SceneScaleCommand, CheckViewsMatchTheReferencesAtAnyScale) {
+    const std::string references =
+        raylab::test::quote((raylab::test::sourceDir() / "tests/reference/03-shadows").string());
+    for (const char* transform :
+         {"--scene-scale 1e-3", "--scene-scale 1e4 --scene-offset 1e5,0,-1e5"}) {
+        const auto r = raylab::test::runRaylab("check --stage 03 --solution --against " +
+                                               references + " " + transform);
+        EXPECT_EQ(r.exitCode, 0) << transform << "\n" << r.all();
+        EXPECT_NE(r.out.find(", 0 failed"), std::string::npos) << transform << "\n" << r.out;
+    }
+}

@@ -38,7 +38,7 @@ StageSetup resolveStageOptions(const StageOptions& o) {
                                                             : std::filesystem::path(o.labDir));
     s.size = parseSize(o.size);
     s.sceneFile = o.scene.empty() ? stageSceneFile(s.stage->scene) : std::filesystem::path(o.scene);
-    SceneTransform transform;
+    SceneTransform& transform = s.transform;
     if (!o.sceneScale.empty()) transform.scale = parseSceneScale(o.sceneScale);
     if (!o.sceneOffset.empty()) transform.offset = parseSceneOffset(o.sceneOffset);
     if (!transform.identity() && s.stage->track != "raytrace")

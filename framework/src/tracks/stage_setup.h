@@ -6,6 +6,7 @@
 #include "cli_parse.h"
 #include "render_settings.h"
 #include "scene.h"
+#include "scene_transform.h"
 #include "shader_source.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
@@ -44,7 +45,8 @@ struct StageSetup {
     const StageInfo* stage = nullptr;
     StageSources sources;
     std::filesystem::path sceneFile;
-    Scene scene;  // ray-tracing stages only (the fur renderer reads its own scenes)
+    Scene scene;               // ray-tracing stages only (the fur renderer reads its own scenes)
+    SceneTransform transform;  // --scene-scale, --scene-offset: already applied to scene
     Size size;
     Camera camera;
     float time = 0.0f;

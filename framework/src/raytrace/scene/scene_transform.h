@@ -32,16 +32,19 @@ struct SceneTransform {
 Scene transformScene(const Scene& scene, const SceneTransform& t);
 CameraPose transformPose(const CameraPose& pose, const SceneTransform& t);
 
-// The standard frame a renderer draws SCENE in: for every scene whose size
-// (the box around its camera and finite objects, planes and lights not
-// counted) lies within [kSceneSizeMin, kSceneSizeMax] the identity - every
-// scene shipped with RayLab is such a scene, so their shaders see exactly
-// the numbers of their files; otherwise the power of two that brings the
-// size into that band (exact in binary floating point), and a shift by a
-// multiple of a power of two at least the size that brings the scene near
-// the origin (exact too: a float minus a nearby multiple of a large power of
-// two loses no digit). sceneFrame(transformScene(S, T)) undoes T up to a
-// power of two and the rounding of T itself.
+// The standard frame a renderer draws SCENE in. Its size is the largest side
+// of the box around its camera and finite objects (planes and lights not
+// counted). A size outside [kSceneSizeMin, kSceneSizeMax] is brought into
+// that band by a power of two; a scene farther from the origin than GRID
+// (the power of two at or above its size) is moved by its centre rounded to
+// a multiple of GRID. Both are exact in binary floating point (a float
+// minus a nearby multiple of a large power of two loses no digit), so the
+// frame only chooses which float numbers the shaders work with, and the
+// tracer's fixed tolerances become shares of the scene. Every scene shipped
+// with RayLab lies in the band near the origin: its frame is the identity,
+// so its shaders see exactly the numbers of its file. A resized or moved
+// copy is framed back to within the band (not to its original size: T_MIN
+// and the offsets are then the same share of it only up to that factor).
 inline constexpr double kSceneSizeMin = 2.0;
 inline constexpr double kSceneSizeMax = 1024.0;
 SceneTransform sceneFrame(const Scene& scene);

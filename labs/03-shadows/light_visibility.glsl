@@ -24,7 +24,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     // leaves from - the side the light is on: offsetRayOrigin(point, side),
     // with side = normal if the light is in front of the surface, -normal if
     // behind it.
-    // Checked by: raylab check --stage 03 (function lightVisible, views front, grazing).
+    // Checked by: raylab check --stage 03 (function lightVisible, views front, grazing, far-from-origin).
     labTodo();
     Ray shadowRay = Ray(point, dir);
 

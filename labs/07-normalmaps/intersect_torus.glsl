@@ -31,9 +31,9 @@ float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
     return t;
 }
 
-// The nearest t > T_MIN where the ray (in the torus frame) meets the torus,
-// or NO_HIT. (Provided.)
-float intersectTorusLocal(Ray ray, float R, float r)
+// The nearest t > tMin where the ray (in the torus frame, in units where
+// 1 <= R < 2) meets the torus, or NO_HIT. (Provided.)
+float intersectTorusUnit(Ray ray, float R, float r, float tMin)
 {
     // Float precision: the quartic's coefficients grow with the fourth power
     // of the distance to the torus, and the roots drown in rounding error a
@@ -51,7 +51,7 @@ float intersectTorusLocal(Ray ray, float R, float r)
     vec3 closest = ray.origin - b * ray.dir;
     float h = bound * bound - dot(closest, closest);
     if (h < 0.0) return NO_HIT;          // misses the bounding sphere
-    if (-b + sqrt(h) <= T_MIN) return NO_HIT;  // the sphere is behind the ray
+    if (-b + sqrt(h) <= tMin) return NO_HIT;  // the sphere is behind the ray
     float tEnter = max(-b - sqrt(h), 0.0);
     vec3 o = ray.origin + tEnter * ray.dir;
     vec3 d = ray.dir;
@@ -73,14 +73,14 @@ float intersectTorusLocal(Ray ray, float R, float r)
         for (int j = i + 1; j < count; ++j)
             if (roots[j] < roots[i]) { float x = roots[i]; roots[i] = roots[j]; roots[j] = x; }
     for (int i = 0; i < count; ++i) {
-        if (tEnter + roots[i] <= T_MIN) continue;
+        if (tEnter + roots[i] <= tMin) continue;
         float t = polishTorusHit(o, d, roots[i], R, r);
         // Polishing may move a root just in front of the origin behind it.
-        if (tEnter + t > T_MIN && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
+        if (tEnter + t > tMin && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
     }
     // No root survived: march the distance function through the bounding
     // sphere (rays close to tangent, where a lost root hides).
-    float t = max(T_MIN - tEnter, 0.0);
+    float t = max(tMin - tEnter, 0.0);
     float tExit = -b + sqrt(h) - tEnter;
     if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: no marching from there (rare: only a lost root gets here)
     // A secondary ray starts a hair off the surface (offsetRayOrigin): it
@@ -93,11 +93,24 @@ float intersectTorusLocal(Ray ray, float R, float r)
             clear = true;
         } else if (clear) {
             float polished = polishTorusHit(o, d, t, R, r);
-            return tEnter + (tEnter + polished > T_MIN ? polished : t);
+            return tEnter + (tEnter + polished > tMin ? polished : t);
         }
         t += max(dist, hitDistance);
     }
     return NO_HIT;
+}
+
+// The same for a torus of any size (in the torus frame): solved in units of
+// the power of two just below its major radius, so the quartic's
+// coefficients stay near 1 however large or small the torus (in world units
+// they grow with R^4 and overflowed float from about R = 1e3 on). A power of
+// two, because dividing by it is exact: a torus of any size is solved with
+// the same numbers. (Provided.)
+float intersectTorusLocal(Ray ray, float R, float r)
+{
+    float unit = exp2(floor(log2(R)));
+    float t = intersectTorusUnit(Ray(ray.origin / unit, ray.dir), R / unit, r / unit, T_MIN / unit);
+    return t == NO_HIT ? NO_HIT : t * unit;
 }
 
 // The unit outward normal of the torus at a surface point p (torus frame).

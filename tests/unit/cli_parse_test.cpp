@@ -27,3 +27,13 @@ TEST(CliParse, Camera) {
                             "1,2,3,4,95", "nan,0,0,0,0", "inf,0,0,0,0", "1e9,0,0,0,0"})
         EXPECT_THROW(parseCamera(bad), Error) << "'" << bad << "' should be rejected";
 }
+
+TEST(CliParse, SceneScaleAndOffset) {
+    EXPECT_EQ(parseSceneScale("1e4"), 1e4);
+    EXPECT_EQ(parseSceneScale("0.5"), 0.5);
+    for (const char* bad : {"", "0", "-1", "1e-7", "1e9", "nan", "inf", "2x", "1,2"})
+        EXPECT_THROW(parseSceneScale(bad), Error) << "'" << bad << "' should be rejected";
+    EXPECT_EQ(parseSceneOffset("1e5,0,-2.5"), glm::dvec3(1e5, 0.0, -2.5));
+    for (const char* bad : {"", "1,2", "1,2,3,4", "1,2,", "a,0,0", "1,,3", "nan,0,0", "1e9,0,0"})
+        EXPECT_THROW(parseSceneOffset(bad), Error) << "'" << bad << "' should be rejected";
+}

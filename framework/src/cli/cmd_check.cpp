@@ -34,11 +34,13 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     auto context = createHeadlessContext(check.backend);
     const int w = setup.size.width, h = setup.size.height;
     // Frames read as grading reads them (view_renderers.h).
-    ViewRenderers students(stage, setup.sources, options.scene, w, h);
+    // With --scene-scale / --scene-offset every view's scene and camera are
+    // transformed: the pictures must still match the references.
+    ViewRenderers students(stage, setup.sources, options.scene, w, h, setup.transform);
     std::unique_ptr<ViewRenderers> references;
     if (against.empty())
-        references =
-            std::make_unique<ViewRenderers>(stage, solutionSources(stage), options.scene, w, h);
+        references = std::make_unique<ViewRenderers>(stage, solutionSources(stage), options.scene,
+                                                     w, h, setup.transform);
     const std::vector<OpenTodo> todos =
         students.forView(stage.checkViews.front()).openTodos();  // a compile error stops here
     reportOpenTodos(todos);
@@ -127,6 +129,7 @@ Command checkCommand() {
             auto check = std::make_shared<CheckOptions>();
             stage->size = "160x120";
             CLI::Option* lab = addStageOptions(cmd, *stage, false);
+            addSceneTransformOptions(cmd, *stage);
             cmd.add_option("--against", check->againstDir,
                            "compare with DIR/<view>.png instead of the solution rendered now");
             cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");

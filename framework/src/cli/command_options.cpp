@@ -17,6 +17,7 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
     if (withCamera) {
         cmd.add_option("--camera", o.camera,
                        "camera x,y,z,yaw,pitch in world units and degrees (default: the scene's)");
+        addSceneTransformOptions(cmd, o);
         cmd.add_option("--time", o.time, "animation time in seconds")->capture_default_str();
         cmd.add_flag("--no-shadows", o.noShadows,
                      "start with shadows off (stage 03 on; key 1 in the window)");
@@ -41,6 +42,13 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
             ->capture_default_str();
     }
     return lab;
+}
+
+void addSceneTransformOptions(CLI::App& cmd, StageOptions& o) {
+    cmd.add_option("--scene-scale", o.sceneScale,
+                   "multiply every length of the scene by this factor (1e-6..1e8)");
+    cmd.add_option("--scene-offset", o.sceneOffset,
+                   "then move the whole scene by x,y,z (the camera with it)");
 }
 
 BackendOption::BackendOption(CLI::App& cmd) {

@@ -11,6 +11,8 @@ namespace raylab {
 // camera, time and switches. Returns the --lab option: whether it was given
 // is known only after parsing (its count()).
 CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera);
+// --scene-scale and --scene-offset (part of withCamera; check adds them too).
+void addSceneTransformOptions(CLI::App& cmd, StageOptions& o);
 
 // --backend auto|egl|osmesa. The name is checked when the command runs,
 // like every other value (one line, exit 2).

@@ -43,4 +43,29 @@ CameraPose parseCamera(const std::string& text) {
     return CameraPose{{v[0], v[1], v[2]}, v[3], v[4]};
 }
 
+double parseSceneScale(const std::string& text) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(v >= kMinSceneScale && v <= kMaxSceneScale))
+        throw Error("--scene-scale '" + text + "': expected a factor between 1e-6 and 1e8");
+    return v;
+}
+
+glm::dvec3 parseSceneOffset(const std::string& text) {
+    const std::string usage =
+        "--scene-offset '" + text + "': expected x,y,z (numbers within +-1e8)";
+    std::vector<double> v;
+    std::stringstream in(text);
+    std::string part;
+    while (std::getline(in, part, ',')) {
+        char* end = nullptr;
+        const double d = std::strtod(part.c_str(), &end);
+        if (part.empty() || end == part.c_str() || *end != '\0' || !(std::fabs(d) <= 1e8))
+            throw Error(usage);
+        v.push_back(d);
+    }
+    if (v.size() != 3 || text.back() == ',') throw Error(usage);
+    return {v[0], v[1], v[2]};
+}
+
 }  // namespace raylab

@@ -75,9 +75,17 @@ bool viewNeedsReference(DebugView view) {
 
 GpuViewRenderer::GpuViewRenderer(GpuView view, const StageInfo& stage, StageSources sources,
                                  Scene scene, int width, int height, ShaderVariant variant)
-    : stage_(withViewDefines(stage, view)),
+    : view_(view), stage_(withViewDefines(stage, view)),
       renderer_(stage_, std::move(sources), std::move(scene), width, height, PixelFormat::Rgba32F,
                 kViewFragmentEntry, std::move(variant)) {}
+
+std::vector<float> GpuViewRenderer::readFloats() const {
+    std::vector<float> rgba = renderer_.target().readFloats();
+    const double scale = renderer_.frame().scale;
+    if (view_ == GpuView::Depth && scale != 1.0)
+        for (std::size_t i = 0; i < rgba.size(); i += 4) rgba[i] = float(double(rgba[i]) / scale);
+    return rgba;
+}
 
 ViewData viewFromGpu(DebugView view, const std::vector<float>& rgba, int width, int height) {
     if (viewNeedsReference(view))

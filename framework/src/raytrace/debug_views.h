@@ -59,12 +59,13 @@ public:
     void render(const Camera& camera, float timeSeconds, const RenderSettings& settings = {}) {
         renderer_.render(camera, timeSeconds, settings);
     }
-    std::vector<float> readFloats() const {
-        return renderer_.target().readFloats();
-    }  // RGBA, top row first
+    // RGBA, top row first; depths in the scene's own units (the shaders
+    // measure them in the renderer's frame).
+    std::vector<float> readFloats() const;
     const std::vector<OpenTodo>& openTodos() const { return renderer_.openTodos(); }
 
 private:
+    GpuView view_;
     StageInfo stage_;  // the stage plus the view's #defines; renderer_ refers to it
     StageRenderer renderer_;
 };

@@ -82,7 +82,8 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
                              int height, PixelFormat format, std::string fragmentEntry,
                              ShaderVariant variant)
     : TargetRenderer(width, height, format), stage_(stage), sources_(std::move(sources)),
-      scene_(std::move(scene)), variant_(std::move(variant)),
+      frame_(sceneFrame(scene)), scene_(transformScene(scene, frame_)),
+      variant_(std::move(variant)),
       fragmentEntry_(fragmentEntry.empty() ? stage.program.fragment : std::move(fragmentEntry)) {
     // The tracer draws one full-screen canvas: a geometry stage has no place in it.
     if (!stage_.program.geometry.empty())
@@ -239,8 +240,9 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     target_->clear(0, 0, 0);
     const ShaderProgram& p = *program_;
     p.use();
-    const CameraPose& pose = camera.pose();
-    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(pose.position));
+    // The eye moves with the scene into the shaders' frame; directions stay.
+    const glm::vec3 eye = frame_.point(camera.pose().position);
+    glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(eye));
     glUniform3fv(p.uniform("uForward"), 1, glm::value_ptr(camera.forward()));
     glUniform3fv(p.uniform("uRight"), 1, glm::value_ptr(camera.right()));
     glUniform3fv(p.uniform("uUp"), 1, glm::value_ptr(camera.up()));

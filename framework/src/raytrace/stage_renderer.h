@@ -7,6 +7,7 @@
 #include "framebuffer.h"
 #include "render_settings.h"
 #include "scene.h"
+#include "scene_transform.h"
 #include "shader_program.h"
 #include "stage_catalog.h"
 #include "stage_programs.h"
@@ -37,7 +38,11 @@ public:
 
     void render(const Camera& camera, float timeSeconds,
                 const RenderSettings& settings = {}) override;
+    // The scene as the shaders see it: resized and moved into the standard
+    // frame (sceneFrame, scene_transform.h); for RayLab's own scenes the
+    // scene as given.
     const Scene& scene() const { return scene_; }
+    const SceneTransform& frame() const { return frame_; }
     const ShaderVariant& variant() const { return variant_; }
 
     void rebuild() override;
@@ -52,6 +57,7 @@ private:
 
     const StageInfo& stage_;
     StageSources sources_;
+    SceneTransform frame_;  // from the scene's units to the shaders'
     Scene scene_;
     Canvas canvas_;
     std::unique_ptr<ShaderProgram> program_;

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "json_reader.h"
 #include "paths.h"
+#include "scene_transform.h"
 #include "track_registry.h"
 
 #include <cmath>
@@ -37,11 +38,23 @@ StageSetup resolveStageOptions(const StageOptions& o) {
                                                             : std::filesystem::path(o.labDir));
     s.size = parseSize(o.size);
     s.sceneFile = o.scene.empty() ? stageSceneFile(s.stage->scene) : std::filesystem::path(o.scene);
+    SceneTransform& transform = s.transform;
+    if (!o.sceneScale.empty()) transform.scale = parseSceneScale(o.sceneScale);
+    if (!o.sceneOffset.empty()) transform.offset = parseSceneOffset(o.sceneOffset);
+    if (!transform.identity() && s.stage->track != "raytrace")
+        throw Error("--scene-scale and --scene-offset are for the ray-tracing stages");
+    const std::optional<CameraPose> pose =
+        o.camera.empty() ? std::nullopt : std::optional<CameraPose>(parseCamera(o.camera));
     if (s.stage->track == "raytrace") s.scene = loadScene(s.sceneFile);
     else checkTrackScene(*s.stage, s.sceneFile);
-    s.camera = cameraFor(o.camera.empty() ? std::nullopt
-                                          : std::optional<CameraPose>(parseCamera(o.camera)),
-                         s.sceneFile);
+    if (transform.identity()) {
+        s.camera = cameraFor(pose, s.sceneFile);
+    } else {
+        s.scene = transformScene(s.scene, transform);
+        s.camera = cameraFor(pose ? std::optional<CameraPose>(transformPose(*pose, transform))
+                                  : std::nullopt,
+                             s.scene);
+    }
     s.time = o.time;
     s.settings.shadows = !o.noShadows;
     if (o.maxDepth < 1 || o.maxDepth > RenderSettings::kMaxDepth)

@@ -6,6 +6,7 @@
 #include "cli_parse.h"
 #include "render_settings.h"
 #include "scene.h"
+#include "scene_transform.h"
 #include "shader_source.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
@@ -23,6 +24,10 @@ struct StageOptions {
     std::string scene;  // empty: the stage's default scene
     std::string size = "800x600";
     std::string camera;  // empty: the scene's camera
+    // The whole scene resized and moved (ray-tracing stages): "" is 1 and
+    // 0,0,0. The depth view then measures in the new units; --camera is
+    // given in the scene file's units and moved with the scene.
+    std::string sceneScale, sceneOffset;
     float time = 0.0f;
     bool noShadows = false;
     int maxDepth = RenderSettings::kMaxDepth;
@@ -40,7 +45,8 @@ struct StageSetup {
     const StageInfo* stage = nullptr;
     StageSources sources;
     std::filesystem::path sceneFile;
-    Scene scene;  // ray-tracing stages only (the fur renderer reads its own scenes)
+    Scene scene;               // ray-tracing stages only (the fur renderer reads its own scenes)
+    SceneTransform transform;  // --scene-scale, --scene-offset: already applied to scene
     Size size;
     Camera camera;
     float time = 0.0f;

@@ -1,15 +1,17 @@
 #include "view_renderers.h"
 
 #include "json_reader.h"
+#include "stage_renderer.h"
 #include "stage_setup.h"
 #include "track_registry.h"
 
 namespace raylab {
 
 ViewRenderers::ViewRenderers(const StageInfo& stage, StageSources sources,
-                             std::string sceneOverride, int width, int height)
+                             std::string sceneOverride, int width, int height,
+                             SceneTransform transform)
     : stage_(stage), sources_(std::move(sources)), sceneOverride_(std::move(sceneOverride)),
-      width_(width), height_(height) {}
+      width_(width), height_(height), transform_(transform) {}
 
 std::filesystem::path ViewRenderers::sceneFileOf(const CheckView& view) const {
     if (!sceneOverride_.empty()) return sceneOverride_;  // an override puts every view in its scene
@@ -20,8 +22,14 @@ TrackRenderer& ViewRenderers::forView(const CheckView& view) {
     const std::string key = sceneFileOf(view).string();
     auto it = byScene_.find(key);
     if (it != byScene_.end()) return *it->second;
-    auto renderer = makeTrackRenderer(stage_, sources_, key, width_, height_,
-                                      PixelFormat::Rgba32FWithTodoMarks, RendererUse::Generic);
+    std::unique_ptr<TrackRenderer> renderer;
+    if (transform_.identity())
+        renderer = makeTrackRenderer(stage_, sources_, key, width_, height_,
+                                     PixelFormat::Rgba32FWithTodoMarks, RendererUse::Generic);
+    else
+        renderer = std::make_unique<StageRenderer>(
+            stage_, sources_, transformScene(loadScene(key), transform_), width_, height_,
+            PixelFormat::Rgba32FWithTodoMarks);
     return *byScene_.emplace(key, std::move(renderer)).first->second;
 }
 
@@ -37,7 +45,8 @@ Camera ViewRenderers::cameraOf(const CheckView& view) {
     const std::string key = sceneFileOf(view).string();
     auto it = sceneCameras_.find(key);  // each scene file's camera is read once
     if (it == sceneCameras_.end()) it = sceneCameras_.emplace(key, loadSceneCamera(key)).first;
-    return Camera(view.pose ? *view.pose : it->second.pose, it->second.fovYDeg);
+    return Camera(transformPose(view.pose ? *view.pose : it->second.pose, transform_),
+                  it->second.fovYDeg);
 }
 
 Image ViewRenderers::render(const CheckView& view, long* nonFinite, long* todoPixels) {

@@ -4,6 +4,7 @@
 // scene; some name another), built when first needed, drawing into float
 // targets so that a NaN is seen rather than turned black.
 #include "json_reader.h"
+#include "scene_transform.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 #include "track_renderer.h"
@@ -21,8 +22,10 @@ RenderSettings settingsOf(const CheckView& view);
 class ViewRenderers {
 public:
     // sceneOverride: a scene file for every view (--scene), or empty.
+    // transform: every view's scene and camera resized and moved
+    // (scene_transform.h; ray-tracing stages).
     ViewRenderers(const StageInfo& stage, StageSources sources, std::string sceneOverride,
-                  int width, int height);
+                  int width, int height, SceneTransform transform = {});
 
     // Throws what the track's renderer throws (a bad scene, a shader error).
     TrackRenderer& forView(const CheckView& view);
@@ -46,6 +49,7 @@ private:
     StageSources sources_;
     std::string sceneOverride_;
     int width_, height_;
+    SceneTransform transform_;
     std::map<std::string, std::unique_ptr<TrackRenderer>> byScene_;
     std::map<std::string, SceneCamera> sceneCameras_;
 };

@@ -1,7 +1,8 @@
 // For tests/numerics/offset_test.cpp: a primary ray hits a surface (the
 // solution's own intersection, in float), and from the hit point a shadow
 // ray toward a light and the reflected ray start where the tracer starts
-// them - offsetRayOrigin(point, side) - and are tested against the SAME
+// them - the point put back onto the surface (surfaceAt() of stages 04-05),
+// then offsetRayOrigin(point, side) - and are tested against the SAME
 // surface. The surface is convex or flat and the new rays leave it, so any
 // hit there is acne. Include after intersect_sphere.glsl, intersect_plane.glsl
 // and ray_offset.glsl.
@@ -15,6 +16,7 @@ vec4 sphereAcne(vec3 eye, vec3 dir, vec3 center, float radius, vec3 light)
     if (t == NO_HIT) return vec4(NO_HIT, NO_HIT, NO_HIT, 1.0);
     vec3 point = eye + t * dir;
     vec3 normal = normalize(point - center);  // outward: the eye is outside
+    point = center + radius * normal;         // back onto the sphere, as surfaceAt() does
     if (dot(dir, normal) > 0.0) normal = -normal;  // faces the incoming ray, as in trace()
     vec3 toLight = normalize(light - point);
     vec3 side = dot(normal, toLight) >= 0.0 ? normal : -normal;  // as lightVisible() chooses it
@@ -28,6 +30,7 @@ vec4 planeAcne(vec3 eye, vec3 dir, vec3 planeNormal, float offset, vec3 light)
     float t = intersectPlane(Ray(eye, dir), planeNormal, offset);
     if (t == NO_HIT) return vec4(NO_HIT, NO_HIT, NO_HIT, 1.0);
     vec3 point = eye + t * dir;
+    point -= planeNormal * (dot(planeNormal, point) - offset);  // back onto the plane, as surfaceAt() does
     vec3 normal = dot(dir, planeNormal) < 0.0 ? planeNormal : -planeNormal;  // faces the incoming ray
     vec3 toLight = normalize(light - point);
     vec3 side = dot(normal, toLight) >= 0.0 ? normal : -normal;

@@ -44,10 +44,12 @@ std::string weightText(const glm::dvec3& w) { return fmt(w.x) + "," + fmt(w.y) +
 
 }  // namespace refmodel
 
-ReferenceTracer::ReferenceTracer(const Scene& scene, const ReferenceFeatures& features,
+ReferenceTracer::ReferenceTracer(const Scene& input, const ReferenceFeatures& features,
                                  float timeSeconds, const RenderSettings& settings)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
+    m.frame = sceneFrame(input);
+    const Scene scene = transformScene(input, m.frame);
     m.features = features;
     m.settings = settings;
     m.background = glm::dvec3(scene.background);

@@ -10,6 +10,7 @@
 #include "reference_shading.h"
 #include "reference_textures.h"
 #include "reference_tracer.h"
+#include "scene_transform.h"
 #include "shader_constants.h"
 
 #include <glm/glm.hpp>
@@ -116,6 +117,9 @@ std::string weightText(const glm::dvec3& w);
 using namespace refmodel;
 
 struct ReferenceTracer::Impl {
+    // The scene is traced in the GPU's frame (sceneFrame): the same T_MIN
+    // and ray offsets then mean the same share of the scene.
+    SceneTransform frame;
     ReferenceFeatures features;
     RenderSettings settings;
     glm::dvec3 background{0.0};

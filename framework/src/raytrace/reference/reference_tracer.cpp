@@ -218,7 +218,12 @@ ReferenceSample ReferenceTracer::Impl::traceSample(const DRay& ray, std::ostream
 ReferenceTracer::~ReferenceTracer() = default;
 
 ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log) const {
-    return impl_->traceSample(DRay{ray.origin, glm::normalize(ray.dir)}, log);
+    // Into the frame the scene is traced in, and the depth back out of it.
+    const SceneTransform& frame = impl_->frame;
+    ReferenceSample sample = impl_->traceSample(
+        DRay{ray.origin * frame.scale + frame.offset, glm::normalize(ray.dir)}, log);
+    sample.depth /= frame.scale;
+    return sample;
 }
 
 std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, int width,

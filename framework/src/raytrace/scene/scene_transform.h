@@ -1,0 +1,52 @@
+#pragma once
+// A scene moved and resized as a whole: every length multiplied by a factor,
+// every position then shifted. `raylab render --scene-scale 1e4
+// --scene-offset 1e5,0,0` draws such a copy, and the numerics tests use it to
+// show that a picture does not depend on the scene's size or place.
+//
+// The renderers use the same function the other way round (sceneFrame): the
+// GPU draws every scene resized to a standard size near the origin, so that
+// the tracer's fixed tolerances (T_MIN, the ray offsets of
+// framework/shaders/ray_offset.glsl) mean the same share of any scene.
+#include "scene.h"
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+// How a scene is resized and moved: p -> p * scale + offset.
+struct SceneTransform {
+    double scale = 1.0;
+    glm::dvec3 offset{0.0};
+    bool identity() const { return scale == 1.0 && offset == glm::dvec3(0.0); }
+    // A position, computed in double and rounded once.
+    glm::vec3 point(glm::vec3 p) const;
+    float length(float l) const { return float(double(l) * scale); }
+};
+
+// SCENE with every position and length transformed: camera, sphere centres
+// and radii, motion amplitudes, plane points and tile sizes (so textures map
+// the same), disc centres and radii, triangle corners, torus centres and
+// radii, lights. Directions, angles, colours and the glow (measured in sphere
+// radii) stay as they are.
+Scene transformScene(const Scene& scene, const SceneTransform& t);
+CameraPose transformPose(const CameraPose& pose, const SceneTransform& t);
+
+// The standard frame a renderer draws SCENE in. Its size is the largest side
+// of the box around its camera and finite objects (planes and lights not
+// counted). A size outside [kSceneSizeMin, kSceneSizeMax] is brought into
+// that band by a power of two; a scene farther from the origin than GRID
+// (the power of two at or above its size) is moved by its centre rounded to
+// a multiple of GRID. Both are exact in binary floating point (a float
+// minus a nearby multiple of a large power of two loses no digit), so the
+// frame only chooses which float numbers the shaders work with, and the
+// tracer's fixed tolerances become shares of the scene. Every scene shipped
+// with RayLab lies in the band near the origin: its frame is the identity,
+// so its shaders see exactly the numbers of its file. A resized or moved
+// copy is framed back to within the band (not to its original size: T_MIN
+// and the offsets are then the same share of it only up to that factor).
+inline constexpr double kSceneSizeMin = 2.0;
+inline constexpr double kSceneSizeMax = 1024.0;
+SceneTransform sceneFrame(const Scene& scene);
+
+}  // namespace raylab

@@ -82,15 +82,23 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
     const std::vector<std::size_t> front = paretoFront(rows);
     for (auto [scene, indices] : byScene(rows)) {
         sortByFrameTime(indices, rows);
+        // The scene's Embree row, if any: every row's time as a multiple of it.
+        const BenchRow* embree = nullptr;
+        for (std::size_t i : indices)
+            if (rows[i].engine == "embree") embree = &rows[i];
+        const double embreeMs = embree ? embree->frameMs : NAN;
         out += "\n## " + mdText(scene) + "\n\n";
         out += "| Pareto | Setting | Size | Depth | Shadows | Torus solver | BVH | Specialized | "
-               "Numerics | Frame (ms) | "
+               "Numerics | Frame (ms) | x Embree | "
                "Compile (ms) | RMSE (1/255) | RMSE | PSNR (dB) | Max err (1/255) | Bad px | Depth "
                "err p99 (ulp) |\n";
         out += "| :---: | --- | --- | ---: | --- | --- | --- | --- | --- | ---: | ---: | ---: | "
-               "---: | ---: | ---: | ---: | ---: |\n";
+               "---: | ---: | ---: | ---: | ---: | ---: |\n";
         for (std::size_t i : indices) {
             const BenchRow& r = rows[i];
+            const bool sameRays = embree && r.width == embree->width &&
+                                  r.height == embree->height && r.depth == embree->depth &&
+                                  r.shadows == embree->shadows;
             const bool pareto = std::binary_search(front.begin(), front.end(), i);
             const std::string name = mdText(benchSettingName(r));
             out += std::string("| ") + (pareto ? "**yes**" : "") + " | " +
@@ -98,12 +106,23 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
                    std::to_string(r.height) + " | " + std::to_string(r.depth) + " | " +
                    yesNo(r.shadows) + " | " + mdText(r.torusSolver) + " | " + yesNo(r.bvh) + " | " +
                    yesNo(r.specialized) + " | " + mdText(r.numerics) + " | " +
-                   mdNumber(r.frameMs, 1) + " | " + mdNumber(r.compileMs, 1) + " | " +
-                   mdNumber(r.rmse, 2, 255.0) + " | " + mdSignificant(r.rmse) + " | " +
-                   mdNumber(r.psnr, 1) + " | " + mdNumber(r.maxErr, 1, 255.0) + " | " +
+                   mdNumber(r.frameMs, 1) + " | " +
+                   (sameRays ? mdNumber(r.frameMs / embreeMs, 2) : std::string("n/a")) + " | " +
+                   mdNumber(r.compileMs, 1) + " | " + mdNumber(r.rmse, 2, 255.0) + " | " +
+                   mdSignificant(r.rmse) + " | " + mdNumber(r.psnr, 1) + " | " +
+                   mdNumber(r.maxErr, 1, 255.0) + " | " +
                    (std::isnan(r.badPxShare) ? "n/a" : mdNumber(r.badPxShare, 2, 100.0) + " %") +
                    " | " + mdNumber(r.depthErrP99Ulp, 1) + " |\n";
         }
+        if (embree && std::isnan(embreeMs))
+            out += "\nembree-cast: Embree not built (install libembree-dev, run cmake again).\n";
+        else if (embree)
+            out += "\nembree-cast: Embree casting this frame's " + std::to_string(embree->rays) +
+                   " rays (primary, reflected, refracted, glow and shadow rays, exported from "
+                   "the reference tracer) on the same cores, no shading: " +
+                   mdNumber(embreeMs, 1) + " ms (its BVH build: " + mdNumber(embree->compileMs, 1) +
+                   " ms). **x Embree**: a row's frame time over that, for the rows that cast "
+                   "those rays (same size, depth and shadows).\n";
     }
     return out;
 }

@@ -13,11 +13,19 @@
 // compared with the reference at full quality (depth 8, shadows on, full
 // size): a lower resolution is scaled up first, so it shows as error.
 // Compile times are measured with Mesa's shader cache off.
+//
+// Next to the GLSL rows, each scene gets an "embree-cast" row: Embree casting
+// exactly the rays of that frame (exported from the reference tracer, which
+// casts the same rays as the GLSL up to float rounding) on the same cores,
+// timed in the same rounds - the limit the GLSL frame is measured against
+// (bench.md's "x Embree" column). Without Embree in the build the row says
+// so and everything else is measured as before.
 #include "bench_report.h"
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
 #include "debug_views.h"
+#include "embree_caster.h"
 #include "error.h"
 #include "frame_error.h"
 #include "frame_timer.h"
@@ -30,7 +38,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
+#include <thread>
 
 namespace raylab {
 
@@ -41,6 +51,18 @@ struct BenchSetting {
     bool shadows;
     ShaderVariant variant;
 };
+
+// The weight-cut lever's threshold: rays that could change no channel of
+// the pixel by more than one 8-bit step per unit of the colour they gather.
+constexpr double kWeightCut = 1.0 / 255.0;
+
+// "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
+std::string leverName(const ShaderVariant& v) {
+    if (v.weightCut <= 0.0) return "";
+    char text[32];
+    std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
+    return text;
+}
 
 std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int height) {
     ShaderVariant base;  // BVH on, generic shader, robust numerics
@@ -74,6 +96,13 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     grid.push_back(with([](BenchSetting& s) { s.variant.naiveNumerics = true; }));
     if (!scene.tori.empty())
         grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
+    // Speed levers against the Embree row: each alone, then with the
+    // specialised shader (the fastest choice that keeps the picture).
+    grid.push_back(with([](BenchSetting& s) { s.variant.weightCut = kWeightCut; }));
+    grid.push_back(with([](BenchSetting& s) {
+        s.variant.specialized = true;
+        s.variant.weightCut = kWeightCut;
+    }));
     return grid;
 }
 
@@ -109,6 +138,7 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
     row.bvh = s.variant.bvh;
     row.specialized = s.variant.specialized;
     row.numerics = s.variant.naiveNumerics ? "naive" : "robust";
+    row.lever = leverName(s.variant);
     row.frameMs = timing.medianMs;
     row.compileMs = std::max(0.0, m.firstMs - timing.medianMs);
     row.rmse = err.rmse;
@@ -133,10 +163,13 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
 
 // Builds every setting's program (timing compile + first frame), then times
 // FRAMES frames of each in turns - setting 1, 2, ..., N, 1, 2, ... - so that
-// a slow spell of a shared machine hits every setting alike.
+// a slow spell of a shared machine hits every setting alike. ALSOTIMED (when
+// given: Embree's cast, which returns its own time) takes its turn after the
+// settings in every round; its times go to ALSOMS.
 std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
                                  const StageSources& sources, const std::vector<BenchSetting>& grid,
-                                 int frames) {
+                                 int frames, const std::function<double()>& alsoTimed = {},
+                                 std::vector<double>* alsoMs = nullptr) {
     const Camera camera = cameraFor(std::nullopt, scene);
     std::vector<Measured> all;
     for (const BenchSetting& s : grid) {
@@ -156,11 +189,57 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
     for (Measured& m : all)
         timeOneFrame(
             [&] { m.renderer->render(camera, 0.0f, m.settings); });  // warm-up round, not counted
-    for (int round = 0; round < frames; ++round)
+    if (alsoTimed) alsoTimed();
+    for (int round = 0; round < frames; ++round) {
         for (Measured& m : all)
             m.frameMs.push_back(
                 timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); }));
+        if (alsoTimed) alsoMs->push_back(alsoTimed());
+    }
     return all;
+}
+
+// The scene's embree-cast row (bench_report.h): the median of its timed
+// casts; NaN times when Embree is not built.
+BenchRow embreeRow(const std::string& sceneName, Size size, const RenderSettings& full,
+                   const std::vector<TracedRay>& rays, const EmbreeCaster* embree,
+                   const std::vector<double>& castMs) {
+    BenchRow row;
+    row.scene = sceneName;
+    row.width = size.width;
+    row.height = size.height;
+    row.depth = full.maxDepth;
+    row.shadows = full.shadows;
+    row.bvh = true;
+    row.engine = "embree";
+    row.rays = rays.size();
+    row.frameMs = embree ? summarizeFrameTimes(castMs).medianMs : NAN;
+    row.compileMs = embree ? embree->buildMs() : NAN;
+    row.rmse = row.psnr = row.maxErr = row.badPxShare = row.depthErrP99Ulp = NAN;
+    return row;
+}
+
+// Prints ROWS' last row (the Embree one) with the rays it cast and the
+// scene's baseline GLSL frame as a multiple of it.
+void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedRay>& rays,
+                    int threads) {
+    const BenchRow& e = rows.back();
+    if (std::isnan(e.frameMs)) {
+        std::printf("  %-5s %-28s Embree not built (install libembree-dev, run cmake again)\n",
+                    e.scene.c_str(), benchSettingName(e).c_str());
+        return;
+    }
+    const TracedRayCounts c = countRays(rays);
+    std::printf("  %-5s %-28s frame %8.1f ms  (%zu rays: %zu primary, %zu reflected/refracted, "
+                "%zu glow, %zu shadow; %d threads; BVH build %.1f ms)\n",
+                e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
+                c.secondary, c.glow, c.shadow, threads, e.compileMs);
+    for (const BenchRow& r : rows)
+        if (r.scene == e.scene && r.engine == "glsl" && r.lever.empty() && r.bvh &&
+            !r.specialized && r.numerics == "robust" && r.torusSolver == "robust" &&
+            r.width == e.width && r.height == e.height && r.depth == e.depth && r.shadows)
+            std::printf("  %-5s baseline GLSL frame / Embree casting its rays: %.2f x\n",
+                        e.scene.c_str(), r.frameMs / e.frameMs);
 }
 
 }  // namespace
@@ -203,12 +282,27 @@ int cmdBench(const BenchOptions& options) {
         auto start = std::chrono::steady_clock::now();
         RenderSettings full;  // the reference: depth 8, shadows on
         ReferenceTracer tracer(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
+        std::vector<TracedRay> rays;  // every ray of the frame, for Embree
         std::vector<ReferenceSample> reference =
-            tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height);
+            tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height, &rays);
         std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
                     size.width, size.height, msSince(start) / 1000.0);
+        std::unique_ptr<EmbreeCaster> embree;
+        std::vector<double> embreeMs;
+        const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+        if (embreeBuilt()) {
+            embree = std::make_unique<EmbreeCaster>(scene);
+            EmbreeAnswers answers;
+            embree->cast(rays, threads, &answers);
+            std::printf("  %s: Embree %s agrees with the reference on %.3f%% of the frame's rays\n",
+                        name.c_str(), embreeVersion().c_str(),
+                        100.0 * agreementWithReference(rays, answers));
+        }
+        std::function<double()> castAll;
+        if (embree) castAll = [&] { return embree->cast(rays, threads); };
         std::vector<Measured> measured = measureAll(
-            scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames);
+            scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames,
+            castAll, &embreeMs);
         for (const Measured& m : measured) {
             BenchRow row =
                 rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
@@ -219,6 +313,8 @@ int cmdBench(const BenchOptions& options) {
             std::fflush(stdout);
             rows.push_back(row);
         }
+        rows.push_back(embreeRow(name, size, full, rays, embree.get(), embreeMs));
+        printEmbreeRow(rows, rays, threads);
     }
     const std::string title = "RayLab bench (" + glDescription() + ")";
     writeBenchFiles(rows, options.outDir, title, options.commandLine);

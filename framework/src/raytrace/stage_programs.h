@@ -22,6 +22,10 @@ struct ShaderVariant {
     bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
     bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
     bool todoMarks = false;        // RAYLAB_TODO_MARK: also mark the pixels that reach a TODO stub
+    // RAYLAB_WEIGHT_CUT (when > 0): reflected and refracted rays whose
+    // weight is below this in every channel are not traced (a bench lever:
+    // framework/shaders/variants/weight-cut).
+    double weightCut = 0.0;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -141,8 +141,9 @@ bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dve
     const glm::dvec3 dir = toLight / distanceToLight;
     const glm::dvec3 side = glm::dot(normal, dir) >= 0.0 ? normal : -normal;
     Hit blocker;
-    const bool blocked = findClosest(DRay{offsetRayOrigin(point, side), dir}, blocker) &&
-                         blocker.t < distanceToLight;
+    const DRay shadowRay{offsetRayOrigin(point, side), dir};
+    const bool blocked = findClosest(shadowRay, blocker) && blocker.t < distanceToLight;
+    recordRay(TracedRay::Kind::Shadow, shadowRay, distanceToLight, blocker, blocked);
     if (blocked && log)
         *log << "  light " << light << ": in shadow, blocked by " << objectName(blocker.id)
              << " at t=" << fmt(blocker.t) << " (light at " << fmt(distanceToLight) << ")\n";
@@ -195,8 +196,9 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
         return glm::dvec3(0.0);
     }
     Hit blocker;
-    if (findClosest(ray, blocker) && blocker.id != obj::kSphere * obj::kStride + glow.sphere &&
-        blocker.t < tc) {
+    const bool found = findClosest(ray, blocker);
+    recordRay(TracedRay::Kind::Glow, ray, 1e30, blocker, found);
+    if (found && blocker.id != obj::kSphere * obj::kStride + glow.sphere && blocker.t < tc) {
         if (log)
             *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)
                  << " is in front of the sun)\n";

@@ -106,7 +106,10 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
         if (log)
             *log << "ray " << current.number << " (depth " << current.depth << ", weight "
                  << weightText(current.weight) << "): ";
-        if (!findClosest(current.ray, hit)) {
+        const bool found = findClosest(current.ray, hit);
+        recordRay(n == 0 ? TracedRay::Kind::Primary : TracedRay::Kind::Secondary, current.ray, 1e30,
+                  hit, found);
+        if (!found) {
             const glm::dvec3 skyRgb = skyColor(current.ray.dir);
             color += current.weight * skyRgb;
             if (log)
@@ -222,20 +225,32 @@ ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log)
 }
 
 std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, int width,
-                                                         int height) const {
+                                                         int height,
+                                                         std::vector<TracedRay>* rays) const {
     std::vector<ReferenceSample> samples(std::size_t(width) * std::size_t(height));
+    // One list per row, joined in row order at the end: the export does not
+    // depend on which thread traced which row.
+    std::vector<std::vector<TracedRay>> rowRays(rays ? std::size_t(height) : 0);
     std::atomic<int> nextRow{0};
     auto work = [&] {
-        for (int y = nextRow++; y < height; y = nextRow++)
+        for (int y = nextRow++; y < height; y = nextRow++) {
+            tracedRays() = rays ? &rowRays[std::size_t(y)] : nullptr;
             for (int x = 0; x < width; ++x)
                 samples[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
                     trace(primaryRay(camera, width, height, x, y));
+        }
+        tracedRays() = nullptr;
     };
     const int threads = std::max(1, std::min(int(std::thread::hardware_concurrency()), height));
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
+    if (rays) {
+        rays->clear();
+        for (const std::vector<TracedRay>& row : rowRays)
+            rays->insert(rays->end(), row.begin(), row.end());
+    }
     return samples;
 }
 

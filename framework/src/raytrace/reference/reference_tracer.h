@@ -11,6 +11,7 @@
 // reference frame agree within the graders' tolerance.
 #include "camera.h"
 #include "image.h"
+#include "reference_rays.h"
 #include "render_settings.h"
 #include "scene.h"
 #include "stage_catalog.h"
@@ -75,8 +76,12 @@ public:
     // popped, the colour added.
     ReferenceSample trace(const PrimaryRay& ray, std::ostream* log = nullptr) const;
 
-    // Every pixel, row-major, row 0 at the top. Uses every core.
-    std::vector<ReferenceSample> traceImage(const Camera& camera, int width, int height) const;
+    // Every pixel, row-major, row 0 at the top. Uses every core. With RAYS,
+    // also every ray the frame casts (primary, reflected, refracted, glow
+    // and shadow rays, each with the reference's answer), in pixel order,
+    // each pixel's rays in the order the tracer casts them.
+    std::vector<ReferenceSample> traceImage(const Camera& camera, int width, int height,
+                                            std::vector<TracedRay>* rays = nullptr) const;
 
 private:
     struct Impl;

@@ -269,13 +269,28 @@ TEST(BenchMarkdown, EmbreeRowGivesEveryRowWithTheSameRaysItsRatio) {
     EXPECT_NE(md.find("| 300.0 | 1.50 | 120.4 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| 30.0 | n/a | 120.4 |"), std::string::npos) << md;  // other rays
     EXPECT_NE(md.find("| embree-cast 800x600 d8 |"), std::string::npos) << md;
-    EXPECT_NE(md.find("this frame's 1200000 rays"), std::string::npos) << md;
+    EXPECT_NE(md.find("casting the 1200000 rays of that frame"), std::string::npos) << md;
     EXPECT_NE(md.find("BVH build: 2.5 ms"), std::string::npos) << md;
     // Not built: the row stays, its time is n/a, and the page says why.
     embree.frameMs = NAN;
     md = benchMarkdown({glsl, embree}, "t", "c");
     EXPECT_NE(md.find("| 300.0 | n/a | 120.4 |"), std::string::npos) << md;
     EXPECT_NE(md.find("Embree not built"), std::string::npos) << md;
+    // A lever's rows are set against the Embree row of the lever's own rays.
+    embree.frameMs = 200;
+    BenchRow cut = glsl;
+    cut.lever = "wcut1/255";
+    cut.frameMs = 100;
+    BenchRow embreeCut = embree;
+    embreeCut.lever = "wcut1/255";
+    embreeCut.frameMs = 50;
+    md = benchMarkdown({glsl, cut, embree, embreeCut}, "t", "c");
+    EXPECT_NE(md.find("wcut1/255+linear 800x600 d8** | 800x600 | 8 | yes | robust | no | no | "
+                      "robust | 100.0 | 2.00 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| 300.0 | 1.50 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| embree-cast+wcut1/255 800x600 d8 |"), std::string::npos) << md;
     // No Embree row: no Embree line.
     EXPECT_EQ(benchMarkdown({glsl}, "t", "c").find("embree-cast"), std::string::npos);
 }

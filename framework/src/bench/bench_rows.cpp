@@ -81,7 +81,7 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows) {
 std::string benchSettingName(const BenchRow& r) {
     const std::string size = " " + std::to_string(r.width) + "x" + std::to_string(r.height) + " d" +
                              std::to_string(r.depth);
-    if (r.engine == "embree") return "embree-cast" + size;
+    if (r.engine == "embree") return "embree-cast" + (r.lever.empty() ? "" : "+" + r.lever) + size;
     std::vector<std::string> on;
     if (!r.lever.empty()) on.push_back(r.lever);
     if (!r.bvh) on.push_back("linear");  // the BVH is the default

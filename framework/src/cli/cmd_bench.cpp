@@ -34,6 +34,7 @@
 #include "reference_tracer.h"
 #include "stage_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -54,14 +55,18 @@ struct BenchSetting {
 
 // The weight-cut lever's threshold: rays that could change no channel of
 // the pixel by more than one 8-bit step per unit of the colour they gather.
-constexpr double kWeightCut = 1.0 / 255.0;
+constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 
 // "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
+// "glow-ray-always" for the glow's old order.
 std::string leverName(const ShaderVariant& v) {
-    if (v.weightCut <= 0.0) return "";
-    char text[32];
-    std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
-    return text;
+    std::string name = v.glowRayAlways ? "glow-ray-always" : "";
+    if (v.weightCut > 0.0) {
+        char text[32];
+        std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
+        name += (name.empty() ? "" : "+") + std::string(text);
+    }
+    return name;
 }
 
 std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int height) {
@@ -96,8 +101,10 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     grid.push_back(with([](BenchSetting& s) { s.variant.naiveNumerics = true; }));
     if (!scene.tori.empty())
         grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
-    // Speed levers against the Embree row: each alone, then with the
-    // specialised shader (the fastest choice that keeps the picture).
+    // Speed levers against the Embree row: the old path (the glow's blocker
+    // ray for every pixel), each lever alone, then with the specialised
+    // shader (the fastest choice that keeps the picture).
+    grid.push_back(with([](BenchSetting& s) { s.variant.glowRayAlways = true; }));
     grid.push_back(with([](BenchSetting& s) { s.variant.weightCut = kWeightCut; }));
     grid.push_back(with([](BenchSetting& s) {
         s.variant.specialized = true;
@@ -163,13 +170,13 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
 
 // Builds every setting's program (timing compile + first frame), then times
 // FRAMES frames of each in turns - setting 1, 2, ..., N, 1, 2, ... - so that
-// a slow spell of a shared machine hits every setting alike. ALSOTIMED (when
-// given: Embree's cast, which returns its own time) takes its turn after the
-// settings in every round; its times go to ALSOMS.
+// a slow spell of a shared machine hits every setting alike. Each of
+// ALSOTIMED (Embree's casts, which return their own time) takes its turn
+// after the settings in every round; their times go to ALSOMS.
 std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
                                  const StageSources& sources, const std::vector<BenchSetting>& grid,
-                                 int frames, const std::function<double()>& alsoTimed = {},
-                                 std::vector<double>* alsoMs = nullptr) {
+                                 int frames, const std::vector<std::function<double()>>& alsoTimed,
+                                 std::vector<std::vector<double>>& alsoMs) {
     const Camera camera = cameraFor(std::nullopt, scene);
     std::vector<Measured> all;
     for (const BenchSetting& s : grid) {
@@ -189,21 +196,30 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
     for (Measured& m : all)
         timeOneFrame(
             [&] { m.renderer->render(camera, 0.0f, m.settings); });  // warm-up round, not counted
-    if (alsoTimed) alsoTimed();
+    for (const auto& f : alsoTimed) f();
+    alsoMs.assign(alsoTimed.size(), {});
     for (int round = 0; round < frames; ++round) {
         for (Measured& m : all)
             m.frameMs.push_back(
                 timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); }));
-        if (alsoTimed) alsoMs->push_back(alsoTimed());
+        for (std::size_t i = 0; i < alsoTimed.size(); ++i) alsoMs[i].push_back(alsoTimed[i]());
     }
     return all;
 }
 
-// The scene's embree-cast row (bench_report.h): the median of its timed
-// casts; NaN times when Embree is not built.
+// The rays of one GLSL frame for Embree to cast: the baseline's, or those of
+// a lever that casts fewer (LEVER as in leverName).
+struct RaySet {
+    std::string lever;
+    std::vector<TracedRay> rays;
+};
+
+// An embree-cast row (bench_report.h): the median of its timed casts; NaN
+// times when Embree is not built.
 BenchRow embreeRow(const std::string& sceneName, Size size, const RenderSettings& full,
-                   const std::vector<TracedRay>& rays, const EmbreeCaster* embree,
+                   const RaySet& set, const EmbreeCaster* embree,
                    const std::vector<double>& castMs) {
+    const std::vector<TracedRay>& rays = set.rays;
     BenchRow row;
     row.scene = sceneName;
     row.width = size.width;
@@ -212,6 +228,7 @@ BenchRow embreeRow(const std::string& sceneName, Size size, const RenderSettings
     row.shadows = full.shadows;
     row.bvh = true;
     row.engine = "embree";
+    row.lever = set.lever;
     row.rays = rays.size();
     row.frameMs = embree ? summarizeFrameTimes(castMs).medianMs : NAN;
     row.compileMs = embree ? embree->buildMs() : NAN;
@@ -235,11 +252,11 @@ void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedR
                 e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
                 c.secondary, c.glow, c.shadow, threads, e.compileMs);
     for (const BenchRow& r : rows)
-        if (r.scene == e.scene && r.engine == "glsl" && r.lever.empty() && r.bvh &&
-            !r.specialized && r.numerics == "robust" && r.torusSolver == "robust" &&
-            r.width == e.width && r.height == e.height && r.depth == e.depth && r.shadows)
-            std::printf("  %-5s baseline GLSL frame / Embree casting its rays: %.2f x\n",
-                        e.scene.c_str(), r.frameMs / e.frameMs);
+        if (r.scene == e.scene && r.engine == "glsl" && r.lever == e.lever &&
+            r.numerics == "robust" && r.torusSolver == "robust" && r.width == e.width &&
+            r.height == e.height && r.depth == e.depth && r.shadows)
+            std::printf("  %-5s %-28s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
+                        benchSettingName(e).c_str(), r.frameMs / e.frameMs);
 }
 
 }  // namespace
@@ -282,27 +299,41 @@ int cmdBench(const BenchOptions& options) {
         auto start = std::chrono::steady_clock::now();
         RenderSettings full;  // the reference: depth 8, shadows on
         ReferenceTracer tracer(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
-        std::vector<TracedRay> rays;  // every ray of the frame, for Embree
+        const Camera camera = cameraFor(std::nullopt, scene);
+        const std::vector<BenchSetting> grid =
+            gridFor(scene, options.quick, size.width, size.height);
+        // Every ray of the frame, for Embree: the baseline's, and those of
+        // the weight-cut frame when the grid has it (it casts fewer).
+        std::vector<RaySet> raySets(1);
         std::vector<ReferenceSample> reference =
-            tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height, &rays);
+            tracer.traceImage(camera, size.width, size.height, &raySets[0].rays);
         std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
                     size.width, size.height, msSince(start) / 1000.0);
+        for (const BenchSetting& s : grid)
+            if (s.variant.weightCut > 0.0 && !s.variant.glowRayAlways &&
+                std::none_of(raySets.begin(), raySets.end(),
+                             [&](const RaySet& r) { return r.lever == leverName(s.variant); })) {
+                ReferenceTracer cut(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
+                cut.setWeightCut(s.variant.weightCut);
+                raySets.push_back({leverName(s.variant), {}});
+                cut.traceImage(camera, size.width, size.height, &raySets.back().rays);
+            }
         std::unique_ptr<EmbreeCaster> embree;
-        std::vector<double> embreeMs;
         const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+        std::vector<std::function<double()>> casts;
         if (embreeBuilt()) {
             embree = std::make_unique<EmbreeCaster>(scene);
             EmbreeAnswers answers;
-            embree->cast(rays, threads, &answers);
+            embree->cast(raySets[0].rays, threads, &answers);
             std::printf("  %s: Embree %s agrees with the reference on %.3f%% of the frame's rays\n",
                         name.c_str(), embreeVersion().c_str(),
-                        100.0 * agreementWithReference(rays, answers));
+                        100.0 * agreementWithReference(raySets[0].rays, answers));
+            for (const RaySet& set : raySets)
+                casts.push_back([&] { return embree->cast(set.rays, threads); });
         }
-        std::function<double()> castAll;
-        if (embree) castAll = [&] { return embree->cast(rays, threads); };
-        std::vector<Measured> measured = measureAll(
-            scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames,
-            castAll, &embreeMs);
+        std::vector<std::vector<double>> castMs;
+        std::vector<Measured> measured =
+            measureAll(scene, stage, sources, grid, frames, casts, castMs);
         for (const Measured& m : measured) {
             BenchRow row =
                 rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
@@ -313,8 +344,11 @@ int cmdBench(const BenchOptions& options) {
             std::fflush(stdout);
             rows.push_back(row);
         }
-        rows.push_back(embreeRow(name, size, full, rays, embree.get(), embreeMs));
-        printEmbreeRow(rows, rays, threads);
+        for (std::size_t i = 0; i < raySets.size(); ++i) {
+            rows.push_back(embreeRow(name, size, full, raySets[i], embree.get(),
+                                     embree ? castMs[i] : std::vector<double>{}));
+            printEmbreeRow(rows, raySets[i].rays, threads);
+        }
     }
     const std::string title = "RayLab bench (" + glDescription() + ")";
     writeBenchFiles(rows, options.outDir, title, options.commandLine);

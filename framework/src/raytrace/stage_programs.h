@@ -26,6 +26,13 @@ struct ShaderVariant {
     // weight is below this in every channel are not traced (a bench lever:
     // framework/shaders/variants/weight-cut).
     double weightCut = 0.0;
+    // The cut `raylab demo` uses: one 8-bit step. Measured with `raylab
+    // bench` on pro: RMSE against the reference unchanged to 2 digits
+    // (0.00035 -> 0.00036), frame time -20% (docs/bench/README.md).
+    static constexpr double kDemoWeightCut = 1.0 / 255.0;
+    // RAYLAB_GLOW_RAY_ALWAYS: glow.glsl's old order, a blocker ray for every
+    // pixel in front of the sun, halo or not (the bench's old-path row).
+    bool glowRayAlways = false;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -128,6 +128,7 @@ using namespace refmodel;
 struct ReferenceTracer::Impl {
     ReferenceFeatures features;
     RenderSettings settings;
+    double weightCut = 0.0;  // setWeightCut
     glm::dvec3 background{0.0};
     std::vector<DMaterial> materials;
     std::vector<DLight> lights;
@@ -178,6 +179,7 @@ struct ReferenceTracer::Impl {
     // the background as sky).
     glm::dvec3 trace(const DRay& primary, ReferenceSample& sample, std::ostream* log) const;
     ReferenceSample traceSample(const DRay& ray, std::ostream* log) const;
+    bool weightCounts(const glm::dvec3& weight) const;
 };
 
 }  // namespace raylab

@@ -195,6 +195,16 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
         if (log) *log << "glow: none (the sun is behind the eye)\n";
         return glm::dvec3(0.0);
     }
+    // The halo test before the blocker ray, as glow.glsl (the same answer;
+    // the ray export then holds only the glow rays the GPU casts).
+    const double dist = glm::length(ray.origin + tc * ray.dir - c);
+    const double x = std::max(dist - r, 0.0) / (double(glow.size) * r);
+    if (x >= 1.0) {
+        if (log)
+            *log << "glow: none (passes " << fmt(dist)
+                 << " from the sun's centre, beyond the halo)\n";
+        return glm::dvec3(0.0);
+    }
     Hit blocker;
     const bool found = findClosest(ray, blocker);
     recordRay(TracedRay::Kind::Glow, ray, 1e30, blocker, found);
@@ -202,14 +212,6 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
         if (log)
             *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)
                  << " is in front of the sun)\n";
-        return glm::dvec3(0.0);
-    }
-    const double dist = glm::length(ray.origin + tc * ray.dir - c);
-    const double x = std::max(dist - r, 0.0) / (double(glow.size) * r);
-    if (x >= 1.0) {
-        if (log)
-            *log << "glow: none (passes " << fmt(dist)
-                 << " from the sun's centre, beyond the halo)\n";
         return glm::dvec3(0.0);
     }
     const double fade = 1.0 - x;

@@ -160,7 +160,10 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                         const double cosOutside =
                             entering ? cosIncident : -glm::dot(refracted, normal);
                         if (log) what = "  glass: F=" + fmt(F) + " (cos " + fmt(cosOutside) + ")";
-                        if (stackSize < kMaxDepth) {
+                        const glm::dvec3 refractedWeight = current.weight * (1.0 - F);
+                        if (!weightCounts(refractedWeight)) {
+                            if (log) what += ", refracted ray too faint: not traced";
+                        } else if (stackSize < kMaxDepth) {
                             stack[stackSize] = PendingRay{
                                 DRay{offsetRayOrigin(point, -normal), refracted},
                                 current.weight * (1.0 - F), current.depth + 1, ++numbered};
@@ -180,13 +183,17 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                     }
                     reflectance = glm::dvec3(F);
                 }
-                current = PendingRay{
-                    DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)},
-                    current.weight * reflectance, current.depth + 1, ++numbered};
-                pathGoesOn = true;
-                if (log)
-                    *log << what << ", follows reflected ray " << current.number << " (weight "
-                         << weightText(current.weight) << ")\n";
+                if (!weightCounts(current.weight * reflectance)) {
+                    if (log) *log << what << ", reflected ray too faint: the path ends\n";
+                } else {
+                    current = PendingRay{
+                        DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)},
+                        current.weight * reflectance, current.depth + 1, ++numbered};
+                    pathGoesOn = true;
+                    if (log)
+                        *log << what << ", follows reflected ray " << current.number << " (weight "
+                             << weightText(current.weight) << ")\n";
+                }
             } else if (log) {
                 if (m.type == Material::Type::Plastic) *log << "  plastic: the path ends\n";
                 else if (!features.recursion)
@@ -219,6 +226,13 @@ ReferenceSample ReferenceTracer::Impl::traceSample(const DRay& ray, std::ostream
     return sample;
 }
 ReferenceTracer::~ReferenceTracer() = default;
+
+void ReferenceTracer::setWeightCut(double cut) { impl_->weightCut = cut; }
+
+// The weight-cut variant's test (its weightCounts()); always true without a cut.
+bool ReferenceTracer::Impl::weightCounts(const glm::dvec3& weight) const {
+    return weightCut <= 0.0 || std::max({weight.r, weight.g, weight.b}) >= double(float(weightCut));
+}
 
 ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log) const {
     return impl_->traceSample(DRay{ray.origin, glm::normalize(ray.dir)}, log);

@@ -71,6 +71,12 @@ public:
                     const RenderSettings& settings);
     ~ReferenceTracer();
 
+    // The weight-cut variant of trace.glsl (framework/shaders/variants/
+    // weight-cut): reflected and refracted rays whose weight is below CUT
+    // in every channel are not traced. 0 (the default): every ray is.
+    // For `raylab bench`, to export the rays such a frame casts.
+    void setWeightCut(double cut);
+
     // Traces one primary ray. With LOG, writes the path bounce by bounce:
     // object hit, t, normal, material, Fresnel weights, what is pushed and
     // popped, the colour added.

@@ -58,9 +58,9 @@ struct BenchSetting {
 constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 
 // "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
-// "glow-ray-always" for the glow's old order.
+// "old-path" for the tracer before the levers (RAYLAB_OLD_PATH).
 std::string leverName(const ShaderVariant& v) {
-    std::string name = v.glowRayAlways ? "glow-ray-always" : "";
+    std::string name = v.oldPath ? "old-path" : "";
     if (v.weightCut > 0.0) {
         char text[32];
         std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
@@ -101,10 +101,11 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     grid.push_back(with([](BenchSetting& s) { s.variant.naiveNumerics = true; }));
     if (!scene.tori.empty())
         grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
-    // Speed levers against the Embree row: the old path (the glow's blocker
-    // ray for every pixel), each lever alone, then with the specialised
-    // shader (the fastest choice that keeps the picture).
-    grid.push_back(with([](BenchSetting& s) { s.variant.glowRayAlways = true; }));
+    // Speed levers against the Embree row: the old path (a glow ray for
+    // every pixel, shadow rays toward lights behind the surface), the weight
+    // cut alone, then with the specialised shader (the fastest choice that
+    // keeps the picture).
+    grid.push_back(with([](BenchSetting& s) { s.variant.oldPath = true; }));
     grid.push_back(with([](BenchSetting& s) { s.variant.weightCut = kWeightCut; }));
     grid.push_back(with([](BenchSetting& s) {
         s.variant.specialized = true;
@@ -310,7 +311,7 @@ int cmdBench(const BenchOptions& options) {
         std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
                     size.width, size.height, msSince(start) / 1000.0);
         for (const BenchSetting& s : grid)
-            if (s.variant.weightCut > 0.0 && !s.variant.glowRayAlways &&
+            if (s.variant.weightCut > 0.0 && !s.variant.oldPath &&
                 std::none_of(raySets.begin(), raySets.end(),
                              [&](const RaySet& r) { return r.lever == leverName(s.variant); })) {
                 ReferenceTracer cut(scene, ReferenceFeatures::forStage(stage), 0.0f, full);

@@ -50,7 +50,8 @@ constexpr VariantSwitch kVariants[] = {
     {"TORUS_SOLVER_CLOSED_FORM", true, "torus-closed-form"},  // the seed's torus solver
     {"RAYLAB_BVH", false, "linear-search"},                   // objects found by a plain loop
     {"RAYLAB_WEIGHT_CUT", true, "weight-cut"},  // rays too faint to count not traced (bench)
-    {"RAYLAB_GLOW_RAY_ALWAYS", true, "glow-ray-always"},  // the glow's old order (bench)
+    {"RAYLAB_OLD_PATH", true, "old-path"},  // before the bench's levers: the glow ray and shadow
+                                            // rays of lights behind a surface always cast
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {

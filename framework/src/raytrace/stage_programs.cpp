@@ -12,7 +12,7 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
     if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
     if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
-    if (glowRayAlways) d.push_back("RAYLAB_GLOW_RAY_ALWAYS");
+    if (oldPath) d.push_back("RAYLAB_OLD_PATH");
     if (weightCut > 0.0) {
         char value[32];
         std::snprintf(value, sizeof value, "%.9g", weightCut);

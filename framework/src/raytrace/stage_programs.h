@@ -30,9 +30,10 @@ struct ShaderVariant {
     // bench` on pro: RMSE against the reference unchanged to 2 digits
     // (0.00035 -> 0.00036), frame time -20% (docs/bench/README.md).
     static constexpr double kDemoWeightCut = 1.0 / 255.0;
-    // RAYLAB_GLOW_RAY_ALWAYS: glow.glsl's old order, a blocker ray for every
-    // pixel in front of the sun, halo or not (the bench's old-path row).
-    bool glowRayAlways = false;
+    // RAYLAB_OLD_PATH: the tracer before the bench's levers: glow.glsl casts
+    // a blocker ray for every pixel in front of the sun, halo or not, and
+    // light_visibility.glsl a shadow ray toward lights behind the surface.
+    bool oldPath = false;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

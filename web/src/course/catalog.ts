@@ -94,7 +94,7 @@ const VARIANTS: { define: string; whenDefined: boolean; folder: string }[] = [
   { define: 'TORUS_SOLVER_CLOSED_FORM', whenDefined: true, folder: 'torus-closed-form' },
   { define: 'RAYLAB_BVH', whenDefined: false, folder: 'linear-search' },
   { define: 'RAYLAB_WEIGHT_CUT', whenDefined: true, folder: 'weight-cut' },
-  { define: 'RAYLAB_GLOW_RAY_ALWAYS', whenDefined: true, folder: 'glow-ray-always' },
+  { define: 'RAYLAB_OLD_PATH', whenDefined: true, folder: 'old-path' },
 ];
 
 // The search path: the web's own replacements (the BVH over 2D textures)

@@ -139,6 +139,13 @@ bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dve
     const glm::dvec3 toLight = lights[std::size_t(light)].position - point;
     const double distanceToLight = glm::length(toLight);
     const glm::dvec3 dir = toLight / distanceToLight;
+    // 08's light_visibility.glsl casts no ray toward a light behind the
+    // surface (it adds nothing either way); so the ray export holds only the
+    // shadow rays the GPU casts. The picture is the same in every stage.
+    if (glm::dot(normal, dir) <= 0.0) {
+        if (log) *log << "  light " << light << ": behind the surface, no shadow ray\n";
+        return false;
+    }
     const glm::dvec3 side = glm::dot(normal, dir) >= 0.0 ? normal : -normal;
     Hit blocker;
     const DRay shadowRay{offsetRayOrigin(point, side), dir};

@@ -1,7 +1,6 @@
 // Variant of solution/06-textures/glow.glsl, used instead of it when
-// RAYLAB_GLOW_RAY_ALWAYS is defined: the old order, kept so that
-// `raylab bench` can show what the new one saves (its "glow-ray-always"
-// row). It looks for a blocker before it knows whether the pixel is in the
+// RAYLAB_OLD_PATH is defined: the old order, kept so that `raylab bench`
+// can show what the new one saves (its "old-path" row). It looks for a blocker before it knows whether the pixel is in the
 // halo at all, so every pixel in front of the sun casts a second primary ray.
 // Not part of any lab: students never see this file.
 vec3 sunGlow(Ray ray)

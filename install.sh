@@ -27,6 +27,7 @@ packages=(
   libgtest-dev libgmock-dev                        # tests
   glslang-tools                                    # Khronos reference GLSL compiler (tests)
   gnuplot-nox                                      # `raylab bench` speed-vs-error plot (bench.png)
+  libembree-dev                                    # `raylab bench`'s embree-cast row (optional in CMake)
   xvfb xauth                                       # windowed-mode tests without a display
   clang libclang-rt-14-dev clang-format            # tests: libFuzzer targets (ctest -L fuzz), tools/check-format.sh
   chromium                                         # the web build's tests (ctest -L web): WebGL 2 headless

@@ -18,11 +18,13 @@ vec3 sunGlow(Ray ray)
     float r = uSpheres[sun].w;
     float tc = dot(c - ray.origin, ray.dir);
     if (tc < 0.0) return vec3(0.0);
-    Hit blocker;
-    if (findClosest(ray, blocker) && blocker.id != objectId(KIND_SPHERE, uGlowSphere) && blocker.t < tc) return vec3(0.0);
     float dist = length(ray.origin + tc * ray.dir - c);
     float x = max(dist - r, 0.0) / (uGlowSize * r);
     if (x >= 1.0) return vec3(0.0);
+    // The halo test first: findClosest is a whole ray, and most pixels are
+    // outside the halo (pro: 5 in 6 of its glow rays were not needed).
+    Hit blocker;
+    if (findClosest(ray, blocker) && blocker.id != objectId(KIND_SPHERE, uGlowSphere) && blocker.t < tc) return vec3(0.0);
     float fade = 1.0 - x;
     return uGlowColor * fade * fade * fade;
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -51,10 +52,29 @@ TEST(Bench, QuickRunWritesTableCsvAndPlotWithMeaningfulErrors) {
     ASSERT_TRUE(fs::exists(dir / "out/bench.md")) << r.all();
     ASSERT_TRUE(fs::exists(dir / "out/bench.png"));
     auto rows = readCsv(dir / "out/bench.csv");
-    ASSERT_EQ(rows.size(), 4u) << readFile(dir / "out/bench.csv");
+    ASSERT_EQ(rows.size(), 5u) << readFile(dir / "out/bench.csv");
+    // The Embree row: the frame's rays (160x120 primary rays and more), cast
+    // when this build has Embree; no picture, so no error figures.
+    const auto embree = std::find_if(rows.begin(), rows.end(),
+                                     [](const auto& row) { return row.at("engine") == "embree"; });
+    ASSERT_NE(embree, rows.end()) << readFile(dir / "out/bench.csv");
+    EXPECT_GT(num(*embree, "rays"), 160.0 * 120.0);
+    EXPECT_EQ(embree->at("rmse"), "");
+    const std::string md = readFile(dir / "out/bench.md");
+    if (r.out.find("Embree not built") == std::string::npos) {
+        EXPECT_GT(num(*embree, "frame_ms"), 0.0);
+        const std::size_t at = r.out.find("agrees with the reference on ");
+        ASSERT_NE(at, std::string::npos) << r.out;
+        EXPECT_GE(std::stod(r.out.substr(at + 29)), 99.99) << r.out;
+        EXPECT_NE(md.find("| x Embree |"), std::string::npos);
+    } else {
+        EXPECT_NE(md.find("Embree not built"), std::string::npos) << md;
+    }
+    rows.erase(embree);
     const auto *base = &rows[0], *linear = &rows[0], *spec = &rows[0], *shallow = &rows[0];
     for (const auto& row : rows) {
         EXPECT_EQ(row.at("scene"), "lite");
+        EXPECT_EQ(row.at("engine"), "glsl");
         EXPECT_GT(num(row, "frame_ms"), 0.0);
         EXPECT_GT(num(row, "compile_ms"), 0.0);
         if (row.at("bvh") == "0") linear = &row;

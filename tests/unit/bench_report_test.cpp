@@ -154,16 +154,16 @@ TEST(BenchCsv, HeaderRowsAndNumbers) {
     ASSERT_EQ(out.size(), rows.size() + 1);
     EXPECT_EQ(out[0], "scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,"
                       "frame_ms,compile_ms,rmse,psnr,max_err,"
-                      "bad_px_share,depth_err_p99_ulp,pareto\r");
+                      "bad_px_share,depth_err_p99_ulp,engine,lever,rays,pareto\r");
     // Row 1 of the sample: lite, bvh, 18.5 ms - on the front; row 3 is not.
     EXPECT_EQ(out[2].rfind("lite,800,600,8,1,robust,1,0,robust,18.5,120.4,0.002,", 0), 0u)
         << out[2];
     EXPECT_EQ(out[2].substr(out[2].size() - 3), ",1\r");
     EXPECT_EQ(out[4].substr(out[4].size() - 3), ",0\r");
-    // Every line ends CRLF and has 17 fields (none of these need quotes).
+    // Every line ends CRLF and has 20 fields (none of these need quotes).
     for (const std::string& l : out) {
         EXPECT_EQ(l.back(), '\r') << l;
-        EXPECT_EQ(std::count(l.begin(), l.end(), ','), 16) << l;
+        EXPECT_EQ(std::count(l.begin(), l.end(), ','), 19) << l;
     }
 }
 
@@ -177,14 +177,24 @@ TEST(BenchCsv, ExactValuesBooleansAndPareto) {
     r.specialized = true;
     r.torusSolver = "closed-form";
     r.numerics = "naive";
+    r.lever = "weight-cut";
     BenchRow slow = row("lite", 20, 0.5);
     slow.psnr = 6.02;
     slow.depthErrP99Ulp = NAN;
-    const std::vector<std::string> out = lines(benchCsv({r, slow}));
-    ASSERT_EQ(out.size(), 3u);
-    EXPECT_EQ(out[1], "lite,800,600,8,0,closed-form,0,1,naive,12.5,0.1,0,inf,0,0,1.5,1\r");
+    // The Embree row: no picture, so no error figures, and not on the front.
+    BenchRow embree = row("lite", 5, NAN);
+    embree.engine = "embree";
+    embree.rays = 1234;
+    embree.psnr = embree.maxErr = embree.badPxShare = embree.depthErrP99Ulp = NAN;
+    const std::vector<std::string> out = lines(benchCsv({r, slow, embree}));
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_EQ(out[1], "lite,800,600,8,0,closed-form,0,1,naive,12.5,0.1,0,inf,0,0,1.5,glsl,"
+                      "weight-cut,0,1\r");
     // Beaten by the row above; a NaN is an empty field.
-    EXPECT_EQ(out[2], "lite,800,600,8,1,robust,0,0,robust,20,120.4,0.5,6.02,5,1,,0\r");
+    EXPECT_EQ(out[2], "lite,800,600,8,1,robust,0,0,robust,20,120.4,0.5,6.02,5,1,,glsl,,0,0\r");
+    EXPECT_EQ(out[3], "lite,800,600,8,1,robust,0,0,robust,5,120.4,,,,,,embree,,1234,0\r");
+    EXPECT_EQ(benchSettingName(embree), "embree-cast 800x600 d8");
+    EXPECT_EQ(benchSettingName(r), "weight-cut+linear+spec+naive+cf-torus+no-shadow 800x600 d8");
 }
 
 TEST(BenchCsv, QuotesAndDefusesSceneNames) {
@@ -229,7 +239,7 @@ TEST(BenchMarkdown, EveryRowGroupedByScene) {
         ASSERT_NE(at, std::string::npos) << benchSettingName(rows[i]);
         EXPECT_EQ(at > pro, rows[i].scene == "pro") << i;
     }
-    EXPECT_NE(md.find("| 18.5 | 120.4 | 0.51 | 0.002 | 54.0 | 5.1 | 0.40 % | 3.0 |"),
+    EXPECT_NE(md.find("| 18.5 | n/a | 120.4 | 0.51 | 0.002 | 54.0 | 5.1 | 0.40 % | 3.0 |"),
               std::string::npos)
         << md;
     EXPECT_NE(md.find("| 0.00 | 0 | inf |"), std::string::npos) << md;  // the exact row
@@ -244,6 +254,45 @@ TEST(BenchMarkdown, EveryRowGroupedByScene) {
     EXPECT_NE(md.find("| **yes** | **linear+spec 800x600 d8** |"), std::string::npos);
     EXPECT_NE(md.find("|  | spec+naive 800x600 d8 |"),
               std::string::npos);  // 30 ms, beaten by 18.5 ms
+}
+
+TEST(BenchMarkdown, EmbreeRowGivesEveryRowWithTheSameRaysItsRatio) {
+    BenchRow glsl = row("pro", 300, 0.01);
+    BenchRow half = row("pro", 30, 0.05);
+    half.width = 400;
+    half.height = 300;
+    BenchRow embree = row("pro", 200, NAN);
+    embree.engine = "embree";
+    embree.rays = 1200000;
+    embree.compileMs = 2.5;
+    std::string md = benchMarkdown({glsl, half, embree}, "t", "c");
+    EXPECT_NE(md.find("| 300.0 | 1.50 | 120.4 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 30.0 | n/a | 120.4 |"), std::string::npos) << md;  // other rays
+    EXPECT_NE(md.find("| embree-cast 800x600 d8 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("casting the 1200000 rays of that frame"), std::string::npos) << md;
+    EXPECT_NE(md.find("BVH build: 2.5 ms"), std::string::npos) << md;
+    // Not built: the row stays, its time is n/a, and the page says why.
+    embree.frameMs = NAN;
+    md = benchMarkdown({glsl, embree}, "t", "c");
+    EXPECT_NE(md.find("| 300.0 | n/a | 120.4 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("Embree not built"), std::string::npos) << md;
+    // A lever's rows are set against the Embree row of the lever's own rays.
+    embree.frameMs = 200;
+    BenchRow cut = glsl;
+    cut.lever = "wcut1/255";
+    cut.frameMs = 100;
+    BenchRow embreeCut = embree;
+    embreeCut.lever = "wcut1/255";
+    embreeCut.frameMs = 50;
+    md = benchMarkdown({glsl, cut, embree, embreeCut}, "t", "c");
+    EXPECT_NE(md.find("wcut1/255+linear 800x600 d8** | 800x600 | 8 | yes | robust | no | no | "
+                      "robust | 100.0 | 2.00 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| 300.0 | 1.50 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| embree-cast+wcut1/255 800x600 d8 |"), std::string::npos) << md;
+    // No Embree row: no Embree line.
+    EXPECT_EQ(benchMarkdown({glsl}, "t", "c").find("embree-cast"), std::string::npos);
 }
 
 TEST(BenchMarkdown, EscapesTableBreakers) {

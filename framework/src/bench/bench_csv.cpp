@@ -37,7 +37,7 @@ std::string benchCsv(const std::vector<BenchRow>& rows) {
     const std::string eol = "\r\n";
     std::string out = "scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,"
                       "frame_ms,compile_ms,rmse,psnr,max_err,"
-                      "bad_px_share,depth_err_p99_ulp,pareto" +
+                      "bad_px_share,depth_err_p99_ulp,engine,lever,rays,pareto" +
                       eol;
     const std::vector<std::size_t> front = paretoFront(rows);
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -49,7 +49,8 @@ std::string benchCsv(const std::vector<BenchRow>& rows) {
                (r.specialized ? "1" : "0") + "," + csvText(r.numerics) + "," +
                csvNumber(r.frameMs) + "," + csvNumber(r.compileMs) + "," + csvNumber(r.rmse) + "," +
                csvNumber(r.psnr) + "," + csvNumber(r.maxErr) + "," + csvNumber(r.badPxShare) + "," +
-               csvNumber(r.depthErrP99Ulp) + "," + (pareto ? "1" : "0") + eol;
+               csvNumber(r.depthErrP99Ulp) + "," + csvText(r.engine) + "," + csvText(r.lever) +
+               "," + std::to_string(r.rays) + "," + (pareto ? "1" : "0") + eol;
     }
     return out;
 }

@@ -82,15 +82,26 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
     const std::vector<std::size_t> front = paretoFront(rows);
     for (auto [scene, indices] : byScene(rows)) {
         sortByFrameTime(indices, rows);
+        // The scene's Embree rows: a row's time as a multiple of the one that
+        // cast its rays (the same lever; the baseline's rays have none).
+        auto embreeFor = [&](const BenchRow& r) -> const BenchRow* {
+            for (std::size_t i : indices)
+                if (rows[i].engine == "embree" && rows[i].lever == r.lever &&
+                    rows[i].width == r.width && rows[i].height == r.height &&
+                    rows[i].depth == r.depth && rows[i].shadows == r.shadows)
+                    return &rows[i];
+            return nullptr;
+        };
         out += "\n## " + mdText(scene) + "\n\n";
         out += "| Pareto | Setting | Size | Depth | Shadows | Torus solver | BVH | Specialized | "
-               "Numerics | Frame (ms) | "
+               "Numerics | Frame (ms) | x Embree | "
                "Compile (ms) | RMSE (1/255) | RMSE | PSNR (dB) | Max err (1/255) | Bad px | Depth "
                "err p99 (ulp) |\n";
         out += "| :---: | --- | --- | ---: | --- | --- | --- | --- | --- | ---: | ---: | ---: | "
-               "---: | ---: | ---: | ---: | ---: |\n";
+               "---: | ---: | ---: | ---: | ---: | ---: |\n";
         for (std::size_t i : indices) {
             const BenchRow& r = rows[i];
+            const BenchRow* embree = embreeFor(r);
             const bool pareto = std::binary_search(front.begin(), front.end(), i);
             const std::string name = mdText(benchSettingName(r));
             out += std::string("| ") + (pareto ? "**yes**" : "") + " | " +
@@ -98,12 +109,34 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
                    std::to_string(r.height) + " | " + std::to_string(r.depth) + " | " +
                    yesNo(r.shadows) + " | " + mdText(r.torusSolver) + " | " + yesNo(r.bvh) + " | " +
                    yesNo(r.specialized) + " | " + mdText(r.numerics) + " | " +
-                   mdNumber(r.frameMs, 1) + " | " + mdNumber(r.compileMs, 1) + " | " +
-                   mdNumber(r.rmse, 2, 255.0) + " | " + mdSignificant(r.rmse) + " | " +
-                   mdNumber(r.psnr, 1) + " | " + mdNumber(r.maxErr, 1, 255.0) + " | " +
+                   mdNumber(r.frameMs, 1) + " | " +
+                   (embree ? mdNumber(r.frameMs / embree->frameMs, 2) : std::string("n/a")) +
+                   " | " + mdNumber(r.compileMs, 1) + " | " + mdNumber(r.rmse, 2, 255.0) + " | " +
+                   mdSignificant(r.rmse) + " | " + mdNumber(r.psnr, 1) + " | " +
+                   mdNumber(r.maxErr, 1, 255.0) + " | " +
                    (std::isnan(r.badPxShare) ? "n/a" : mdNumber(r.badPxShare, 2, 100.0) + " %") +
                    " | " + mdNumber(r.depthErrP99Ulp, 1) + " |\n";
         }
+        for (std::size_t i : indices) {
+            const BenchRow& e = rows[i];
+            if (e.engine != "embree") continue;
+            const std::string name = mdText(benchSettingName(e));
+            if (std::isnan(e.frameMs))
+                out +=
+                    "\n" + name + ": Embree not built (install libembree-dev, run cmake again).\n";
+            else
+                out += "\n" + name + ": Embree casting the " + std::to_string(e.rays) +
+                       " rays of that frame (primary, reflected, refracted, glow and shadow rays, "
+                       "exported from the reference tracer" +
+                       (e.lever.empty() ? std::string("") : " with the same lever") +
+                       ") on the same cores, no shading: " + mdNumber(e.frameMs, 1) +
+                       " ms (its BVH build: " + mdNumber(e.compileMs, 1) + " ms).\n";
+        }
+        if (std::any_of(indices.begin(), indices.end(),
+                        [&](std::size_t i) { return rows[i].engine == "embree"; }))
+            out += "\n**x Embree**: a row's frame time over the time Embree takes to cast the "
+                   "same rays (same size, depth, shadows and lever); n/a where Embree did not "
+                   "cast that row's rays.\n";
     }
     return out;
 }

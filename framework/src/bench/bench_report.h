@@ -26,6 +26,13 @@ struct BenchRow {
     double maxErr = 0;          // 0..1
     double badPxShare = 0;      // 0..1
     double depthErrP99Ulp = 0;  // ulp
+    // "glsl": the GPU frame. "embree": not a picture but the limit it is
+    // set against - Embree casting the frame's rays (embree_caster.h) on
+    // the same cores, no shading; its error fields are NaN, its frameMs is
+    // NaN when this build has no Embree, its compileMs is Embree's BVH build.
+    std::string engine = "glsl";
+    std::string lever;     // a speed lever of the GLSL frame that is on ("" none)
+    std::size_t rays = 0;  // embree: the rays cast (primary, secondary, glow, shadow)
 };
 
 // Indices (ascending) of the rows that no other row of the same scene
@@ -38,12 +45,13 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows);
 // A short name for a row's setting, used as the plot's point labels and in
 // the Markdown: the switches that are on or differ from the default, joined
 // by '+' ("linear" when the BVH is off, "spec", "naive", "cf-torus", "no-shadow";
-// "baseline" if none),
-// then size and depth: "spec 800x600 d8".
+// "baseline" if none; the lever's name when one is on; "embree-cast" for
+// the Embree row), then size and depth: "spec 800x600 d8".
 std::string benchSettingName(const BenchRow& row);
 
 // scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,
-// frame_ms,compile_ms,rmse,psnr,max_err,bad_px_share,depth_err_p99_ulp,pareto
+// frame_ms,compile_ms,rmse,psnr,max_err,bad_px_share,depth_err_p99_ulp,
+// engine,lever,rays,pareto
 // RFC 4180 (CRLF line ends, fields quoted when needed; text that a
 // spreadsheet would run as a formula gets a leading apostrophe). Booleans and
 // pareto as 0/1; numbers in the shortest form that reads back exactly;
@@ -53,7 +61,9 @@ std::string benchCsv(const std::vector<BenchRow>& rows);
 // A Markdown page: "# TITLE", the command line that made it, then one table
 // per scene (scenes in order of first appearance, rows by frame time) with
 // readable units: ms with 1 decimal, RMSE in 1/255 steps and as a number,
-// PSNR in dB, bad pixels in %. Pareto rows are marked. When PLOTFILE is not
+// PSNR in dB, bad pixels in %. Pareto rows are marked. Under a scene with
+// an Embree row: the rays it cast and the ratio of the baseline GLSL frame
+// (and of the fastest GLSL row at full size and depth) to Embree's time. When PLOTFILE is not
 // empty the page shows that picture (a path relative to the page).
 std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& title,
                           const std::string& commandLine, const std::string& plotFile = "");

@@ -79,7 +79,11 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows) {
 }
 
 std::string benchSettingName(const BenchRow& r) {
+    const std::string size = " " + std::to_string(r.width) + "x" + std::to_string(r.height) + " d" +
+                             std::to_string(r.depth);
+    if (r.engine == "embree") return "embree-cast" + (r.lever.empty() ? "" : "+" + r.lever) + size;
     std::vector<std::string> on;
+    if (!r.lever.empty()) on.push_back(r.lever);
     if (!r.bvh) on.push_back("linear");  // the BVH is the default
     if (r.specialized) on.push_back("spec");
     if (r.numerics != "robust") on.push_back(r.numerics);
@@ -89,8 +93,7 @@ std::string benchSettingName(const BenchRow& r) {
     std::string name;
     for (const std::string& s : on) name += (name.empty() ? "" : "+") + s;
     if (name.empty()) name = "baseline";
-    return name + " " + std::to_string(r.width) + "x" + std::to_string(r.height) + " d" +
-           std::to_string(r.depth);
+    return name + size;
 }
 
 // ---------------------------------------------------------------- all three

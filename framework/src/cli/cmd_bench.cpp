@@ -13,11 +13,19 @@
 // compared with the reference at full quality (depth 8, shadows on, full
 // size): a lower resolution is scaled up first, so it shows as error.
 // Compile times are measured with Mesa's shader cache off.
+//
+// Next to the GLSL rows, each scene gets an "embree-cast" row: Embree casting
+// exactly the rays of that frame (exported from the reference tracer, which
+// casts the same rays as the GLSL up to float rounding) on the same cores,
+// timed in the same rounds - the limit the GLSL frame is measured against
+// (bench.md's "x Embree" column). Without Embree in the build the row says
+// so and everything else is measured as before.
 #include "bench_report.h"
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
 #include "debug_views.h"
+#include "embree_caster.h"
 #include "error.h"
 #include "frame_error.h"
 #include "frame_timer.h"
@@ -26,11 +34,14 @@
 #include "reference_tracer.h"
 #include "stage_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
+#include <thread>
 
 namespace raylab {
 
@@ -41,6 +52,22 @@ struct BenchSetting {
     bool shadows;
     ShaderVariant variant;
 };
+
+// The weight-cut lever's threshold: rays that could change no channel of
+// the pixel by more than one 8-bit step per unit of the colour they gather.
+constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
+
+// "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
+// "old-path" for the tracer before the levers (RAYLAB_OLD_PATH).
+std::string leverName(const ShaderVariant& v) {
+    std::string name = v.oldPath ? "old-path" : "";
+    if (v.weightCut > 0.0) {
+        char text[32];
+        std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
+        name += (name.empty() ? "" : "+") + std::string(text);
+    }
+    return name;
+}
 
 std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int height) {
     ShaderVariant base;  // BVH on, generic shader, robust numerics
@@ -74,6 +101,16 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     grid.push_back(with([](BenchSetting& s) { s.variant.naiveNumerics = true; }));
     if (!scene.tori.empty())
         grid.push_back(with([](BenchSetting& s) { s.variant.torusClosedForm = true; }));
+    // Speed levers against the Embree row: the old path (a glow ray for
+    // every pixel, shadow rays toward lights behind the surface), the weight
+    // cut alone, then with the specialised shader (the fastest choice that
+    // keeps the picture).
+    grid.push_back(with([](BenchSetting& s) { s.variant.oldPath = true; }));
+    grid.push_back(with([](BenchSetting& s) { s.variant.weightCut = kWeightCut; }));
+    grid.push_back(with([](BenchSetting& s) {
+        s.variant.specialized = true;
+        s.variant.weightCut = kWeightCut;
+    }));
     return grid;
 }
 
@@ -109,6 +146,7 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
     row.bvh = s.variant.bvh;
     row.specialized = s.variant.specialized;
     row.numerics = s.variant.naiveNumerics ? "naive" : "robust";
+    row.lever = leverName(s.variant);
     row.frameMs = timing.medianMs;
     row.compileMs = std::max(0.0, m.firstMs - timing.medianMs);
     row.rmse = err.rmse;
@@ -133,10 +171,13 @@ BenchRow rowFor(const std::string& sceneName, const Scene& scene, const StageInf
 
 // Builds every setting's program (timing compile + first frame), then times
 // FRAMES frames of each in turns - setting 1, 2, ..., N, 1, 2, ... - so that
-// a slow spell of a shared machine hits every setting alike.
+// a slow spell of a shared machine hits every setting alike. Each of
+// ALSOTIMED (Embree's casts, which return their own time) takes its turn
+// after the settings in every round; their times go to ALSOMS.
 std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
                                  const StageSources& sources, const std::vector<BenchSetting>& grid,
-                                 int frames) {
+                                 int frames, const std::vector<std::function<double()>>& alsoTimed,
+                                 std::vector<std::vector<double>>& alsoMs) {
     const Camera camera = cameraFor(std::nullopt, scene);
     std::vector<Measured> all;
     for (const BenchSetting& s : grid) {
@@ -156,11 +197,67 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
     for (Measured& m : all)
         timeOneFrame(
             [&] { m.renderer->render(camera, 0.0f, m.settings); });  // warm-up round, not counted
-    for (int round = 0; round < frames; ++round)
+    for (const auto& f : alsoTimed) f();
+    alsoMs.assign(alsoTimed.size(), {});
+    for (int round = 0; round < frames; ++round) {
         for (Measured& m : all)
             m.frameMs.push_back(
                 timeOneFrame([&] { m.renderer->render(camera, 0.0f, m.settings); }));
+        for (std::size_t i = 0; i < alsoTimed.size(); ++i) alsoMs[i].push_back(alsoTimed[i]());
+    }
     return all;
+}
+
+// The rays of one GLSL frame for Embree to cast: the baseline's, or those of
+// a lever that casts fewer (LEVER as in leverName).
+struct RaySet {
+    std::string lever;
+    std::vector<TracedRay> rays;
+};
+
+// An embree-cast row (bench_report.h): the median of its timed casts; NaN
+// times when Embree is not built.
+BenchRow embreeRow(const std::string& sceneName, Size size, const RenderSettings& full,
+                   const RaySet& set, const EmbreeCaster* embree,
+                   const std::vector<double>& castMs) {
+    const std::vector<TracedRay>& rays = set.rays;
+    BenchRow row;
+    row.scene = sceneName;
+    row.width = size.width;
+    row.height = size.height;
+    row.depth = full.maxDepth;
+    row.shadows = full.shadows;
+    row.bvh = true;
+    row.engine = "embree";
+    row.lever = set.lever;
+    row.rays = rays.size();
+    row.frameMs = embree ? summarizeFrameTimes(castMs).medianMs : NAN;
+    row.compileMs = embree ? embree->buildMs() : NAN;
+    row.rmse = row.psnr = row.maxErr = row.badPxShare = row.depthErrP99Ulp = NAN;
+    return row;
+}
+
+// Prints ROWS' last row (the Embree one) with the rays it cast and the
+// scene's baseline GLSL frame as a multiple of it.
+void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedRay>& rays,
+                    int threads) {
+    const BenchRow& e = rows.back();
+    if (std::isnan(e.frameMs)) {
+        std::printf("  %-5s %-28s Embree not built (install libembree-dev, run cmake again)\n",
+                    e.scene.c_str(), benchSettingName(e).c_str());
+        return;
+    }
+    const TracedRayCounts c = countRays(rays);
+    std::printf("  %-5s %-28s frame %8.1f ms  (%zu rays: %zu primary, %zu reflected/refracted, "
+                "%zu glow, %zu shadow; %d threads; BVH build %.1f ms)\n",
+                e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
+                c.secondary, c.glow, c.shadow, threads, e.compileMs);
+    for (const BenchRow& r : rows)
+        if (r.scene == e.scene && r.engine == "glsl" && r.lever == e.lever &&
+            r.numerics == "robust" && r.torusSolver == "robust" && r.width == e.width &&
+            r.height == e.height && r.depth == e.depth && r.shadows)
+            std::printf("  %-5s %-28s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
+                        benchSettingName(e).c_str(), r.frameMs / e.frameMs);
 }
 
 }  // namespace
@@ -203,12 +300,41 @@ int cmdBench(const BenchOptions& options) {
         auto start = std::chrono::steady_clock::now();
         RenderSettings full;  // the reference: depth 8, shadows on
         ReferenceTracer tracer(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
+        const Camera camera = cameraFor(std::nullopt, scene);
+        const std::vector<BenchSetting> grid =
+            gridFor(scene, options.quick, size.width, size.height);
+        // Every ray of the frame, for Embree: the baseline's, and those of
+        // the weight-cut frame when the grid has it (it casts fewer).
+        std::vector<RaySet> raySets(1);
         std::vector<ReferenceSample> reference =
-            tracer.traceImage(cameraFor(std::nullopt, scene), size.width, size.height);
+            tracer.traceImage(camera, size.width, size.height, &raySets[0].rays);
         std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
                     size.width, size.height, msSince(start) / 1000.0);
-        std::vector<Measured> measured = measureAll(
-            scene, stage, sources, gridFor(scene, options.quick, size.width, size.height), frames);
+        for (const BenchSetting& s : grid)
+            if (s.variant.weightCut > 0.0 && !s.variant.oldPath &&
+                std::none_of(raySets.begin(), raySets.end(),
+                             [&](const RaySet& r) { return r.lever == leverName(s.variant); })) {
+                ReferenceTracer cut(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
+                cut.setWeightCut(s.variant.weightCut);
+                raySets.push_back({leverName(s.variant), {}});
+                cut.traceImage(camera, size.width, size.height, &raySets.back().rays);
+            }
+        std::unique_ptr<EmbreeCaster> embree;
+        const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+        std::vector<std::function<double()>> casts;
+        if (embreeBuilt()) {
+            embree = std::make_unique<EmbreeCaster>(scene);
+            EmbreeAnswers answers;
+            embree->cast(raySets[0].rays, threads, &answers);
+            std::printf("  %s: Embree %s agrees with the reference on %.3f%% of the frame's rays\n",
+                        name.c_str(), embreeVersion().c_str(),
+                        100.0 * agreementWithReference(raySets[0].rays, answers));
+            for (const RaySet& set : raySets)
+                casts.push_back([&] { return embree->cast(set.rays, threads); });
+        }
+        std::vector<std::vector<double>> castMs;
+        std::vector<Measured> measured =
+            measureAll(scene, stage, sources, grid, frames, casts, castMs);
         for (const Measured& m : measured) {
             BenchRow row =
                 rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
@@ -218,6 +344,11 @@ int cmdBench(const BenchOptions& options) {
                         row.rmse, row.psnr, 100.0 * row.badPxShare, row.depthErrP99Ulp);
             std::fflush(stdout);
             rows.push_back(row);
+        }
+        for (std::size_t i = 0; i < raySets.size(); ++i) {
+            rows.push_back(embreeRow(name, size, full, raySets[i], embree.get(),
+                                     embree ? castMs[i] : std::vector<double>{}));
+            printEmbreeRow(rows, raySets[i].rays, threads);
         }
     }
     const std::string title = "RayLab bench (" + glDescription() + ")";

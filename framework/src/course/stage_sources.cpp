@@ -49,6 +49,9 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_NAIVE_NUMERICS", true, "naive-numerics"},        // textbook methods (tests/numerics)
     {"TORUS_SOLVER_CLOSED_FORM", true, "torus-closed-form"},  // the seed's torus solver
     {"RAYLAB_BVH", false, "linear-search"},                   // objects found by a plain loop
+    {"RAYLAB_WEIGHT_CUT", true, "weight-cut"},  // rays too faint to count not traced (bench)
+    {"RAYLAB_OLD_PATH", true, "old-path"},  // before the bench's levers: the glow ray and shadow
+                                            // rays of lights behind a surface always cast
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {

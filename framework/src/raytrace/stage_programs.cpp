@@ -2,6 +2,8 @@
 
 #include "scene_baking.h"
 
+#include <cstdio>
+
 namespace raylab {
 
 std::vector<std::string> ShaderVariant::defines() const {
@@ -10,6 +12,12 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (naiveNumerics) d.push_back("RAYLAB_NAIVE_NUMERICS");
     if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
     if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
+    if (oldPath) d.push_back("RAYLAB_OLD_PATH");
+    if (weightCut > 0.0) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.9g", weightCut);
+        d.push_back(std::string("RAYLAB_WEIGHT_CUT ") + value);
+    }
     return d;
 }
 

@@ -22,6 +22,18 @@ struct ShaderVariant {
     bool naiveNumerics = false;    // RAYLAB_NAIVE_NUMERICS: the textbook methods of tests/numerics
     bool torusClosedForm = false;  // TORUS_SOLVER_CLOSED_FORM: the seed's torus solver
     bool todoMarks = false;        // RAYLAB_TODO_MARK: also mark the pixels that reach a TODO stub
+    // RAYLAB_WEIGHT_CUT (when > 0): reflected and refracted rays whose
+    // weight is below this in every channel are not traced (a bench lever:
+    // framework/shaders/variants/weight-cut).
+    double weightCut = 0.0;
+    // The cut `raylab demo` uses: one 8-bit step. Measured with `raylab
+    // bench` on pro: RMSE against the reference unchanged to 2 digits
+    // (0.00035 -> 0.00036), frame time -20% (docs/bench/README.md).
+    static constexpr double kDemoWeightCut = 1.0 / 255.0;
+    // RAYLAB_OLD_PATH: the tracer before the bench's levers: glow.glsl casts
+    // a blocker ray for every pixel in front of the sun, halo or not, and
+    // light_visibility.glsl a shadow ray toward lights behind the surface.
+    bool oldPath = false;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -34,6 +34,24 @@ glm::dvec3 offsetRayOrigin(const glm::dvec3& p, const glm::dvec3& side) {
             offsetCoordinate(p.z, side.z)};
 }
 
+std::vector<TracedRay>*& tracedRays() {
+    thread_local std::vector<TracedRay>* rays = nullptr;
+    return rays;
+}
+
+void recordRay(TracedRay::Kind kind, const DRay& ray, double tMax, const Hit& hit, bool found) {
+    std::vector<TracedRay>* rays = tracedRays();
+    if (!rays) return;
+    TracedRay r;
+    r.origin = glm::vec3(ray.origin);
+    r.dir = glm::vec3(ray.dir);
+    r.tMax = float(tMax);
+    r.kind = kind;
+    r.hitId = found ? hit.id : -1;
+    r.hitT = found ? float(hit.t) : 0.0f;
+    rays->push_back(r);
+}
+
 std::string fmt(double v) { return significant(v, 4); }
 
 std::string fmt(const glm::dvec3& v) {

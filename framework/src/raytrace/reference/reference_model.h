@@ -7,6 +7,7 @@
 // reference_model.cpp (the scene converted, offsets, log text).
 // Not for use outside this folder.
 #include "reference_intersect.h"
+#include "reference_rays.h"
 #include "reference_shading.h"
 #include "reference_textures.h"
 #include "reference_tracer.h"
@@ -107,6 +108,15 @@ struct PendingRay {
 // Where a secondary ray starts (see reference_model.cpp).
 glm::dvec3 offsetRayOrigin(const glm::dvec3& p, const glm::dvec3& side);
 
+// While traceImage exports a frame's rays (reference_rays.h): where this
+// thread appends the rays it casts; null otherwise. Per thread, because the
+// tracer's functions are const and run on every core at once.
+std::vector<TracedRay>*& tracedRays();
+
+// Appends RAY (cast by this thread) with the answer HIT to tracedRays(),
+// when a frame's rays are being exported.
+void recordRay(TracedRay::Kind kind, const DRay& ray, double tMax, const Hit& hit, bool found);
+
 // Log text: 4 significant digits.
 std::string fmt(double v);
 std::string fmt(const glm::dvec3& v);
@@ -122,6 +132,7 @@ struct ReferenceTracer::Impl {
     SceneTransform frame;
     ReferenceFeatures features;
     RenderSettings settings;
+    double weightCut = 0.0;  // setWeightCut
     glm::dvec3 background{0.0};
     std::vector<DMaterial> materials;
     std::vector<DLight> lights;
@@ -172,6 +183,7 @@ struct ReferenceTracer::Impl {
     // the background as sky).
     glm::dvec3 trace(const DRay& primary, ReferenceSample& sample, std::ostream* log) const;
     ReferenceSample traceSample(const DRay& ray, std::ostream* log) const;
+    bool weightCounts(const glm::dvec3& weight) const;
 };
 
 }  // namespace raylab

@@ -139,10 +139,18 @@ bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dve
     const glm::dvec3 toLight = lights[std::size_t(light)].position - point;
     const double distanceToLight = glm::length(toLight);
     const glm::dvec3 dir = toLight / distanceToLight;
+    // 08's light_visibility.glsl casts no ray toward a light behind the
+    // surface (it adds nothing either way); so the ray export holds only the
+    // shadow rays the GPU casts. The picture is the same in every stage.
+    if (glm::dot(normal, dir) <= 0.0) {
+        if (log) *log << "  light " << light << ": behind the surface, no shadow ray\n";
+        return false;
+    }
     const glm::dvec3 side = glm::dot(normal, dir) >= 0.0 ? normal : -normal;
     Hit blocker;
-    const bool blocked = findClosest(DRay{offsetRayOrigin(point, side), dir}, blocker) &&
-                         blocker.t < distanceToLight;
+    const DRay shadowRay{offsetRayOrigin(point, side), dir};
+    const bool blocked = findClosest(shadowRay, blocker) && blocker.t < distanceToLight;
+    recordRay(TracedRay::Kind::Shadow, shadowRay, distanceToLight, blocker, blocked);
     if (blocked && log)
         *log << "  light " << light << ": in shadow, blocked by " << objectName(blocker.id)
              << " at t=" << fmt(blocker.t) << " (light at " << fmt(distanceToLight) << ")\n";
@@ -194,20 +202,23 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
         if (log) *log << "glow: none (the sun is behind the eye)\n";
         return glm::dvec3(0.0);
     }
-    Hit blocker;
-    if (findClosest(ray, blocker) && blocker.id != obj::kSphere * obj::kStride + glow.sphere &&
-        blocker.t < tc) {
-        if (log)
-            *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)
-                 << " is in front of the sun)\n";
-        return glm::dvec3(0.0);
-    }
+    // The halo test before the blocker ray, as glow.glsl (the same answer;
+    // the ray export then holds only the glow rays the GPU casts).
     const double dist = glm::length(ray.origin + tc * ray.dir - c);
     const double x = std::max(dist - r, 0.0) / (double(glow.size) * r);
     if (x >= 1.0) {
         if (log)
             *log << "glow: none (passes " << fmt(dist)
                  << " from the sun's centre, beyond the halo)\n";
+        return glm::dvec3(0.0);
+    }
+    Hit blocker;
+    const bool found = findClosest(ray, blocker);
+    recordRay(TracedRay::Kind::Glow, ray, 1e30, blocker, found);
+    if (found && blocker.id != obj::kSphere * obj::kStride + glow.sphere && blocker.t < tc) {
+        if (log)
+            *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)
+                 << " is in front of the sun)\n";
         return glm::dvec3(0.0);
     }
     const double fade = 1.0 - x;

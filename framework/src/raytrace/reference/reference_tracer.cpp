@@ -106,7 +106,10 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
         if (log)
             *log << "ray " << current.number << " (depth " << current.depth << ", weight "
                  << weightText(current.weight) << "): ";
-        if (!findClosest(current.ray, hit)) {
+        const bool found = findClosest(current.ray, hit);
+        recordRay(n == 0 ? TracedRay::Kind::Primary : TracedRay::Kind::Secondary, current.ray, 1e30,
+                  hit, found);
+        if (!found) {
             const glm::dvec3 skyRgb = skyColor(current.ray.dir);
             color += current.weight * skyRgb;
             if (log)
@@ -157,7 +160,10 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                         const double cosOutside =
                             entering ? cosIncident : -glm::dot(refracted, normal);
                         if (log) what = "  glass: F=" + fmt(F) + " (cos " + fmt(cosOutside) + ")";
-                        if (stackSize < kMaxDepth) {
+                        const glm::dvec3 refractedWeight = current.weight * (1.0 - F);
+                        if (!weightCounts(refractedWeight)) {
+                            if (log) what += ", refracted ray too faint: not traced";
+                        } else if (stackSize < kMaxDepth) {
                             stack[stackSize] = PendingRay{
                                 DRay{offsetRayOrigin(point, -normal), refracted},
                                 current.weight * (1.0 - F), current.depth + 1, ++numbered};
@@ -177,13 +183,17 @@ glm::dvec3 ReferenceTracer::Impl::trace(const DRay& primary, ReferenceSample& sa
                     }
                     reflectance = glm::dvec3(F);
                 }
-                current = PendingRay{
-                    DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)},
-                    current.weight * reflectance, current.depth + 1, ++numbered};
-                pathGoesOn = true;
-                if (log)
-                    *log << what << ", follows reflected ray " << current.number << " (weight "
-                         << weightText(current.weight) << ")\n";
+                if (!weightCounts(current.weight * reflectance)) {
+                    if (log) *log << what << ", reflected ray too faint: the path ends\n";
+                } else {
+                    current = PendingRay{
+                        DRay{offsetRayOrigin(point, normal), reflect(current.ray.dir, normal)},
+                        current.weight * reflectance, current.depth + 1, ++numbered};
+                    pathGoesOn = true;
+                    if (log)
+                        *log << what << ", follows reflected ray " << current.number << " (weight "
+                             << weightText(current.weight) << ")\n";
+                }
             } else if (log) {
                 if (m.type == Material::Type::Plastic) *log << "  plastic: the path ends\n";
                 else if (!features.recursion)
@@ -217,6 +227,13 @@ ReferenceSample ReferenceTracer::Impl::traceSample(const DRay& ray, std::ostream
 }
 ReferenceTracer::~ReferenceTracer() = default;
 
+void ReferenceTracer::setWeightCut(double cut) { impl_->weightCut = cut; }
+
+// The weight-cut variant's test (its weightCounts()); always true without a cut.
+bool ReferenceTracer::Impl::weightCounts(const glm::dvec3& weight) const {
+    return weightCut <= 0.0 || std::max({weight.r, weight.g, weight.b}) >= double(float(weightCut));
+}
+
 ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log) const {
     // Into the frame the scene is traced in, and the depth back out of it.
     const SceneTransform& frame = impl_->frame;
@@ -227,20 +244,32 @@ ReferenceSample ReferenceTracer::trace(const PrimaryRay& ray, std::ostream* log)
 }
 
 std::vector<ReferenceSample> ReferenceTracer::traceImage(const Camera& camera, int width,
-                                                         int height) const {
+                                                         int height,
+                                                         std::vector<TracedRay>* rays) const {
     std::vector<ReferenceSample> samples(std::size_t(width) * std::size_t(height));
+    // One list per row, joined in row order at the end: the export does not
+    // depend on which thread traced which row.
+    std::vector<std::vector<TracedRay>> rowRays(rays ? std::size_t(height) : 0);
     std::atomic<int> nextRow{0};
     auto work = [&] {
-        for (int y = nextRow++; y < height; y = nextRow++)
+        for (int y = nextRow++; y < height; y = nextRow++) {
+            tracedRays() = rays ? &rowRays[std::size_t(y)] : nullptr;
             for (int x = 0; x < width; ++x)
                 samples[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
                     trace(primaryRay(camera, width, height, x, y));
+        }
+        tracedRays() = nullptr;
     };
     const int threads = std::max(1, std::min(int(std::thread::hardware_concurrency()), height));
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
+    if (rays) {
+        rays->clear();
+        for (const std::vector<TracedRay>& row : rowRays)
+            rays->insert(rays->end(), row.begin(), row.end());
+    }
     return samples;
 }
 

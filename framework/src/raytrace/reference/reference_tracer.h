@@ -11,6 +11,7 @@
 // reference frame agree within the graders' tolerance.
 #include "camera.h"
 #include "image.h"
+#include "reference_rays.h"
 #include "render_settings.h"
 #include "scene.h"
 #include "stage_catalog.h"
@@ -70,13 +71,23 @@ public:
                     const RenderSettings& settings);
     ~ReferenceTracer();
 
+    // The weight-cut variant of trace.glsl (framework/shaders/variants/
+    // weight-cut): reflected and refracted rays whose weight is below CUT
+    // in every channel are not traced. 0 (the default): every ray is.
+    // For `raylab bench`, to export the rays such a frame casts.
+    void setWeightCut(double cut);
+
     // Traces one primary ray. With LOG, writes the path bounce by bounce:
     // object hit, t, normal, material, Fresnel weights, what is pushed and
     // popped, the colour added.
     ReferenceSample trace(const PrimaryRay& ray, std::ostream* log = nullptr) const;
 
-    // Every pixel, row-major, row 0 at the top. Uses every core.
-    std::vector<ReferenceSample> traceImage(const Camera& camera, int width, int height) const;
+    // Every pixel, row-major, row 0 at the top. Uses every core. With RAYS,
+    // also every ray the frame casts (primary, reflected, refracted, glow
+    // and shadow rays, each with the reference's answer), in pixel order,
+    // each pixel's rays in the order the tracer casts them.
+    std::vector<ReferenceSample> traceImage(const Camera& camera, int width, int height,
+                                            std::vector<TracedRay>* rays = nullptr) const;
 
 private:
     struct Impl;

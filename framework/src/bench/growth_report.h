@@ -28,10 +28,11 @@ std::string growthSeriesName(const GrowthRow& row);
 // (RFC 4180, CRLF; NaN as an empty field).
 std::string growthCsv(const std::vector<GrowthRow>& rows);
 
-// How much the frame time of SERIES (BVH) grows from the row with the
-// fewest objects at or above FROM to the row with the most at or below TO:
-// their frame-time ratio, with the two object counts; ratio NaN when the
-// rows are not there.
+// How much the frame time of SERIES (BVH or linear) grows from the row
+// nearest FROM objects to the row nearest TO (nearest by ratio, and within a
+// factor of 2: a sphere mesh has 960 or 9800 triangles, not 1000 or 10000):
+// their frame-time ratio, with the two object counts; ratio NaN when no
+// row is that near.
 struct Growth {
     long from = 0, to = 0;
     double ratio = NAN;

@@ -9,7 +9,7 @@ import path from 'node:path';
 import { test } from 'node:test';
 
 import { parseScene, sceneImageUrls, SceneError } from '../../dist/scene/scene_reader.js';
-import { loadScene, RAYLAB, ROOT, runRaylab, sceneFiles, tempScene } from './scene_support.mjs';
+import { loadScene, meshSceneFiles, RAYLAB, ROOT, runRaylab, sceneFiles, tempScene } from './scene_support.mjs';
 
 const GOOD = `{
   "background": [0.1, 0.2, 0.3],
@@ -93,6 +93,13 @@ test('the good scene loads, with floats and sorted materials', () => {
     assert.deepEqual(s.glow, { sphere: -1, color: [1, Math.fround(0.8), 0.5], size: 4 });
     assert.equal(s.skyBox, null);
     assert.equal(parseScene(replaced(', "fov_y": 50', ''), '/a.json', 'a.json').fovYDeg, Math.fround(36.87));
+});
+
+test('a scene with OBJ meshes is refused in one line', () => {
+    const files = meshSceneFiles();
+    assert.ok(files.includes('assets/scenes/mesh.json'), files.join(', '));
+    for (const file of files)
+        assert.throws(() => loadScene(file), (e) => /meshes: OBJ meshes are drawn by the native build only/.test(e.message) && !e.message.includes('\n'), file);
 });
 
 test('every shipped scene loads', () => {

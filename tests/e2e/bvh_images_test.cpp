@@ -91,6 +91,12 @@ TEST_P(VariantViews, BvhDrawsWhatTheReferenceTracerDraws) {
 }
 
 TEST_P(VariantViews, BvhDrawsWhatTheLinearSearchDraws) {
+    // mesh-front's linear search runs into llvmpipe's loop limiter (above):
+    // 2,400 triangles per ray, and the glass mesh sends many rays per pixel.
+    // Measured: linear 1.28% of pixels off the reference, BVH 0.005% - so
+    // the BVH is compared with the reference only (the test above).
+    if (GetParam() == "mesh-front")
+        GTEST_SKIP() << "the linear search itself is cut short by llvmpipe's loop limiter here";
     const CheckView& v = view(GetParam());
     ImageDiff d = diff(render(v, ShaderVariant{}), render(v, linear()));
     std::printf("[ figure ] %s: BVH vs linear search: %.3f%% of pixels differ (max %d/255)\n",
@@ -142,7 +148,7 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
 }
 
 // A mesh leaf that skips its last triangle leaves holes in the mesh: the
-// BVH-against-linear comparison on the mesh view must see them.
+// comparison with the reference on the mesh view must see them.
 TEST(VariantViews, AMeshLeafThatSkipsATriangleIsCaught) {
     ScratchDir dir;
     fs::path stageDir = dir / "08-full";
@@ -153,8 +159,8 @@ TEST(VariantViews, AMeshLeafThatSkipsATriangleIsCaught) {
     StageSources broken = solutionSources(full());
     broken.search.front() = stageDir;
     const CheckView& v = view("mesh-front");
-    ImageDiff d = diff(render(v, ShaderVariant{}, broken), render(v, linear()));
-    std::printf("[ figure ] mesh leaf short of one triangle vs linear search: %.3f%% of pixels "
+    ImageDiff d = diff(render(v, ShaderVariant{}, broken), reference(v));
+    std::printf("[ figure ] mesh leaf short of one triangle vs the reference: %.3f%% of pixels "
                 "differ\n",
                 100.0 * d.badShare);
     EXPECT_FALSE(imagesAgree(d, CompareTolerance{})) << "holes in the mesh went unnoticed";

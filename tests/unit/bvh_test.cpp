@@ -176,19 +176,20 @@ TEST(Bvh, AHugeMeshFitsTheGlslStack) {
                 bvh.nodes.size(), bvh.depth);
 }
 
-// The depth guard itself: a million triangles in leaves of one would need
-// at least 21 levels; squeezed under a guard of kBvhMaxDepth the builder
-// must halve rather than throw. Here checked on a line of tiny triangles
-// (the worst case for an area split: every split is lopsided).
+// The depth guard itself: triangles spread evenly in log(x) from 1 to 2^56,
+// each a quarter of its distance in size (areas stay within float range).
+// An area split can only peel the few biggest off the rest (all the others
+// fall into the first of its 12 bins), so the tree would be far deeper than
+// the GLSL stack and buildBvh would throw. The builder halves by count
+// instead where the levels left run short.
 TEST(Bvh, ALopsidedMeshIsHalvedRatherThanTooDeep) {
     Mesh m;
-    m.name = "line";
-    for (int i = 0; i < 20000; ++i) {
-        // Triangles whose sizes double along the line: area splits peel one off at a time.
-        const float x = std::pow(1.001f, float(i));
+    m.name = "spread";
+    for (int i = 0; i < 2000; ++i) {
+        const float x = std::exp2(56.0f * float(i) / 2000.0f), size = 0.25f * x;
         const auto base = std::uint32_t(m.positions.size());
-        m.positions.insert(m.positions.end(), {glm::vec3(x, 0, 0), glm::vec3(x + 1e-3f, 0, 0),
-                                               glm::vec3(x, 1e-3f, 0)});
+        m.positions.insert(m.positions.end(),
+                           {glm::vec3(x, 0, 0), glm::vec3(x + size, 0, 0), glm::vec3(x, size, 0)});
         m.normals.insert(m.normals.end(), 3, glm::vec3(0, 0, 1));
         m.uvs.insert(m.uvs.end(), 3, glm::vec2(0));
         m.indices.insert(m.indices.end(), {base, base + 1, base + 2});

@@ -7,7 +7,11 @@
 //            arrays) on a jittered grid in the same box.
 // Both programs are the specialised ones (the scene compiled in), as the
 // demo draws. The linear search stops at kLinearMaxTriangles: beyond, a
-// frame takes minutes on llvmpipe and adds nothing but its slope.
+// frame takes minutes on llvmpipe and adds nothing but its slope - and
+// llvmpipe's loop limiter (65535 loop iterations per pixel, see
+// tests/e2e/bvh_images_test.cpp) would cut its frames short from about 30k
+// triangles (a primary and a shadow ray per pixel), so they would look
+// faster than they are.
 #include "bvh.h"
 #include "command.h"
 #include "commands.h"
@@ -183,7 +187,8 @@ int cmdBenchGrowth(const BenchOptions& options) {
         "of the picture) on a floor, one light; the triangle counts are the sphere's "
         "tessellations nearest below 10, 100, ... The linear search is measured up to " +
         std::to_string(kLinearMaxTriangles) +
-        " triangles (beyond, a frame takes minutes). Spheres: a jittered grid in the same box, "
+        " triangles (beyond, a frame takes minutes, and llvmpipe's loop limiter, 65535 "
+        "iterations per pixel, would cut it short). Spheres: a jittered grid in the same box, "
         "up to stage 08's limit of 128 (spheres are uniform arrays). Build: `buildBvh` on the "
         "CPU, once.";
     writeGrowthFiles(rows, options.outDir, "RayLab growth (" + glDescription() + ")",

@@ -254,7 +254,7 @@ Command benchCommand() {
                 cmd.add_flag("--growth", bench->growth,
                              "frame and BVH build time against object count (mesh triangles, "
                              "spheres), BVH against linear search (growth.csv, growth.md, "
-                             "growth.png; default size 160x120, 3 frames)");
+                             "growth.png; default size 160x120, 5 frames)");
                 cmd.add_option("--track", bench->track,
                                "raytrace (speed against error, bench.*) or fur (shells and fins "
                                "against the fur shader, fur.*)")

@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace raylab {
 
@@ -99,9 +100,17 @@ Scene sphereScene(int n) {
     return s;
 }
 
-GrowthRow measure(const StageInfo& stage, const StageSources& sources, const Scene& scene,
-                  const std::string& series, long objects, bool bvh, int width, int height,
-                  int frames) {
+// One point being measured: its renderer stays alive for the whole run, so
+// that the frames of all points can be timed in turns.
+struct Point {
+    GrowthRow row;
+    std::unique_ptr<StageRenderer> renderer;
+    Camera camera;
+    std::vector<double> frameMs;
+};
+
+Point prepare(const StageInfo& stage, const StageSources& sources, const Scene& scene,
+              const std::string& series, long objects, bool bvh, int width, int height) {
     GrowthRow row;
     row.series = series;
     row.bvh = bvh;
@@ -119,18 +128,14 @@ GrowthRow measure(const StageInfo& stage, const StageSources& sources, const Sce
     ShaderVariant variant;
     variant.bvh = bvh;
     variant.specialized = true;
-    StageRenderer renderer(stage, sources, scene, width, height, PixelFormat::Rgba32F, "", variant);
-    const Camera camera = cameraFor(std::nullopt, scene);
+    Point p{row,
+            std::make_unique<StageRenderer>(stage, sources, scene, width, height,
+                                            PixelFormat::Rgba32F, "", variant),
+            cameraFor(std::nullopt, scene),
+            {}};
     RenderSettings settings;
-    timeOneFrame([&] { renderer.render(camera, 0.0f, settings); });  // compile, warm up
-    std::vector<double> ms;
-    for (int f = 0; f < frames; ++f)
-        ms.push_back(timeOneFrame([&] { renderer.render(camera, 0.0f, settings); }));
-    row.frameMs = summarizeFrameTimes(ms).medianMs;
-    std::printf("  %-8s %8ld  %-6s frame %9.2f ms  build %8.1f ms\n", series.c_str(), objects,
-                bvh ? "BVH" : "linear", row.frameMs, bvh ? row.buildMs : 0.0);
-    std::fflush(stdout);
-    return row;
+    timeOneFrame([&] { p.renderer->render(p.camera, 0.0f, settings); });  // compile, warm up
+    return p;
 }
 
 }  // namespace
@@ -138,7 +143,7 @@ GrowthRow measure(const StageInfo& stage, const StageSources& sources, const Sce
 int cmdBenchGrowth(const BenchOptions& options) {
     if (options.outDir.empty()) throw Error("--out DIR is required");
     const Size size = parseSize(options.size.empty() ? "160x120" : options.size);
-    const int frames = options.frames > 0 ? options.frames : (options.quick ? 1 : 3);
+    const int frames = options.frames > 0 ? options.frames : (options.quick ? 1 : 5);
     if (frames > 1000) throw Error("--frames must be between 1 and 1000");
     const std::vector<long> triangles =
         options.quick ? std::vector<long>{10, 100, 1000}
@@ -159,21 +164,36 @@ int cmdBenchGrowth(const BenchOptions& options) {
                 "timed frame%s per point\n",
                 stage.id.c_str(), size.width, size.height, context->backendName().c_str(),
                 glDescription().c_str(), frames, frames == 1 ? "" : "s");
-    std::vector<GrowthRow> rows;
+    // Every point's program first, then FRAMES rounds of one frame of each
+    // point in turn: a slow spell of a shared machine hits every point alike.
+    std::vector<Point> points;
     for (long wanted : triangles) {
         const Scene scene = meshScene(wanted);
         const long n = long(meshTriangleCount(scene));
-        rows.push_back(
-            measure(stage, sources, scene, "mesh", n, true, size.width, size.height, frames));
+        points.push_back(prepare(stage, sources, scene, "mesh", n, true, size.width, size.height));
         if (n <= kLinearMaxTriangles)
-            rows.push_back(
-                measure(stage, sources, scene, "mesh", n, false, size.width, size.height, frames));
+            points.push_back(
+                prepare(stage, sources, scene, "mesh", n, false, size.width, size.height));
     }
     for (int n : spheres) {
         const Scene scene = sphereScene(n);
         for (bool bvh : {true, false})
-            rows.push_back(
-                measure(stage, sources, scene, "spheres", n, bvh, size.width, size.height, frames));
+            points.push_back(
+                prepare(stage, sources, scene, "spheres", n, bvh, size.width, size.height));
+    }
+    const RenderSettings settings;  // depth 8, shadows on
+    for (int round = 0; round < frames; ++round)
+        for (Point& p : points)
+            p.frameMs.push_back(
+                timeOneFrame([&] { p.renderer->render(p.camera, 0.0f, settings); }));
+    std::vector<GrowthRow> rows;
+    for (Point& p : points) {
+        p.row.frameMs = summarizeFrameTimes(p.frameMs).medianMs;
+        std::printf("  %-8s %8ld  %-6s frame %9.2f ms  build %8.1f ms\n", p.row.series.c_str(),
+                    p.row.objects, p.row.bvh ? "BVH" : "linear", p.row.frameMs,
+                    p.row.bvh ? p.row.buildMs : 0.0);
+        rows.push_back(p.row);
+        p.renderer.reset();
     }
     const Growth g = growthBetween(rows, "mesh", true, 1000, 100000);
     if (std::isfinite(g.ratio))
@@ -183,7 +203,8 @@ int cmdBenchGrowth(const BenchOptions& options) {
         "Stage 08's solution, specialised programs (the scene compiled in), " +
         std::to_string(size.width) + "x" + std::to_string(size.height) +
         ", depth 8, shadows on, median of " + std::to_string(frames) +
-        " frame(s) after one untimed frame. Mesh: a sphere mesh (radius 1, filling the middle "
+        " frame(s) after one untimed frame, the points' frames timed in turns (round by "
+        "round). Mesh: a sphere mesh (radius 1, filling the middle "
         "of the picture) on a floor, one light; the triangle counts are the sphere's "
         "tessellations nearest below 10, 100, ... The linear search is measured up to " +
         std::to_string(kLinearMaxTriangles) +

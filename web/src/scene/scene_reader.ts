@@ -136,7 +136,7 @@ export function parseScene(text: string, fileUrl: string, shownName: string): Sc
     // the native build draws them, the page says so rather than drawing less.
     if (doc.has('meshes'))
         r.fail('meshes', 'OBJ meshes are drawn by the native build only (build/raylab), not in the web page');
-    r.allowOnly(doc, '', ['background', 'camera', 'materials', 'lights', 'spheres', 'planes', 'discs', 'triangles', 'rectangles', 'boxes', 'tori', 'sky_box', 'glow']);
+    r.allowOnly(doc, '', ['background', 'camera', 'materials', 'lights', 'spheres', 'planes', 'discs', 'triangles', 'rectangles', 'boxes', 'tori', 'meshes', 'sky_box', 'glow']);
     scene.background = r.color(r.member(doc, 'scene', 'background'), 'background');
     const camera = readSceneCamera(r, doc);
     scene.camera = camera.pose;

@@ -3,7 +3,10 @@
 // sit in buffer textures, not uniform arrays: a mesh's count is limited by
 // memory, not by uniform slots. All meshes' triangles are one list; a hit on
 // triangle i has the id objectId(KIND_MESH, i). (Students need not change
-// this file.) Compiled only for scenes that have meshes (RAYLAB_MESHES).
+// this file.) Compiled only for scenes that have meshes (RAYLAB_MESHES);
+// other scenes get a stand-in that finds nothing, so that the BVH walk
+// (test_spheres.glsl) reads the same for every scene and its mesh loop,
+// which never runs there, compiles to nothing.
 // Outside the #ifdef: a file is included once per program, wherever it
 // first appears, so an #include inside it would vanish from other scenes.
 #include "surface.glsl"
@@ -51,5 +54,10 @@ Surface meshSurface(vec3 point, int i)
         material.diffuse *= picture;
     }
     return Surface(point, normal, material, uv, vec3(0.0));
+}
+#else
+float intersectMeshTriangle(Ray ray, int triangle)
+{
+    return NO_HIT;
 }
 #endif

@@ -7,9 +7,6 @@ Surface surfaceAt(Ray ray, Hit hit)
     vec3 point = ray.origin + hit.t * ray.dir;
     int kind = objectKind(hit.id);
     int i = objectIndex(hit.id);
-#ifdef RAYLAB_MESHES  // stage 08's OBJ meshes (framework/shaders/scene_meshes.glsl)
-    if (kind == KIND_MESH) return meshSurface(point, i);
-#endif
     vec3 normal;
     int material;
     if (kind == KIND_SPHERE) {

@@ -46,12 +46,11 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
         int count = int(bvhNodeHigh(node).w);
         bool descend = false;
         if (count != 0) {
-#ifdef RAYLAB_MESHES
+            // One of these two loops runs: count < 0 for mesh triangles.
             for (int k = 0; k < -count; ++k) {
                 int i = bvhItem(first + k);
                 keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
             }
-#endif
             for (int k = 0; k < count; ++k) {
                 int i = bvhItem(first + k);
                 keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);

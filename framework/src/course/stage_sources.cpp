@@ -49,6 +49,7 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_NAIVE_NUMERICS", true, "naive-numerics"},        // textbook methods (tests/numerics)
     {"TORUS_SOLVER_CLOSED_FORM", true, "torus-closed-form"},  // the seed's torus solver
     {"RAYLAB_BVH", false, "linear-search"},                   // objects found by a plain loop
+    {"RAYLAB_MESHES", true, "meshes"},                        // stage 08 scenes with OBJ meshes
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {

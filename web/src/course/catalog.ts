@@ -93,6 +93,7 @@ const VARIANTS: { define: string; whenDefined: boolean; folder: string }[] = [
   { define: 'RAYLAB_NAIVE_NUMERICS', whenDefined: true, folder: 'naive-numerics' },
   { define: 'TORUS_SOLVER_CLOSED_FORM', whenDefined: true, folder: 'torus-closed-form' },
   { define: 'RAYLAB_BVH', whenDefined: false, folder: 'linear-search' },
+  { define: 'RAYLAB_MESHES', whenDefined: true, folder: 'meshes' },
 ];
 
 // The search path: the web's own replacements (the BVH over 2D textures)

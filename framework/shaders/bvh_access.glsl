@@ -5,8 +5,9 @@
 // (Students need not change this file.)
 //
 // Node n: (box min, first) and (box max, count). A leaf (count > 0) holds
-// the spheres bvhItem(first) .. bvhItem(first + count - 1); an inner node
-// (count 0) has its children at nodes first and first + 1.
+// the spheres bvhItem(first) .. bvhItem(first + count - 1), a leaf with
+// count < 0 the mesh triangles bvhItem(first) .. bvhItem(first - count - 1);
+// an inner node (count 0) has its children at nodes first and first + 1.
 uniform samplerBuffer uBvhNodes;
 uniform isamplerBuffer uBvhItems;
 

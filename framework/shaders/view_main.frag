@@ -9,7 +9,7 @@
 // something and 0 where it missed:
 //   depth:  r = hit distance t along the primary ray (0 for a miss), g = object id
 //   normal: rgb = unit outward normal at the hit (0 for a miss)
-//   id:     r = the object id, kind * 1024 + index (-1 for a miss)
+//   id:     r = the object id, kind * 1048576 + index (-1 for a miss)
 //   rays:   rgb = the primary ray's direction, normalize(vsRay) (alpha 1)
 #define RAYLAB_VIEW_DEPTH 1
 #define RAYLAB_VIEW_NORMAL 2

@@ -1,9 +1,11 @@
-// The spheres along a ray, found through the BVH (see find_closest.glsl).
-// (Provided: nothing to do here.)
+// The spheres and mesh triangles along a ray, found through the BVH (see
+// find_closest.glsl). (Provided: nothing to do here.)
 // The tree's nodes and items come from bvh_access.glsl: bvhNodeLow(n) is
 // (box min, first), bvhNodeHigh(n) (box max, count). A leaf (count > 0)
-// holds the spheres bvhItem(first) .. bvhItem(first + count - 1); an inner
-// node (count 0) has its children at nodes first and first + 1.
+// holds the spheres bvhItem(first) .. bvhItem(first + count - 1), a leaf
+// with count < 0 the mesh triangles bvhItem(first) .. bvhItem(first -
+// count - 1); an inner node (count 0) has its children at nodes first and
+// first + 1.
 #include "bvh_access.glsl"
 
 const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
@@ -26,8 +28,8 @@ float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
     return enterBox(origin, invDir, bvhNodeLow(node).xyz, bvhNodeHigh(node).xyz, tMax);
 }
 
-// Walks the tree, keeping the nearest sphere hit closer than hit.t. With
-// anyHit it stops at the first sphere found (shadow rays need no more).
+// Walks the tree, keeping the nearest hit closer than hit.t. With anyHit it
+// stops at the first object found (shadow rays need no more).
 void walkBvh(Ray ray, inout Hit hit, bool anyHit)
 {
     // 1/0 would give 0 * inf = NaN in the slab test for a ray exactly on a
@@ -43,7 +45,12 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
         int first = int(bvhNodeLow(node).w);
         int count = int(bvhNodeHigh(node).w);
         bool descend = false;
-        if (count > 0) {
+        if (count != 0) {
+            // One of these two loops runs: count < 0 for mesh triangles.
+            for (int k = 0; k < -count; ++k) {
+                int i = bvhItem(first + k);
+                keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
+            }
             for (int k = 0; k < count; ++k) {
                 int i = bvhItem(first + k);
                 keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
@@ -79,8 +86,8 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
     }
 }
 
-// Keeps the nearest sphere hit closer than hit.t; with stopAtFirst it may
-// stop at the first one found.
+// Keeps the nearest sphere or mesh-triangle hit closer than hit.t; with
+// stopAtFirst it may stop at the first one found.
 void testSpheres(Ray ray, inout Hit hit, bool stopAtFirst)
 {
     walkBvh(ray, hit, stopAtFirst);

@@ -2,18 +2,22 @@
 // do here, read it if you are curious.)
 //
 // Lab 05's findClosest tests every object for every ray. That is fine for a
-// dozen objects; the pro scene has 110 spheres, and every shading point
-// sends a shadow ray per light on top. Here the spheres sit in a bounding
-// volume hierarchy (BVH), built on the CPU (framework/src/raytrace/scene/bvh.cpp): a tree
-// of boxes, each box holding its children. A ray that misses a box skips
-// every sphere inside it. The few other objects (planes, the disc, the
-// triangles, the torus) are tested one by one as in lab 05.
+// dozen objects; the pro scene has 110 spheres, a mesh from an OBJ file may
+// have a hundred thousand triangles, and every shading point sends a shadow
+// ray per light on top. Here the spheres and the meshes' triangles sit in
+// a bounding volume hierarchy (BVH), built on the CPU
+// (framework/src/raytrace/scene/bvh.cpp): a tree of boxes, each box holding
+// its children. A ray that misses a box skips every object inside it. The
+// few other objects (planes, the disc, the scene's own triangles, the
+// torus) are tested one by one as in lab 05.
 //
-// Why only spheres: a CPU renderer such as llvmpipe runs 8 pixels in
+// Why one kind per leaf: a CPU renderer such as llvmpipe runs 8 pixels in
 // lock-step and executes both sides of an `if` whenever the pixels disagree.
-// A tree holding several kinds would need an `if` on the kind at every
-// object, and every sphere test would pay for the torus's long code (tried:
-// five times slower in an earlier version). One kind per tree keeps every test short.
+// A leaf holding several kinds would need an `if` on the kind at every
+// object, and every sphere test would pay for the other kind's code (tried
+// with the torus: five times slower in an earlier version). So each leaf
+// holds spheres only or mesh triangles only, and the triangle code is
+// compiled only for scenes with meshes (RAYLAB_MESHES).
 //
 // GLSL has no recursion, so the tree is walked with a small stack of boxes
 // still to visit - the same idea as trace()'s stack of rays. The nearer
@@ -29,6 +33,7 @@ void keepNearer(inout Hit hit, float t, int kind, int index)
     if (t != NO_HIT && t < hit.t) hit = Hit(t, objectId(kind, index));
 }
 
+#include "scene_meshes.glsl"
 #include "test_spheres.glsl"
 
 

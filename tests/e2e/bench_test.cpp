@@ -143,3 +143,46 @@ TEST(Bench, FurQuickRunWritesCsvTablePlotAndTheTechniquesLimits) {
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_FALSE(fs::exists(dir / "other"));
 }
+
+// `bench --growth --quick`: the files and their rows (no speed is asserted:
+// timings belong in the report, not in a test).
+TEST(Bench, GrowthQuickRunWritesCsvTableAndPlot) {
+    ScratchDir dir;
+    CommandResult r = runRaylab("bench --growth --quick --out " + quote((dir / "out").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    for (const char* f : {"growth.csv", "growth.md", "growth.png"})
+        EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+    const auto rows = readCsv(dir / "out" / "growth.csv");
+    int meshBvh = 0, meshLinear = 0, spheres = 0;
+    for (const auto& row : rows) {
+        EXPECT_GT(num(row, "frame_ms"), 0.0);
+        if (row.at("series") == "mesh") (row.at("search") == "bvh" ? meshBvh : meshLinear)++;
+        if (row.at("series") == "spheres") ++spheres;
+        if (row.at("search") == "bvh") {
+            EXPECT_GE(num(row, "build_ms"), 0.0);
+            EXPECT_GT(num(row, "bvh_nodes"), 0.0);
+        } else {
+            EXPECT_EQ(row.at("build_ms"), "") << "the linear search builds nothing";
+        }
+    }
+    EXPECT_EQ(meshBvh, 3);
+    EXPECT_EQ(meshLinear, 3);
+    EXPECT_EQ(spheres, 4);
+    const std::string md = readFile(dir / "out" / "growth.md");
+    EXPECT_NE(md.find("## Growth of the frame time, mesh, about 1k to 100k triangles"),
+              std::string::npos);
+    EXPECT_NE(md.find("| 960 |"), std::string::npos) << md;
+}
+
+TEST(Bench, GrowthRefusesOptionsItCannotHonourAndWritesNothing) {
+    ScratchDir dir;
+    CommandResult r =
+        runRaylab("bench --growth --track fur --quick --out " + quote((dir / "out").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("--growth measures the ray tracer"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    r = runRaylab("bench --growth --scenes lite --out " + quote((dir / "out").string()));
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_NE(r.err.find("--growth makes its own scenes"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}

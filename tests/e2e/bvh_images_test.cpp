@@ -91,6 +91,12 @@ TEST_P(VariantViews, BvhDrawsWhatTheReferenceTracerDraws) {
 }
 
 TEST_P(VariantViews, BvhDrawsWhatTheLinearSearchDraws) {
+    // mesh-front's linear search runs into llvmpipe's loop limiter (above):
+    // 2,400 triangles per ray, and the glass mesh sends many rays per pixel.
+    // Measured: linear 1.28% of pixels off the reference, BVH 0.005% - so
+    // the BVH is compared with the reference only (the test above).
+    if (GetParam() == "mesh-front")
+        GTEST_SKIP() << "the linear search itself is cut short by llvmpipe's loop limiter here";
     const CheckView& v = view(GetParam());
     ImageDiff d = diff(render(v, ShaderVariant{}), render(v, linear()));
     std::printf("[ figure ] %s: BVH vs linear search: %.3f%% of pixels differ (max %d/255)\n",
@@ -128,11 +134,15 @@ TEST_P(VariantViews, WeightCutDrawsWhatTheReferenceTracerDraws) {
 }
 
 std::string testName(const ::testing::TestParamInfo<std::string>& p) {
-    return p.param == "lite-front" ? "LiteFront" : p.param == "pro-front" ? "ProFront" : "ProCube";
+    return p.param == "lite-front"  ? "LiteFront"
+           : p.param == "pro-front" ? "ProFront"
+           : p.param == "pro-cube"  ? "ProCube"
+                                    : "MeshFront";
 }
 
 INSTANTIATE_TEST_SUITE_P(Stage08, VariantViews,
-                         ::testing::Values("lite-front", "pro-front", "pro-cube"), testName);
+                         ::testing::Values("lite-front", "pro-front", "pro-cube", "mesh-front"),
+                         testName);
 
 // A traversal that forgets the farther child of every box loses objects:
 // the same comparison must see it.
@@ -146,12 +156,33 @@ TEST(VariantViews, ABrokenTraversalIsCaught) {
                                 "if (enterFar < T_FAR && size < BVH_STACK_SIZE)", "if (false)");
     StageSources broken = solutionSources(full());
     broken.search.front() = stageDir;
-    const CheckView& v = view("pro-front");
-    ImageDiff d = diff(render(v, ShaderVariant{}, broken), render(v, linear()));
-    std::printf("[ figure ] broken traversal vs linear search: %.3f%% of pixels differ\n",
+    for (const char* name : {"pro-front", "mesh-front"}) {
+        const CheckView& v = view(name);
+        ImageDiff d = diff(render(v, ShaderVariant{}, broken), render(v, linear()));
+        std::printf("[ figure ] %s: broken traversal vs linear search: %.3f%% of pixels differ\n",
+                    name, 100.0 * d.badShare);
+        EXPECT_FALSE(imagesAgree(d, CompareTolerance{}))
+            << name << ": a traversal that never visits far children went unnoticed";
+    }
+}
+
+// A mesh leaf that skips its last triangle leaves holes in the mesh: the
+// comparison with the reference on the mesh view must see them.
+TEST(VariantViews, AMeshLeafThatSkipsATriangleIsCaught) {
+    ScratchDir dir;
+    fs::path stageDir = dir / "08-full";
+    fs::create_directories(stageDir);
+    for (const auto& entry : fs::directory_iterator(projectRoot() / "solution/08-full"))
+        fs::copy(entry.path(), stageDir / entry.path().filename());
+    raylab::test::replaceInFile(stageDir / "test_spheres.glsl", "k < -count;", "k < -count - 1;");
+    StageSources broken = solutionSources(full());
+    broken.search.front() = stageDir;
+    const CheckView& v = view("mesh-front");
+    ImageDiff d = diff(render(v, ShaderVariant{}, broken), reference(v));
+    std::printf("[ figure ] mesh leaf short of one triangle vs the reference: %.3f%% of pixels "
+                "differ\n",
                 100.0 * d.badShare);
-    EXPECT_FALSE(imagesAgree(d, CompareTolerance{}))
-        << "a traversal that never visits far children went unnoticed";
+    EXPECT_FALSE(imagesAgree(d, CompareTolerance{})) << "holes in the mesh went unnoticed";
 }
 
 // The window and the demo compile every stage specialised to its scene

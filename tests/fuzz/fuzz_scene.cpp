@@ -5,7 +5,8 @@
 // checked with stat() (is_regular_file) relative to the scene's folder, never
 // opened or written, so a name such as "../../etc/passwd" or "/dev/zero" is
 // harmless. Two small texture files sit next to the scene so the success path
-// (materials with textures and normal maps, sky boxes) is reachable too.
+// (materials with textures and normal maps, sky boxes) is reachable too, and
+// a small OBJ file (quad.obj) for "meshes" (read by tinyobjloader).
 #include "error.h"
 #include "fuzz_support.h"
 #include "scene.h"
@@ -20,6 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::uint8_t png[] = {0x89, 'P', 'N', 'G'};  // contents are never read
         fuzz::writeBytes(dir / "tex.png", png, sizeof png);
         fuzz::writeBytes(dir / "normal.png", png, sizeof png);
+        const char quad[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+        fuzz::writeBytes(dir / "quad.obj", reinterpret_cast<const std::uint8_t*>(quad),
+                         sizeof quad - 1);
         return dir / "scene.json";
     }();
     fuzz::writeBytes(scene, data, size);
@@ -34,6 +38,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& x : s.discs) check(x.material);
         for (const auto& x : s.triangles) check(x.material);
         for (const auto& x : s.tori) check(x.material);
+        for (const auto& x : s.meshes) {
+            check(x.material);
+            // Every corner index must point into the mesh's vertices.
+            for (std::uint32_t i : x.mesh.indices)
+                if (i >= x.mesh.positions.size() || i >= x.mesh.normals.size() ||
+                    i >= x.mesh.uvs.size())
+                    __builtin_trap();
+        }
         for (const auto& m : s.materials)
             if (m.texture >= int(s.textures.size()) || m.normalMap >= int(s.textures.size()))
                 __builtin_trap();

@@ -2,12 +2,16 @@
 // structure, checked on the pro scene. The GPU traversal is checked by
 // tests/e2e/bvh_images_test.cpp (images equal to the linear search).
 #include "bvh.h"
+#include "mesh_shapes.h"
 #include "paths.h"
 #include "scene.h"
+#include "shader_constants.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 
 using namespace raylab;
@@ -106,4 +110,93 @@ TEST(Bvh, ASceneWithoutSpheresHasNoTree) {
     Bvh bvh = buildBvh(scene);
     EXPECT_TRUE(bvh.nodes.empty());
     EXPECT_TRUE(bvh.items.empty());
+}
+
+// Spheres and mesh triangles in one tree (stage 08 with meshes).
+namespace {
+
+Scene meshScene() { return loadScene(projectRoot() / "assets/scenes/mesh.json"); }
+
+}  // namespace
+
+TEST(Bvh, EverySphereAndMeshTriangleSitsInExactlyOneLeafOfItsKind) {
+    Scene scene = meshScene();
+    Bvh bvh = buildBvh(scene);
+    std::vector<int> spheres, triangles;
+    int mixedLeaves = 0, failures = 0;
+    walk(bvh, [&](const BvhNode& n, int) {
+        for (int k = 0; k < n.count; ++k) {
+            const int item = bvh.items.at(std::size_t(n.first + k));
+            (n.kind == shader::kMesh ? triangles : spheres).push_back(item);
+            const Aabb box = n.kind == shader::kMesh ? meshTriangleBounds(scene, item)
+                                                     : sphereBounds(scene, item);
+            if (!n.box.contains(box)) ++failures;
+        }
+        if (n.count > 0 && n.kind != shader::kMesh && n.kind != shader::kSphere) ++mixedLeaves;
+    });
+    std::sort(spheres.begin(), spheres.end());
+    std::sort(triangles.begin(), triangles.end());
+    std::vector<int> allTriangles(meshTriangleCount(scene));
+    for (std::size_t i = 0; i < allTriangles.size(); ++i) allTriangles[i] = int(i);
+    EXPECT_EQ(spheres, sphereIndices(scene));
+    EXPECT_EQ(triangles, allTriangles);
+    EXPECT_EQ(mixedLeaves, 0);
+    EXPECT_EQ(failures, 0) << "leaf boxes that do not hold their objects";
+}
+
+// The kinds' item counts add up: no item is counted under the wrong kind.
+TEST(Bvh, LeavesHoldOneKindAndTheCountsAddUp) {
+    Scene scene = meshScene();
+    Bvh bvh = buildBvh(scene);
+    std::size_t sphereItems = 0, triangleItems = 0;
+    walk(bvh, [&](const BvhNode& n, int) {
+        if (n.count == 0) return;
+        (n.kind == shader::kMesh ? triangleItems : sphereItems) += std::size_t(n.count);
+    });
+    EXPECT_EQ(sphereItems, scene.spheres.size());
+    EXPECT_EQ(triangleItems, meshTriangleCount(scene));
+    EXPECT_EQ(bvh.items.size(), sphereItems + triangleItems);
+}
+
+// Half a million triangles: the tree must still fit the GLSL stack (the
+// builder halves by count where the levels left run short).
+TEST(Bvh, AHugeMeshFitsTheGlslStack) {
+    Scene scene;
+    scene.meshes.push_back({"sphere", makeShape("sphere", 350), 0});
+    ASSERT_GT(meshTriangleCount(scene), 480000u);
+    Bvh bvh = buildBvh(scene, 2);
+    int deepest = 0;
+    walk(bvh, [&](const BvhNode& n, int depth) {
+        deepest = std::max(deepest, depth);
+        EXPECT_LE(n.count, 2);
+    });
+    EXPECT_EQ(deepest, bvh.depth);
+    EXPECT_LE(bvh.depth, kBvhMaxDepth);
+    std::printf("[ figure ] %zu triangles: %zu nodes, depth %d\n", meshTriangleCount(scene),
+                bvh.nodes.size(), bvh.depth);
+}
+
+// The depth guard itself: triangles spread evenly in log(x) from 1 to 2^56,
+// each a quarter of its distance in size (areas stay within float range).
+// An area split can only peel the few biggest off the rest (all the others
+// fall into the first of its 12 bins), so the tree would be far deeper than
+// the GLSL stack and buildBvh would throw. The builder halves by count
+// instead where the levels left run short.
+TEST(Bvh, ALopsidedMeshIsHalvedRatherThanTooDeep) {
+    Mesh m;
+    m.name = "spread";
+    for (int i = 0; i < 2000; ++i) {
+        const float x = std::exp2(56.0f * float(i) / 2000.0f), size = 0.25f * x;
+        const auto base = std::uint32_t(m.positions.size());
+        m.positions.insert(m.positions.end(),
+                           {glm::vec3(x, 0, 0), glm::vec3(x + size, 0, 0), glm::vec3(x, size, 0)});
+        m.normals.insert(m.normals.end(), 3, glm::vec3(0, 0, 1));
+        m.uvs.insert(m.uvs.end(), 3, glm::vec2(0));
+        m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
+    }
+    Scene scene;
+    scene.meshes.push_back({"line", m, 0});
+    Bvh bvh;
+    ASSERT_NO_THROW(bvh = buildBvh(scene, 1));
+    EXPECT_LE(bvh.depth, kBvhMaxDepth);
 }

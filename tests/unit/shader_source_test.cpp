@@ -164,6 +164,7 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
     EXPECT_EQ(intOf("MAX_DEPTH"), kMaxDepth);
     EXPECT_EQ(intOf("MAX_RAYS"), kMaxRays);
     EXPECT_EQ(intOf("KIND_TORUS"), kTorus);
+    EXPECT_EQ(intOf("KIND_MESH"), kMesh);
     EXPECT_EQ(intOf("OBJECT_KIND_STRIDE"), kObjectKindStride);
     // Generated lines, not the student's: errors never point into them.
     const int line =

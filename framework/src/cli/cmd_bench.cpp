@@ -263,9 +263,14 @@ void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedR
 }  // namespace
 
 int cmdBench(const BenchOptions& options) {
-    if (options.track == "fur") return cmdBenchFur(options);
-    if (options.track != "raytrace")
+    if (options.track != "raytrace" && options.track != "fur")
         throw Error("--track must be raytrace or fur (not '" + options.track + "')");
+    if (options.growth && options.track != "raytrace")
+        throw Error("--growth measures the ray tracer: leave out --track fur");
+    if (options.growth && !options.scenes.empty())
+        throw Error("--growth makes its own scenes: leave out --scenes");
+    if (options.growth) return cmdBenchGrowth(options);
+    if (options.track == "fur") return cmdBenchFur(options);
     if (options.outDir.empty()) throw Error("--out DIR is required");
     const StageInfo& stage = demoStage();
     std::vector<std::string> scenes =
@@ -377,6 +382,10 @@ Command benchCommand() {
                                "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
                 cmd.add_option("--frames", bench->frames,
                                "timed frames per setting (default 5, quick 1)");
+                cmd.add_flag("--growth", bench->growth,
+                             "frame and BVH build time against object count (mesh triangles, "
+                             "spheres), BVH against linear search (growth.csv, growth.md, "
+                             "growth.png; default size 160x120, 5 frames)");
                 cmd.add_option("--track", bench->track,
                                "raytrace (speed against error, bench.*) or fur (shells and fins "
                                "against the fur shader, fur.*)")

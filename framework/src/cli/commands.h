@@ -87,9 +87,11 @@ struct BenchOptions {
     Backend backend = Backend::Auto;
     std::string commandLine;         // for the report
     std::string track = "raytrace";  // "fur": the fur track's bench (cmd_bench_fur.cpp)
+    bool growth = false;  // frame and build time against object count (cmd_bench_growth.cpp)
 };
 int cmdBench(const BenchOptions& bench);
 int cmdBenchFur(const BenchOptions& bench);
+int cmdBenchGrowth(const BenchOptions& bench);
 
 // The command line as typed ("raylab bench --out x"), for reports: the
 // arguments main() registered with rememberProgramArguments.

@@ -26,7 +26,8 @@ std::string constantsGlsl() {
            intConst("MAX_DEPTH", kMaxDepth) + intConst("MAX_RAYS", kMaxRays) +
            intConst("KIND_SPHERE", kSphere) + intConst("KIND_PLANE", kPlane) +
            intConst("KIND_DISC", kDisc) + intConst("KIND_TRIANGLE", kTriangle) +
-           intConst("KIND_TORUS", kTorus) + intConst("OBJECT_KIND_STRIDE", kObjectKindStride);
+           intConst("KIND_TORUS", kTorus) + intConst("KIND_MESH", kMesh) +
+           intConst("OBJECT_KIND_STRIDE", kObjectKindStride);
 }
 
 }  // namespace raylab::shader

@@ -20,10 +20,15 @@ inline constexpr int kMaxDepth = 8;
 inline constexpr int kMaxRays = 1 << kMaxDepth;
 
 // A hit's object id is kind * kObjectKindStride + index (OBJECT_KIND_STRIDE,
-// KIND_*): spheres are kind 0, so a sphere's id is its index.
-inline constexpr int kObjectKindStride = 1024;
-enum ObjectKind : int { kSphere = 0, kPlane = 1, kDisc = 2, kTriangle = 3, kTorus = 4 };
-inline constexpr const char* kKindNames[] = {"sphere", "plane", "disc", "triangle", "torus"};
+// KIND_*): spheres are kind 0, so a sphere's id is its index. 2^20: a mesh
+// may have a million triangles, and every id (6 kinds) stays below 2^24, so
+// the id debug view's float channel holds it exactly.
+inline constexpr int kObjectKindStride = 1 << 20;
+// kMesh: one triangle of a scene's OBJ meshes (stage 08), all meshes' triangles
+// numbered in one list.
+enum ObjectKind : int { kSphere = 0, kPlane = 1, kDisc = 2, kTriangle = 3, kTorus = 4, kMesh = 5 };
+inline constexpr const char* kKindNames[] = {"sphere",   "plane", "disc",
+                                             "triangle", "torus", "mesh triangle"};
 
 // The GLSL declarations of the constants above, one per line.
 std::string constantsGlsl();

@@ -82,7 +82,7 @@ struct StageReader : JsonReader {
         if (!v.is_object()) fail("limits", "expected an object");
         allowOnly(v, "limits",
                   {"spheres", "materials", "lights", "planes", "discs", "triangles", "tori",
-                   "textures", "sky_box"});
+                   "mesh_triangles", "textures", "sky_box"});
         StageLimits l;
         auto c = [&](const char* key, int fallback) {
             return optional(v, "limits", key, fallback,
@@ -95,6 +95,7 @@ struct StageReader : JsonReader {
         l.discs = c("discs", l.discs);
         l.triangles = c("triangles", l.triangles);
         l.tori = c("tori", l.tori);
+        l.meshTriangles = c("mesh_triangles", l.meshTriangles);
         l.textures = c("textures", l.textures);
         l.skyBox = optional(v, "limits", "sky_box", false,
                             [&](const json& x, const std::string& k) { return flag(x, k); });

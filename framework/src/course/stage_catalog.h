@@ -48,6 +48,9 @@ struct StageLimits {
     int discs = 0;
     int triangles = 0;
     int tori = 0;
+    // Triangles of OBJ meshes: in textures (memory), so no uniform limit; 0:
+    // this stage draws no meshes, else the most the hit ids can number.
+    int meshTriangles = 0;
     int textures = 0;  // texture layers (pictures and normal maps)
     bool skyBox = false;
 };

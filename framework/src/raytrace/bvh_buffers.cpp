@@ -1,11 +1,13 @@
 #include "bvh_buffers.h"
 
+#include "shader_constants.h"
+
 #include <vector>
 
 namespace raylab {
 
-namespace {
-void fillBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data, std::size_t bytes) {
+void fillTextureBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data,
+                       std::size_t bytes) {
     glBindBuffer(GL_TEXTURE_BUFFER, buffer);
     glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
     glBindTexture(GL_TEXTURE_BUFFER, texture);
@@ -13,13 +15,14 @@ void fillBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data, 
     glBindTexture(GL_TEXTURE_BUFFER, 0);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
-}  // namespace
 
 BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
     std::vector<float> nodes;
     for (const BvhNode& n : bvh.nodes) {
         nodes.insert(nodes.end(), {n.box.lo.x, n.box.lo.y, n.box.lo.z, float(n.first)});
-        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(n.count)});
+        // A leaf of mesh triangles says so by a negative count (bvh_access.glsl).
+        const int count = n.count > 0 && n.kind == shader::kMesh ? -n.count : n.count;
+        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(count)});
     }
     std::vector<GLint> items(bvh.items.begin(), bvh.items.end());
     // An empty buffer texture is not allowed everywhere: keep one dummy entry.
@@ -27,8 +30,10 @@ BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
     if (items.empty()) items.push_back(-1);
     glGenBuffers(2, buffers_);
     glGenTextures(2, textures_);
-    fillBuffer(buffers_[0], textures_[0], GL_RGBA32F, nodes.data(), nodes.size() * sizeof(float));
-    fillBuffer(buffers_[1], textures_[1], GL_R32I, items.data(), items.size() * sizeof(GLint));
+    fillTextureBuffer(buffers_[0], textures_[0], GL_RGBA32F, nodes.data(),
+                      nodes.size() * sizeof(float));
+    fillTextureBuffer(buffers_[1], textures_[1], GL_R32I, items.data(),
+                      items.size() * sizeof(GLint));
 }
 
 BvhBuffers::~BvhBuffers() {

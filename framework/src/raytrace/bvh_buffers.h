@@ -3,13 +3,19 @@
 // with texelFetch (solution/08-full/find_closest.glsl). Buffer textures, not
 // uniform arrays: a few hundred nodes would crowd the uniform limits some
 // drivers have (1024 vec4s for a whole fragment shader on NVIDIA).
-//   uBvhNodes (RGBA32F): texel 2i = (box.lo, first), texel 2i+1 = (box.hi, count)
-//   uBvhItems (R32I):    object ids
+//   uBvhNodes (RGBA32F): texel 2i = (box.lo, first), texel 2i+1 = (box.hi, count),
+//                        count < 0 for a leaf of -count mesh triangles
+//   uBvhItems (R32I):    sphere or mesh-triangle indices
 // Needs a current GL context. (Students need not read this file.)
 #include "bvh.h"
 #include "gl.h"
 
 namespace raylab {
+
+// Fills BUFFER with BYTES of DATA and makes TEXTURE a buffer texture of
+// FORMAT over it (also used for the mesh triangles, mesh_buffers.h).
+void fillTextureBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data,
+                       std::size_t bytes);
 
 class BvhBuffers {
 public:

@@ -251,7 +251,7 @@ std::string pfmDescription(const ViewData& d) {
     case DebugView::Color: return "linear colour, unclamped";
     case DebugView::Depth: return "hit distance t, 0 for misses";
     case DebugView::Normal: return "unit outward normal xyz, 0 for misses";
-    case DebugView::Id: return "object id kind*1024+index, -1 for misses";
+    case DebugView::Id: return "object id kind*1048576+index, -1 for misses";
     case DebugView::Bounces: return "rays per pixel";
     case DebugView::Stack: return "most rays waiting on the stack";
     }

@@ -24,10 +24,11 @@ std::vector<std::string> ShaderVariant::defines() const {
 ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
     // Measured with `raylab bench` at 800x600, depth 8 (docs/bench/README.md):
     // with 10 spheres the BVH costs more than it saves, with 110
-    // it saves a fifth of the frame.
-    constexpr std::size_t kSpheresForBvh = 32;
+    // it saves a fifth of the frame. Mesh triangles count the same
+    // (docs/bench/growth.md: the BVH wins from about a hundred).
+    constexpr std::size_t kObjectsForBvh = 32;
     ShaderVariant v;
-    v.bvh = scene.spheres.size() >= kSpheresForBvh;
+    v.bvh = scene.spheres.size() + meshTriangleCount(scene) >= kObjectsForBvh;
     v.specialized = true;
     return v;
 }
@@ -42,6 +43,9 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     if (variant.specialized)
         for (const std::string& d : stage.extraDefines) defines.push_back(d);
     for (const std::string& d : variant.defines()) defines.push_back(d);
+    // The mesh code (scene_meshes.glsl) only where there are meshes: the
+    // other scenes' programs stay short.
+    if (!scene.meshes.empty()) defines.push_back("RAYLAB_MESHES");
     const std::string prelude = variant.specialized ? bakedSceneGlsl(scene) : std::string();
     const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);
     const std::string& entry = fragmentEntry.empty() ? stage.program.fragment : fragmentEntry;

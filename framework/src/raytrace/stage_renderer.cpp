@@ -29,6 +29,7 @@ void checkSceneFits(const StageInfo& stage, const Scene& scene) {
     checkFits(scene, stage, "discs", scene.discs.size(), l.discs);
     checkFits(scene, stage, "triangles", scene.triangles.size(), l.triangles);
     checkFits(scene, stage, "tori", scene.tori.size(), l.tori);
+    checkFits(scene, stage, "mesh triangles", meshTriangleCount(scene), l.meshTriangles);
     checkFits(scene, stage, "textures", scene.textures.size(), l.textures);
     if (scene.skyBox && !l.skyBox) {
         std::string adds;  // the first stage of the track that has one
@@ -44,6 +45,8 @@ constexpr int kTextureUnit = 0;
 constexpr int kSkyUnit = 1;
 constexpr int kBvhNodeUnit = 2;
 constexpr int kBvhItemUnit = 3;
+constexpr int kMeshCornerUnit = 4;
+constexpr int kMeshMaterialUnit = 5;
 
 void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
     if (!values.empty())
@@ -165,6 +168,11 @@ void StageRenderer::uploadSceneConstants() {
         bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
     glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
     glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
+    // Mesh triangles: uploaded once, for every program of a scene with meshes.
+    if (!scene_.meshes.empty() && !meshes_) meshes_ = std::make_unique<SceneMeshBuffers>(scene_);
+    glUniform1i(p.uniform("uMeshCorners"), kMeshCornerUnit);
+    glUniform1i(p.uniform("uMeshMaterials"), kMeshMaterialUnit);
+    glUniform1i(p.uniform("uMeshTriangleCount"), GLint(meshTriangleCount(scene_)));
     glUniform1i(p.uniform("uHasSky"), sky_ ? 1 : 0);
     glUniform1i(p.uniform("uGlowSphere"), scene_.glow.sphere);
     glUniform3fv(p.uniform("uGlowColor"), 1, glm::value_ptr(scene_.glow.color));
@@ -257,6 +265,7 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     if (textures_) textures_->bind(kTextureUnit);
     if (sky_) sky_->bind(kSkyUnit);
     if (bvh_) bvh_->bind(kBvhNodeUnit, kBvhItemUnit);
+    if (meshes_) meshes_->bind(kMeshCornerUnit, kMeshMaterialUnit);
     // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
     std::vector<glm::vec4> spheres;

@@ -95,6 +95,7 @@ const VARIANTS: { define: string; whenDefined: boolean; folder: string }[] = [
   { define: 'RAYLAB_BVH', whenDefined: false, folder: 'linear-search' },
   { define: 'RAYLAB_WEIGHT_CUT', whenDefined: true, folder: 'weight-cut' },
   { define: 'RAYLAB_OLD_PATH', whenDefined: true, folder: 'old-path' },
+  { define: 'RAYLAB_MESHES', whenDefined: true, folder: 'meshes' },
 ];
 
 // The search path: the web's own replacements (the BVH over 2D textures)

@@ -132,7 +132,11 @@ export function parseScene(text: string, fileUrl: string, shownName: string): Sc
     if (!isObject(doc)) r.fail('scene', 'expected an object');
     if (doc.has('mesh') || doc.has('fur'))
         r.fail('scene', 'a fur scene (it has a mesh or fur): ray-tracing stages draw ray-tracing scenes (assets/scenes/*.json)');
-    r.allowOnly(doc, '', ['background', 'camera', 'materials', 'lights', 'spheres', 'planes', 'discs', 'triangles', 'rectangles', 'boxes', 'tori', 'sky_box', 'glow']);
+    // Stage 08's OBJ meshes need buffer textures and a second file fetch:
+    // the native build draws them, the page says so rather than drawing less.
+    if (doc.has('meshes'))
+        r.fail('meshes', 'OBJ meshes are drawn by the native build only (build/raylab), not in the web page');
+    r.allowOnly(doc, '', ['background', 'camera', 'materials', 'lights', 'spheres', 'planes', 'discs', 'triangles', 'rectangles', 'boxes', 'tori', 'meshes', 'sky_box', 'glow']);
     scene.background = r.color(r.member(doc, 'scene', 'background'), 'background');
     const camera = readSceneCamera(r, doc);
     scene.camera = camera.pose;

@@ -7,8 +7,8 @@ export const T_MIN = 1e-4;
 export const T_FAR = 1e30;
 export const MAX_DEPTH = 8;
 export const MAX_RAYS = 1 << MAX_DEPTH;
-export const OBJECT_KIND_STRIDE = 1024;
-const KINDS = ['SPHERE', 'PLANE', 'DISC', 'TRIANGLE', 'TORUS'];
+export const OBJECT_KIND_STRIDE = 1 << 20;
+const KINDS = ['SPHERE', 'PLANE', 'DISC', 'TRIANGLE', 'TORUS', 'MESH'];
 
 // C's "%.9g" for the few values above, always written as a float literal.
 function floatLiteral(v: number): string {

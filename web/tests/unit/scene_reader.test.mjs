@@ -9,7 +9,7 @@ import path from 'node:path';
 import { test } from 'node:test';
 
 import { parseScene, sceneImageUrls, SceneError } from '../../dist/scene/scene_reader.js';
-import { loadScene, RAYLAB, ROOT, runRaylab, sceneFiles, tempScene } from './scene_support.mjs';
+import { loadScene, meshSceneFiles, RAYLAB, ROOT, runRaylab, sceneFiles, tempScene } from './scene_support.mjs';
 
 const GOOD = `{
   "background": [0.1, 0.2, 0.3],
@@ -34,7 +34,7 @@ const withKey = (json) => replaced('"spheres": [', `${json}, "spheres": [`);
 const ERRORS = [
     ['a missing key', replaced('"yaw": 10, ', ''), 'camera: missing "yaw"'],
     ['no spheres', '{"background": [0, 0, 0], "camera": {"position": [0, 0, 0], "yaw": 0, "pitch": 0}}', 'scene: missing "spheres"'],
-    ['a misspelt key', replaced('"spheres"', '"spherez"'), 'spherez: unknown key (known here: background, camera, materials, lights, spheres, planes, discs, triangles, rectangles, boxes, tori, sky_box, glow)'],
+    ['a misspelt key', replaced('"spheres"', '"spherez"'), 'spherez: unknown key (known here: background, camera, materials, lights, spheres, planes, discs, triangles, rectangles, boxes, tori, meshes, sky_box, glow)'],
     ['an unknown material', replaced('"material": "m"', '"material": "gold"'), 'spheres[0].material: unknown material "gold"'],
     ['a material that is no name', replaced('"material": "m"', '"material": 3'), 'spheres[0].material: expected the name of a material'],
     ['a wrong type', replaced('"center": [0, 1, 0]', '"center": [0, "1", 0]'), 'spheres[0].center[1]: expected a number'],
@@ -50,7 +50,7 @@ const ERRORS = [
     ['bad JSON', '{ "background": [0, 0, 0],\n  oops }', 'line 2, column 3: JSON syntax error (Expected double-quoted property name)'],
     ['a number beyond a double', replaced('"yaw": 10', '"yaw": 1e500'), 'JSON number out of range (larger than a double can hold)'],
     ['a number beyond 1e30', replaced('"yaw": 10', '"yaw": 1e31'), 'camera.yaw: number out of range'],
-    ['unknown keys (the first in sorted order)', withKey('"zz": 1, "aa": 2'), 'aa: unknown key (known here: background, camera, materials, lights, spheres, planes, discs, triangles, rectangles, boxes, tori, sky_box, glow)'],
+    ['unknown keys (the first in sorted order)', withKey('"zz": 1, "aa": 2'), 'aa: unknown key (known here: background, camera, materials, lights, spheres, planes, discs, triangles, rectangles, boxes, tori, meshes, sky_box, glow)'],
     ['a misspelt sphere key', replaced('"radius": 1,', '"radiuss": 1,'), 'spheres[0].radiuss: unknown key (known here: center, radius, material, color, motion)'],
     ['a glow on no sphere', withKey('"glow": {"sphere": 2}'), 'glow.sphere: expected the index of a sphere (0..1)'],
     ['a glow index that is no integer', withKey('"glow": {"sphere": 0.5}'), 'glow.sphere: expected the index of a sphere (0..1)'],
@@ -93,6 +93,13 @@ test('the good scene loads, with floats and sorted materials', () => {
     assert.deepEqual(s.glow, { sphere: -1, color: [1, Math.fround(0.8), 0.5], size: 4 });
     assert.equal(s.skyBox, null);
     assert.equal(parseScene(replaced(', "fov_y": 50', ''), '/a.json', 'a.json').fovYDeg, Math.fround(36.87));
+});
+
+test('a scene with OBJ meshes is refused in one line', () => {
+    const files = meshSceneFiles();
+    assert.ok(files.includes('assets/scenes/mesh.json'), files.join(', '));
+    for (const file of files)
+        assert.throws(() => loadScene(file), (e) => /meshes: OBJ meshes are drawn by the native build only/.test(e.message) && !e.message.includes('\n'), file);
 });
 
 test('every shipped scene loads', () => {

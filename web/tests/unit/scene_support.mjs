@@ -12,12 +12,26 @@ import { parseScene } from '../../dist/scene/scene_reader.js';
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 export const RAYLAB = process.env.RAYLAB ?? path.join(ROOT, 'build/raylab');
 
-// assets/scenes/*.json (not fur/), as the native build shows them.
+// assets/scenes/*.json (not fur/), as the native build shows them; without
+// the scenes with OBJ meshes ("meshes"), which the page refuses (scene_reader.ts;
+// meshSceneFiles lists them).
 export function sceneFiles() {
+    return allSceneFiles().filter((f) => !hasMeshes(f));
+}
+
+export function meshSceneFiles() {
+    return allSceneFiles().filter(hasMeshes);
+}
+
+function allSceneFiles() {
     return readdirSync(path.join(ROOT, 'assets/scenes'))
         .filter((f) => f.endsWith('.json'))
         .sort()
         .map((f) => `assets/scenes/${f}`);
+}
+
+function hasMeshes(rel) {
+    return 'meshes' in JSON.parse(readFileSync(path.join(ROOT, rel), 'utf8'));
 }
 
 // A scene file under the project root, read as the page reads it: its URL

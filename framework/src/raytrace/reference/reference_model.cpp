@@ -108,6 +108,18 @@ ReferenceTracer::ReferenceTracer(const Scene& input, const ReferenceFeatures& fe
             {glm::dvec3(t.center), double(t.majorRadius), double(t.minorRadius),
              reference::torusToLocal(glm::normalize(glm::dvec3(t.axisAt(timeSeconds)))),
              t.material});
+    for (const MeshObject& o : scene.meshes)
+        for (std::size_t t = 0; t < o.mesh.triangleCount(); ++t) {
+            DMeshTriangle d{};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::uint32_t v = o.mesh.indices[3 * t + k];
+                d.p[k] = glm::dvec3(o.mesh.positions[v]);
+                d.n[k] = glm::dvec3(o.mesh.normals[v]);
+                d.uv[k] = glm::dvec2(o.mesh.uvs[v]);
+            }
+            d.material = o.material;
+            m.meshTriangles.push_back(d);
+        }
     m.glow = scene.glow;
     m.glowColor = glm::dvec3(scene.glow.color);
     if (features.textures) {

@@ -31,6 +31,7 @@ namespace refmodel {
 // An object's id is kind * stride + index (shader_constants.h).
 namespace obj {
 using shader::kDisc;
+using shader::kMesh;
 using shader::kPlane;
 using shader::kSphere;
 using shader::kTorus;
@@ -71,6 +72,13 @@ struct DDisc {
 };
 struct DTriangle {
     glm::dvec3 a, b, c;
+    int material;
+};
+// One triangle of a mesh (scene_meshes.glsl): corners, their normals and
+// texture coordinates.
+struct DMeshTriangle {
+    glm::dvec3 p[3], n[3];
+    glm::dvec2 uv[3];
     int material;
 };
 struct DTorus {
@@ -141,6 +149,7 @@ struct ReferenceTracer::Impl {
     std::vector<DDisc> discs;
     std::vector<DTriangle> triangles;
     std::vector<DTorus> tori;
+    std::vector<DMeshTriangle> meshTriangles;  // every mesh's, in one list (KIND_MESH)
     std::unique_ptr<reference::TextureLayers> textures;
     std::unique_ptr<reference::SkyCube> sky;
     Glow glow;
@@ -161,6 +170,8 @@ struct ReferenceTracer::Impl {
     void addSurfaceDetail(Surface& s, int kind, int index, std::ostream* log) const;
     // 05 surface_at.glsl (04's for spheres is the same without detail).
     Surface surfaceAt(const DRay& ray, const Hit& hit, std::ostream* log) const;
+    // scene_meshes.glsl meshSurface (stage 08 scenes with meshes).
+    Surface meshSurface(const glm::dvec3& point, int i, std::ostream* log) const;
     // 03 light_visibility.glsl (02: always visible).
     bool lightVisible(const glm::dvec3& point, const glm::dvec3& normal, int light,
                       std::ostream* log) const;

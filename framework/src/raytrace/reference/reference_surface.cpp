@@ -24,6 +24,7 @@ int ReferenceTracer::Impl::materialOf(int id) const {
     case obj::kPlane: return planes[std::size_t(i)].material;
     case obj::kDisc: return discs[std::size_t(i)].material;
     case obj::kTriangle: return triangles[std::size_t(i)].material;
+    case obj::kMesh: return meshTriangles[std::size_t(i)].material;
     default: return tori[std::size_t(i)].material;
     }
 }
@@ -57,6 +58,13 @@ bool ReferenceTracer::Impl::findClosest(const DRay& ray, Hit& hit) const {
             obj::kTriangle, int(i));
     for (std::size_t i = 0; i < tori.size(); ++i)
         keepNearer(hit, intersectTorus(ray, tori[i]), obj::kTorus, int(i));
+    // Mesh triangles one by one: slow for big meshes, but with nothing
+    // (no tree) that could itself be wrong.
+    for (std::size_t i = 0; i < meshTriangles.size(); ++i) {
+        const DMeshTriangle& m = meshTriangles[i];
+        keepNearer(hit, reference::intersectTriangle(ray, m.p[0], m.p[1], m.p[2]), obj::kMesh,
+                   int(i));
+    }
     return hit.id >= 0;
 }
 
@@ -108,11 +116,40 @@ void ReferenceTracer::Impl::addSurfaceDetail(Surface& s, int kind, int index,
     applyNormalMap(s, log);
 }
 
+// scene_meshes.glsl: normals and texture coordinates mixed by the point's
+// barycentric weights; a texture, no normal map.
+Surface ReferenceTracer::Impl::meshSurface(const glm::dvec3& point, int i,
+                                           std::ostream* log) const {
+    const DMeshTriangle& m = meshTriangles[std::size_t(i)];
+    const glm::dvec3 face = glm::cross(m.p[1] - m.p[0], m.p[2] - m.p[0]);
+    const double area2 = glm::dot(face, face);
+    const glm::dvec3 w = glm::dvec3(glm::dot(glm::cross(m.p[2] - m.p[1], point - m.p[1]), face),
+                                    glm::dot(glm::cross(m.p[0] - m.p[2], point - m.p[2]), face),
+                                    glm::dot(glm::cross(m.p[1] - m.p[0], point - m.p[0]), face)) /
+                         area2;
+    Surface s;
+    s.point = point;
+    const glm::dvec3 n = w.x * m.n[0] + w.y * m.n[1] + w.z * m.n[2];
+    s.normal = glm::dot(n, n) > 1e-12 ? glm::normalize(n) : glm::normalize(face);
+    s.uv = w.x * m.uv[0] + w.y * m.uv[1] + w.z * m.uv[2];
+    s.material = materials[std::size_t(m.material)];
+    if (s.material.texture >= 0) {
+        const glm::dvec3 picture = textureLayer(s.material.texture, s.uv);
+        s.material.ambient *= picture;
+        s.material.diffuse *= picture;
+        if (log)
+            *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", "
+                 << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
+    }
+    return s;
+}
+
 // 05 surface_at.glsl (04's for spheres is the same without detail).
 Surface ReferenceTracer::Impl::surfaceAt(const DRay& ray, const Hit& hit, std::ostream* log) const {
     Surface s;
     s.point = ray.origin + hit.t * ray.dir;
     const int kind = hit.id / obj::kStride, i = hit.id - kind * obj::kStride;
+    if (kind == obj::kMesh) return meshSurface(s.point, i, log);
     if (kind == obj::kSphere) {
         s.normal = glm::normalize(s.point - spheres[std::size_t(i)].center);
     } else if (kind == obj::kPlane) {

@@ -1,6 +1,7 @@
 #include "bvh.h"
 
 #include "error.h"
+#include "shader_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,16 +19,42 @@ bool Aabb::contains(const Aabb& b) const {
     return glm::all(glm::lessThanEqual(lo, b.lo)) && glm::all(glm::greaterThanEqual(hi, b.hi));
 }
 
-Aabb sphereBounds(const Scene& scene, int index) {
-    const Sphere& s = scene.spheres.at(std::size_t(index));
-    glm::vec3 sweep = glm::abs(s.motion.axis) * std::fabs(s.motion.amplitude);
-    Aabb box{s.center - glm::vec3(s.radius) - sweep, s.center + glm::vec3(s.radius) + sweep};
-    // Pad a little: float rounding in the GLSL slab test must never cut off
-    // a surface that touches the box.
+namespace {
+
+// Pad a little: float rounding in the GLSL slab test must never cut off a
+// surface that touches the box.
+Aabb padded(Aabb box) {
     glm::vec3 pad = 1e-4f * (glm::abs(box.lo) + glm::abs(box.hi)) + glm::vec3(1e-5f);
     box.lo -= pad;
     box.hi += pad;
     return box;
+}
+
+}  // namespace
+
+Aabb sphereBounds(const Scene& scene, int index) {
+    const Sphere& s = scene.spheres.at(std::size_t(index));
+    glm::vec3 sweep = glm::abs(s.motion.axis) * std::fabs(s.motion.amplitude);
+    return padded({s.center - glm::vec3(s.radius) - sweep, s.center + glm::vec3(s.radius) + sweep});
+}
+
+std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index) {
+    std::size_t i = std::size_t(index);
+    for (const MeshObject& m : scene.meshes) {
+        if (i < m.mesh.triangleCount()) {
+            const auto& p = m.mesh.positions;
+            const auto& k = m.mesh.indices;
+            return {p[k[3 * i]], p[k[3 * i + 1]], p[k[3 * i + 2]]};
+        }
+        i -= m.mesh.triangleCount();
+    }
+    throw Error("mesh triangle " + std::to_string(index) + " does not exist");
+}
+
+Aabb meshTriangleBounds(const Scene& scene, int index) {
+    Aabb box;
+    for (glm::vec3 p : meshTriangleCorners(scene, index)) box.grow(p);
+    return padded(box);
 }
 
 namespace {
@@ -36,7 +63,9 @@ struct Builder {
     const int maxLeaf;
     std::vector<Aabb> boxes;  // per item
     std::vector<glm::vec3> centres;
-    std::vector<int> order;  // item indices, partitioned in place
+    std::vector<int> kinds;    // per item: KIND_SPHERE or KIND_MESH
+    std::vector<int> indices;  // per item: index in its kind's list
+    std::vector<int> order;    // item numbers, partitioned in place
     std::vector<BvhNode> nodes;
     int depth = 0;
 
@@ -58,8 +87,18 @@ struct Builder {
     // Binned SAH split of items [begin, end): partitions them and returns the
     // split position, or -1 when keeping them in one leaf is cheaper (and
     // allowed).
-    int split(int begin, int end, const Aabb& box) {
+    int split(int begin, int end, const Aabb& box, int level) {
         const int n = end - begin;
+        // Both kinds here: spheres to one side, triangles to the other
+        // (leaves hold one kind, see bvh.h).
+        const int firstKind = kinds[std::size_t(order[std::size_t(begin)])];
+        auto sameKind = [&](int item) { return kinds[std::size_t(item)] == firstKind; };
+        auto byKind = std::partition(order.begin() + begin, order.begin() + end, sameKind);
+        if (byKind != order.begin() + end) return int(byKind - order.begin());
+        // Too few levels left for an area split that might be lopsided: halve.
+        const double leaves = std::ceil(double(n) / double(maxLeaf));
+        if (n > maxLeaf && std::log2(leaves) + 1.0 >= double(kBvhMaxDepth - level))
+            return halve(begin, end);
         Aabb centreBox;
         for (int i = begin; i < end; ++i)
             centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
@@ -105,6 +144,23 @@ struct Builder {
         return int(mid - order.begin());
     }
 
+    // Splits [begin, end) at its middle along the widest axis of the centres.
+    int halve(int begin, int end) {
+        Aabb centreBox;
+        for (int i = begin; i < end; ++i)
+            centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
+        glm::vec3 e = centreBox.hi - centreBox.lo;
+        int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+        int mid = begin + (end - begin) / 2;
+        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                         [&](int a, int b) {
+                             float ca = centres[std::size_t(a)][axis];
+                             float cb = centres[std::size_t(b)][axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
+        return mid;
+    }
+
     void build(int nodeIndex, int begin, int end, int level) {
         depth = std::max(depth, level);
         if (level > kBvhMaxDepth)
@@ -112,10 +168,11 @@ struct Builder {
                         " levels: degenerate scene?");
         Aabb box = boundsOf(begin, end);
         nodes[std::size_t(nodeIndex)].box = box;
-        int mid = end - begin <= 1 ? -1 : split(begin, end, box);
+        int mid = end - begin <= 1 ? -1 : split(begin, end, box, level);
         if (mid < 0) {
             nodes[std::size_t(nodeIndex)].first = begin;
             nodes[std::size_t(nodeIndex)].count = end - begin;
+            nodes[std::size_t(nodeIndex)].kind = kinds[std::size_t(order[std::size_t(begin)])];
             return;
         }
         int left = int(nodes.size());
@@ -132,17 +189,30 @@ struct Builder {
 
 Bvh buildBvh(const Scene& scene, int maxLeaf) {
     Bvh bvh;
-    if (scene.spheres.empty()) return bvh;
-    Builder b{std::max(1, maxLeaf), {}, {}, {}, {}};
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        b.boxes.push_back(sphereBounds(scene, int(i)));
-        b.centres.push_back(b.boxes.back().centre());
-        b.order.push_back(int(i));
-    }
+    Builder b{std::max(1, maxLeaf), {}, {}, {}, {}, {}, {}};
+    auto add = [&](int kind, int index, const Aabb& box) {
+        b.boxes.push_back(box);
+        b.centres.push_back(box.centre());
+        b.kinds.push_back(kind);
+        b.indices.push_back(index);
+        b.order.push_back(int(b.order.size()));
+    };
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        add(shader::kSphere, int(i), sphereBounds(scene, int(i)));
+    // Corner by corner, without meshTriangleBounds' search through the meshes.
+    int triangle = 0;
+    for (const MeshObject& m : scene.meshes)
+        for (std::size_t t = 0; t < m.mesh.triangleCount(); ++t) {
+            Aabb box;
+            for (int k = 0; k < 3; ++k)
+                box.grow(m.mesh.positions[m.mesh.indices[3 * t + std::size_t(k)]]);
+            add(shader::kMesh, triangle++, padded(box));
+        }
+    if (b.order.empty()) return bvh;
     b.nodes.emplace_back();
     b.build(0, 0, int(b.order.size()), 1);
     bvh.nodes = std::move(b.nodes);
-    bvh.items = b.order;
+    for (int item : b.order) bvh.items.push_back(b.indices[std::size_t(item)]);
     bvh.depth = b.depth;
     return bvh;
 }

@@ -1,17 +1,20 @@
 #pragma once
-// A bounding volume hierarchy over a scene's spheres, built on the CPU once
-// per scene and traversed in GLSL by solution/08-full/find_closest.glsl.
+// A bounding volume hierarchy over a scene's spheres and mesh triangles,
+// built on the CPU once per scene and traversed in GLSL by
+// solution/08-full/test_spheres.glsl.
 //
 // Why: with a linear search every ray tests every object - 110 spheres, 3
 // shadow rays per hit and up to 8 bounces make the pro scene slow. A BVH lets
 // a ray skip whole groups of spheres whose box it misses.
 //
-// Why spheres only: llvmpipe runs 8 pixels in lock-step and executes both
-// sides of a divergent `if`; a tree of mixed kinds needs an `if` on the kind
-// at every object, so every sphere test would also run the torus's long code
-// (measured on a discarded first version, pro at 400x300: 2157 ms a frame
-// against 453 ms with the torus taken out of the tree). The few other
-// objects stay in plain loops.
+// Why one kind per leaf: llvmpipe runs 8 pixels in lock-step and executes
+// both sides of a divergent `if`; a leaf of mixed kinds needs an `if` on the
+// kind at every object, so every sphere test would also run the other kind's
+// code (measured on a discarded first version with the torus in the tree,
+// pro at 400x300: 2157 ms a frame against 453 ms with it taken out). So a
+// node whose items are of both kinds is split by kind first, and the `if`
+// is paid once per leaf. The torus (long code) and the few planes, discs
+// and hand-written triangles stay in plain loops.
 //
 // Moving spheres: a sphere's box covers its whole bob (centre +- amplitude
 // along the motion axis), so one hierarchy is valid at every time and never
@@ -20,6 +23,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <vector>
 
 namespace raylab {
@@ -43,27 +47,39 @@ struct Aabb {
 // A node is a leaf when count > 0: it holds items[first .. first + count).
 // An inner node has count == 0 and its two children at nodes[first] and
 // nodes[first + 1] (siblings are stored next to each other).
+// A leaf's items are all of one kind: KIND_SPHERE or KIND_MESH
+// (shader_constants.h); its items are indices into that kind's list.
 struct BvhNode {
     Aabb box;
     int first = 0;
     int count = 0;
+    int kind = 0;  // leaves only
 };
 
 struct Bvh {
     std::vector<BvhNode> nodes;  // nodes[0] is the root (absent when there are no items)
-    std::vector<int> items;      // sphere indices
+    std::vector<int> items;      // sphere or mesh-triangle indices (the leaf says which)
     int depth = 0;               // longest root-to-leaf path, in nodes
 };
 
 // The box of sphere INDEX over all times (see above), a little padded.
 Aabb sphereBounds(const Scene& scene, int index);
 
-// Builds the hierarchy of SCENE's spheres with the surface area heuristic
-// (binned), at most MAXLEAF spheres per leaf. Deterministic for a given scene.
+// The box of mesh triangle INDEX (all meshes' triangles in one list), a little padded.
+Aabb meshTriangleBounds(const Scene& scene, int index);
+
+// The corners of mesh triangle INDEX, counter-clockwise from the front.
+std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index);
+
+// Builds the hierarchy of SCENE's spheres and mesh triangles with the
+// surface area heuristic (binned), at most MAXLEAF items per leaf, one kind
+// per leaf. Deterministic for a given scene.
 Bvh buildBvh(const Scene& scene, int maxLeaf = 2);
 
-// Longest path any traversal stack has to hold: the GLSL stack size must be
-// at least this (checked when the scene is loaded).
+// Longest path any traversal stack has to hold: the GLSL stack size
+// (BVH_STACK_SIZE) must be at least this. Where the levels left would not
+// hold the items even if halved at every level, the builder halves them by
+// count instead of by area, so any scene of fewer than 2^31 leaves fits.
 inline constexpr int kBvhMaxDepth = 32;
 
 }  // namespace raylab

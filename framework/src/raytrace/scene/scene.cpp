@@ -123,7 +123,7 @@ Scene loadScene(const std::filesystem::path& file) {
                         "scenes (assets/scenes/*.json)");
     r.allowOnly(doc, "",
                 {"background", "camera", "materials", "lights", "spheres", "planes", "discs",
-                 "triangles", "rectangles", "boxes", "tori", "sky_box", "glow"});
+                 "triangles", "rectangles", "boxes", "tori", "meshes", "sky_box", "glow"});
     scene.background = r.color(r.member(doc, "scene", "background"), "background");
     const SceneCamera camera = readSceneCamera(r, doc);
     scene.camera = camera.pose;

@@ -4,6 +4,7 @@
 // triangles (also as rectangles and boxes) and tori; stage 06 textures and a
 // sky box. The format is documented in assets/scenes/README.md.
 #include "camera.h"
+#include "mesh.h"
 
 #include <array>
 #include <filesystem>
@@ -86,6 +87,17 @@ struct Torus {
     glm::vec3 axisAt(float t) const;
 };
 
+// A triangle mesh from an OBJ file (stage 08), placed in the world: its
+// positions scaled by `scale` and moved by `translate` when read, so `mesh`
+// is in world coordinates (normals unchanged: the scale is uniform). Its
+// vertex normals and texture coordinates are interpolated across each
+// triangle; one material for the whole mesh.
+struct MeshObject {
+    std::filesystem::path file;
+    Mesh mesh;
+    int material = 0;
+};
+
 // A halo drawn around a sphere (the "sun"), key G.
 struct Glow {
     int sphere = -1;  // -1: none
@@ -105,6 +117,7 @@ struct Scene {
     std::vector<Disc> discs;
     std::vector<Triangle> triangles;
     std::vector<Torus> tori;
+    std::vector<MeshObject> meshes;
     std::vector<std::filesystem::path> textures;  // image files, one texture layer each
     std::optional<std::array<std::filesystem::path, 6>> skyBox;  // faces +x, -x, +y, -y, +z, -z
     Glow glow;
@@ -117,5 +130,9 @@ struct Scene {
 // A sphere gives either "material" (a name from "materials") or "color" (a
 // flat colour: a material of its own with that diffuse colour).
 Scene loadScene(const std::filesystem::path& file);
+
+// The triangles of all meshes together (KIND_MESH indices run through the
+// meshes in order).
+std::size_t meshTriangleCount(const Scene& scene);
 
 }  // namespace raylab

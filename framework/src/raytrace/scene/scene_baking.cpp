@@ -126,6 +126,10 @@ std::string bakedSceneGlsl(const Scene& scene) {
     g += floats("uTorusMinor", gather(scene.tori, [](const Torus& t) { return t.minorRadius; }));
     g += ints("uTorusMaterial", gather(scene.tori, [](const Torus& t) { return t.material; }));
 
+    // Only for scenes with meshes: the others' programs stay as they were
+    // (the web build bakes the same text and has no meshes).
+    if (!scene.meshes.empty()) g += constInt("uMeshTriangleCount", int(meshTriangleCount(scene)));
+
     g += constInt("uHasSky", scene.skyBox ? 1 : 0);
     g += constInt("uGlowSphere", scene.glow.sphere);
     g += "const vec3 uGlowColor = " + vec3Literal(scene.glow.color) + ";\n";

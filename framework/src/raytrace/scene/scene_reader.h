@@ -20,4 +20,11 @@ struct SceneReader : JsonReader {
 // made of triangles) and tori. Materials must already be read.
 void readShapes(const SceneReader& r, const json& doc, Scene& scene);
 
+// An object's "material" (a name from "materials") or "color" (a flat
+// colour: a material of its own). Returns the index into scene.materials.
+int materialOf(const SceneReader& r, const json& obj, const std::string& where, Scene& scene);
+
+// "meshes": OBJ files placed in the world (scene_meshes.cpp).
+void readMeshes(const SceneReader& r, const json& doc, Scene& scene);
+
 }  // namespace raylab

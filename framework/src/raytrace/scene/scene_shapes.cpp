@@ -9,12 +9,6 @@
 
 namespace raylab {
 
-namespace {
-
-std::string item(const char* list, std::size_t i) {
-    return std::string(list) + "[" + std::to_string(i) + "]";
-}
-
 // "material": a name from "materials", or "color": a flat colour (a material
 // of its own with that diffuse colour).
 int materialOf(const SceneReader& r, const json& obj, const std::string& where, Scene& scene) {
@@ -33,6 +27,12 @@ int materialOf(const SceneReader& r, const json& obj, const std::string& where, 
     flat.diffuse = r.color(r.member(obj, where, "color"), where + ".color");
     scene.materials.push_back(flat);
     return int(scene.materials.size()) - 1;
+}
+
+namespace {
+
+std::string item(const char* list, std::size_t i) {
+    return std::string(list) + "[" + std::to_string(i) + "]";
 }
 
 void readSpheres(const SceneReader& r, const json& doc, Scene& scene) {
@@ -238,6 +238,7 @@ void readShapes(const SceneReader& r, const json& doc, Scene& scene) {
     readRectangles(r, doc, scene);
     readBoxes(r, doc, scene);
     readTori(r, doc, scene);
+    readMeshes(r, doc, scene);
     checkTexturesFit(r, scene);
 }
 

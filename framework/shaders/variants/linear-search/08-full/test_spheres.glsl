@@ -7,4 +7,8 @@ void testSpheres(Ray ray, inout Hit hit, bool stopAtFirst)
 {
     for (int i = 0; i < uSphereCount && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+#ifdef RAYLAB_MESHES
+    for (int i = 0; i < uMeshTriangleCount && !(stopAtFirst && hit.id >= 0); ++i)
+        keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
+#endif
 }

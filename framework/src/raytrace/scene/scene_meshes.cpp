@@ -1,0 +1,58 @@
+// The scene's triangle meshes ("meshes": OBJ files, stage 08), read by the
+// same OBJ loader as the fur track (fur/mesh/obj_mesh.h).
+#include "scene_reader.h"
+
+#include "error.h"
+#include "obj_mesh.h"
+#include "shader_constants.h"
+
+namespace raylab {
+
+namespace {
+
+// "scale": one positive number (uniform, so the normals stay as they are).
+float scaleOf(const SceneReader& r, const json& m, const std::string& where) {
+    return m.contains("scale") ? r.positive(m["scale"], where + ".scale") : 1.0f;
+}
+
+}  // namespace
+
+void readMeshes(const SceneReader& r, const json& doc, Scene& scene) {
+    const json& meshes = r.optionalList(doc, "meshes");
+    std::size_t triangles = 0;
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        const std::string where = "meshes[" + std::to_string(i) + "]";
+        const json& m = meshes[i];
+        r.allowOnly(m, where, {"file", "translate", "scale", "material", "color"});
+        MeshObject object;
+        object.file = r.existingFile(r.member(m, where, "file"), where + ".file");
+        const glm::vec3 translate = m.contains("translate")
+                                        ? r.vec3(m["translate"], where + ".translate")
+                                        : glm::vec3(0.0f);
+        const float scale = scaleOf(r, m, where);
+        object.material = materialOf(r, m, where, scene);
+        try {
+            object.mesh = loadObjMesh(object.file);
+        } catch (const Error& e) { r.fail(where + ".file", e.what()); }
+        for (glm::vec3& p : object.mesh.positions) p = p * scale + translate;
+        triangles += object.mesh.triangleCount();
+        // Hit ids number a kind's objects below OBJECT_KIND_STRIDE.
+        if (triangles >= std::size_t(shader::kObjectKindStride))
+            r.fail(where, "the meshes have " + std::to_string(triangles) + " triangles; at most " +
+                              std::to_string(shader::kObjectKindStride - 1) + " fit");
+        const Material& material = scene.materials[std::size_t(object.material)];
+        if (material.normalMap >= 0)
+            r.fail(where + ".material",
+                   "material \"" + material.name +
+                       "\" has a normal map, but only spheres take normal maps");
+        scene.meshes.push_back(std::move(object));
+    }
+}
+
+std::size_t meshTriangleCount(const Scene& scene) {
+    std::size_t n = 0;
+    for (const MeshObject& m : scene.meshes) n += m.mesh.triangleCount();
+    return n;
+}
+
+}  // namespace raylab

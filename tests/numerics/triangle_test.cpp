@@ -36,7 +36,7 @@ namespace {
 
 using Tri = std::array<vec3, 3>;
 
-struct Mesh {
+struct TriangleSoup {
     std::string name;
     std::vector<Tri> triangles;
     std::vector<dvec3> eyes;
@@ -46,8 +46,8 @@ using VertexKey = std::array<float, 3>;
 VertexKey key(vec3 v) { return {v.x, v.y, v.z}; }
 dvec3 toD(vec3 v) { return dvec3(v); }
 
-Mesh heightField() {
-    Mesh m;
+TriangleSoup heightField() {
+    TriangleSoup m;
     m.name = "height field";
     constexpr int n = 16;
     auto corner = [](int i, int j) {
@@ -74,18 +74,18 @@ Mesh heightField() {
 
 // The mirror: lite.json's triangles (its rectangle); the cube: the last 12
 // triangles of pro.json (its box; the rectangle comes first).
-Mesh mirror() {
+TriangleSoup mirror() {
     Scene lite = loadScene(projectRoot() / "assets" / "scenes" / "lite.json");
-    Mesh m;
+    TriangleSoup m;
     m.name = "mirror";
     for (const Triangle& t : lite.triangles) m.triangles.push_back(t.vertices);
     m.eyes = {{0.0, 3.0, 9.5}, {-5.0, 1.8, -7.0}, {1.0, 1.0, 2.0}, {40.0, 20.0, 80.0}};
     return m;
 }
 
-Mesh glassCube() {
+TriangleSoup glassCube() {
     Scene pro = loadScene(projectRoot() / "assets" / "scenes" / "pro.json");
-    Mesh m;
+    TriangleSoup m;
     m.name = "glass cube";
     for (std::size_t i = pro.triangles.size() - 12; i < pro.triangles.size(); ++i)
         m.triangles.push_back(pro.triangles[i].vertices);
@@ -129,7 +129,7 @@ AimedRay aim(dvec3 eye, dvec3 target, std::vector<int> around, bool atCorner) {
     return r;
 }
 
-std::vector<AimedRay> aimedRays(const Mesh& mesh) {
+std::vector<AimedRay> aimedRays(const TriangleSoup& mesh) {
     // Edges (corner pair, smaller key first) -> the triangles that have them.
     std::map<std::pair<VertexKey, VertexKey>, std::vector<int>> edges;
     std::map<VertexKey, std::vector<int>> corners;
@@ -182,7 +182,7 @@ std::vector<AimedRay> aimedRays(const Mesh& mesh) {
 // (at the right distance), rays at points just outside each edge (1e-3 of
 // the way from the opposite corner to the edge's middle, beyond it) must
 // miss it. Seen from each eye that is not almost in the triangle's plane.
-std::vector<AimedRay> plainRays(const Mesh& mesh, std::vector<bool>* outside) {
+std::vector<AimedRay> plainRays(const TriangleSoup& mesh, std::vector<bool>* outside) {
     std::vector<AimedRay> rays;
     for (const dvec3& eye : mesh.eyes)
         for (int i = 0; i < int(mesh.triangles.size()); ++i) {
@@ -210,7 +210,7 @@ struct Figures {
     int plainRays = 0, plainWrong = 0;  // centroid missed or a point outside hit
 };
 
-std::vector<glm::vec4> runTriangles(const Mesh& mesh, const std::vector<AimedRay>& rays,
+std::vector<glm::vec4> runTriangles(const TriangleSoup& mesh, const std::vector<AimedRay>& rays,
                                     bool naive) {
     FunctionSpec spec;
     spec.name = "intersectTriangle";
@@ -230,7 +230,7 @@ std::vector<glm::vec4> runTriangles(const Mesh& mesh, const std::vector<AimedRay
     return runSolution(spec, "08-full", defines);
 }
 
-Figures measure(const Mesh& mesh, const std::vector<AimedRay>& rays, bool naive) {
+Figures measure(const TriangleSoup& mesh, const std::vector<AimedRay>& rays, bool naive) {
     const std::vector<glm::vec4> got = runTriangles(mesh, rays, naive);
     Figures f;
     std::vector<bool> outside;
@@ -276,7 +276,7 @@ void print(const std::string& mesh, const char* method, const Figures& f) {
 TEST(TriangleNumerics, WatertightTestHasNoCracksAndMollerTrumboreHas) {
     ensureGlContext();
     int naiveCracks = 0;
-    for (const Mesh& mesh : {heightField(), mirror(), glassCube()}) {
+    for (const TriangleSoup& mesh : {heightField(), mirror(), glassCube()}) {
         SCOPED_TRACE(mesh.name);
         const std::vector<AimedRay> rays = aimedRays(mesh);
         const Figures robust = measure(mesh, rays, false);

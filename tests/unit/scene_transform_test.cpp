@@ -42,6 +42,19 @@ TEST(SceneTransform, MovesEveryLengthAndPosition) {
     EXPECT_EQ(b.fovYDeg, a.fovYDeg);
 }
 
+TEST(SceneTransform, MovesMeshCornersAndKeepsTheirNormals) {
+    const Scene a = loadScene(projectRoot() / "assets/scenes/mesh.json");
+    ASSERT_FALSE(a.meshes.empty());
+    const Scene b = transformScene(a, SceneTransform{4.0, glm::dvec3(8.0, -16.0, 32.0)});
+    const Mesh& m = a.meshes.back().mesh;
+    const Mesh& n = b.meshes.back().mesh;
+    ASSERT_EQ(n.positions.size(), m.positions.size());
+    for (std::size_t i = 0; i < m.positions.size(); i += 97) {
+        EXPECT_EQ(n.positions[i], m.positions[i] * 4.0f + glm::vec3(8.0f, -16.0f, 32.0f));
+        EXPECT_EQ(n.normals[i], m.normals[i]);
+    }
+}
+
 TEST(SceneTransform, PlanesKeepTheirTextureMapping) {
     Scene a;
     a.planes.push_back(Plane{{1.0f, 2.0f, 3.0f}, {0.0f, 1.0f, 0.0f}, 2.0f, 0});

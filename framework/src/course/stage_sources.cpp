@@ -52,7 +52,7 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_WEIGHT_CUT", true, "weight-cut"},  // rays too faint to count not traced (bench)
     {"RAYLAB_OLD_PATH", true, "old-path"},  // before the bench's levers: the glow ray and shadow
                                             // rays of lights behind a surface always cast
-    {"RAYLAB_MESHES", true, "meshes"},                        // stage 08 scenes with OBJ meshes
+    {"RAYLAB_MESHES", true, "meshes"},      // stage 08 scenes with OBJ meshes
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {

@@ -39,6 +39,10 @@ Scene transformScene(const Scene& scene, const SceneTransform& t) {
         tor.majorRadius = t.length(tor.majorRadius);
         tor.minorRadius = t.length(tor.minorRadius);
     }
+    // Mesh corners are held in scene coordinates (placed when read); a
+    // uniform scale leaves their normals as they are.
+    for (MeshObject& m : out.meshes)
+        for (glm::vec3& v : m.mesh.positions) v = t.point(v);
     return out;
 }
 
@@ -66,6 +70,8 @@ Box sceneBox(const Scene& scene) {
     for (const Triangle& t : scene.triangles)
         for (const glm::vec3& v : t.vertices) b.add(v);
     for (const Torus& t : scene.tori) b.add(t.center, double(t.majorRadius) + t.minorRadius);
+    for (const MeshObject& m : scene.meshes)
+        for (const glm::vec3& v : m.mesh.positions) b.add(v);
     return b;
 }
 

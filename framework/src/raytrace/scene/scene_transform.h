@@ -27,7 +27,7 @@ struct SceneTransform {
 // SCENE with every position and length transformed: camera, sphere centres
 // and radii, motion amplitudes, plane points and tile sizes (so textures map
 // the same), disc centres and radii, triangle corners, torus centres and
-// radii, lights. Directions, angles, colours and the glow (measured in sphere
+// radii, mesh corners, lights. Directions, angles, colours and the glow (measured in sphere
 // radii) stay as they are.
 Scene transformScene(const Scene& scene, const SceneTransform& t);
 CameraPose transformPose(const CameraPose& pose, const SceneTransform& t);

@@ -41,6 +41,11 @@ Surface meshSurface(vec3 point, int i)
     // Weights from the areas of the sub-triangles opposite each corner.
     vec3 face = cross(p1.xyz - p0.xyz, p2.xyz - p0.xyz);
     float area2 = dot(face, face);
+    // The hit point back onto the triangle's plane before secondary rays
+    // leave it, as surfaceAt does for the other kinds (from a far eye it
+    // carries the eye's rounding).
+    vec3 unitFace = face * inversesqrt(area2);
+    point -= unitFace * dot(unitFace, point - p0.xyz);
     vec3 w = vec3(dot(cross(p2.xyz - p1.xyz, point - p1.xyz), face), dot(cross(p0.xyz - p2.xyz, point - p2.xyz), face),
                   dot(cross(p1.xyz - p0.xyz, point - p0.xyz), face)) / area2;
     vec3 normal = w.x * n0.xyz + w.y * n1.xyz + w.z * n2.xyz;

@@ -1,7 +1,8 @@
-// Does light `light` reach `point`? Lab 03's answer, with one change for
+// Does light `light` reach `point`? Lab 03's answer, with two changes for
 // speed: the shadow ray asks findBlocker (find_closest.glsl), which may stop
 // at the first object between the point and the light, instead of searching
-// for the nearest one. (Provided.)
+// for the nearest one; and a light behind the surface gets no shadow ray at
+// all. (Provided.)
 //   point  - a surface point (a hit found by findClosest)
 //   normal - unit surface normal at the point (facing the eye)
 // uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
@@ -18,6 +19,6 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     // A light behind the surface adds nothing (blinn_phong.glsl: lambert 0,
     // no specular), so it needs no shadow ray: a third of pro's.
     if (dot(normal, dir) <= 0.0) return false;
-    vec3 side = dot(normal, dir) >= 0.0 ? normal : -normal;  // the side the light is on
-    return !findBlocker(Ray(offsetRayOrigin(point, side), dir), distanceToLight);
+    // So the light is on the normal's side: the ray leaves from there.
+    return !findBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight);
 }

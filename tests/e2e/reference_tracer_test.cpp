@@ -187,7 +187,7 @@ TEST(ReferenceTracer, PrimaryHitDepthNormalAndIdAreAnalytic) {
     EXPECT_NEAR(glm::length(s.normal - point), 0.0, 1e-12);
     EXPECT_EQ(s.rays, 1);  // plastic: no secondary rays
 
-    // Down onto the floor: plane 0 has id 1 * 1024 + 0, normal +y, t = 1 / sin(angle).
+    // Down onto the floor: plane 0 has id 1 * 2^20 + 0, normal +y, t = 1 / sin(angle).
     PrimaryRay down{{0.0, 0.0, 5.0}, glm::normalize(glm::dvec3(0.0, -1.0, 1.0))};
     s = tracer.trace(down);
     EXPECT_EQ(s.id, raylab::shader::kPlane * raylab::shader::kObjectKindStride);

@@ -1,12 +1,14 @@
 // libFuzzer target: raylab::loadScene on arbitrary bytes as a scene file.
 //
 // The input goes to <scratch>/scene.json (one file per process, rewritten
-// each run). loadScene only reads that file: texture and sky-box names are
+// each run). loadScene reads that file; texture and sky-box names are
 // checked with stat() (is_regular_file) relative to the scene's folder, never
-// opened or written, so a name such as "../../etc/passwd" or "/dev/zero" is
-// harmless. Two small texture files sit next to the scene so the success path
-// (materials with textures and normal maps, sky boxes) is reachable too, and
-// a small OBJ file (quad.obj) for "meshes" (read by tinyobjloader).
+// opened or written; mesh files ("meshes") are regular files of at most
+// kMaxMeshFileBytes, opened and parsed read-only. So a name such as
+// "../../etc/passwd" or "/dev/zero" is harmless (the first is parsed as an
+// OBJ and refused, the second is no regular file). Two small texture files sit next to the scene so
+// the success path (materials with textures and normal maps, sky boxes) is reachable too, and a
+// small OBJ file (quad.obj) for "meshes" (read by tinyobjloader).
 #include "error.h"
 #include "fuzz_support.h"
 #include "scene.h"

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <thread>
 
@@ -224,6 +225,30 @@ EmbreeCaster::EmbreeCaster(const Scene& s) : impl_(std::make_unique<Impl>()) {
                 idx[3 * i + std::size_t(k)] = unsigned(3 * i + std::size_t(k));
             }
         m.attach(g, shader::kTriangle);
+    }
+    std::size_t meshTriangles = 0, meshCorners = 0;
+    for (const MeshObject& mesh : s.meshes) {
+        meshTriangles += mesh.mesh.triangleCount();
+        meshCorners += mesh.mesh.positions.size();
+    }
+    if (meshTriangles > 0) {
+        // Every mesh's triangles in one geometry, in the order the GLSL and
+        // the reference number them (primID = the triangle's index).
+        RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), meshCorners));
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), meshTriangles));
+        std::size_t corner = 0, index = 0;
+        for (const MeshObject& mesh : s.meshes) {
+            for (const glm::vec3& p : mesh.mesh.positions) {
+                v[3 * corner] = p.x, v[3 * corner + 1] = p.y, v[3 * corner + 2] = p.z;
+                ++corner;
+            }
+            const std::size_t base = corner - mesh.mesh.positions.size();
+            for (std::uint32_t i : mesh.mesh.indices) idx[index++] = unsigned(base + i);
+        }
+        m.attach(g, shader::kMesh);
     }
     for (const Plane& p : s.planes) {
         const glm::dvec3 n(p.normal);

@@ -21,7 +21,7 @@ namespace raylab {
 bool embreeBuilt();
 std::string embreeVersion();
 
-// What Embree answered for each ray: the object id (kind * 1024 + index, as
+// What Embree answered for each ray: the object id (kind * 2^20 + index, as
 // the GLSL and the reference number objects) or -1; for a shadow ray 0 when
 // the light is blocked (Embree's occlusion query does not say by what), -1
 // when it is not.
@@ -33,8 +33,8 @@ struct EmbreeAnswers {
 class EmbreeCaster {
 public:
     // The scene's objects at time 0, in float as the GPU gets them:
-    // spheres as Embree's sphere points, triangles (rectangles and boxes) as
-    // triangles, planes, discs and tori as user geometry intersected by the
+    // spheres as Embree's sphere points, triangles (rectangles and boxes) and
+    // mesh triangles as triangles, planes, discs and tori as user geometry intersected by the
     // reference's functions (Embree has no such shapes). BUILDMS: the
     // time Embree took to build its BVH. Throws Error when Embree is not built.
     explicit EmbreeCaster(const Scene& scene);

@@ -32,6 +32,7 @@
 #include "gl_loader.h"
 #include "paths.h"
 #include "reference_tracer.h"
+#include "scene_transform.h"
 #include "stage_renderer.h"
 
 #include <algorithm>
@@ -328,7 +329,9 @@ int cmdBench(const BenchOptions& options) {
         const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
         std::vector<std::function<double()>> casts;
         if (embreeBuilt()) {
-            embree = std::make_unique<EmbreeCaster>(scene);
+            // The reference tracer records its rays in the scene's standard
+            // frame (scene_transform.h); Embree gets the scene in that frame.
+            embree = std::make_unique<EmbreeCaster>(transformScene(scene, sceneFrame(scene)));
             EmbreeAnswers answers;
             embree->cast(raySets[0].rays, threads, &answers);
             std::printf("  %s: Embree %s agrees with the reference on %.3f%% of the frame's rays\n",

@@ -5,7 +5,7 @@
 //   color    the frame (as `raylab render` draws it; PFM: linear, unclamped)
 //   depth    hit distance t along the primary ray (0 where it hit nothing)
 //   normal   unit outward normal at the primary hit (0 where it hit nothing)
-//   id       the object hit, kind * 1024 + index as in scene_objects.glsl (-1: nothing)
+//   id       the object hit, kind * 2^20 + index as in scene_objects.glsl (-1: nothing)
 //   bounces  rays traced for the pixel (primary, reflected, refracted; reference only)
 //   stack    the most rays waiting on the stack at once (reference only)
 //

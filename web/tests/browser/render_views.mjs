@@ -39,11 +39,11 @@ try {
 
   // Scenes with OBJ meshes are native only: the page refuses them in one
   // line (scene_reader.ts), so their views are not compared here.
-  const nativeOnly = (sceneName) => sceneName && 'meshes' in JSON.parse(readFileSync(join(projectRoot, 'assets/scenes', sceneName), 'utf8'));
+  const sceneIsNativeOnly = (sceneName) => sceneName && 'meshes' in JSON.parse(readFileSync(join(projectRoot, 'assets/scenes', sceneName), 'utf8'));
   for (const stage of stages) {
     // 1. The solution from every check view against the native reference.
     for (const view of stage.check_views) {
-      if (nativeOnly(view.scene)) { console.log(`skip ${stage.id}/${view.name}: ${view.scene} has OBJ meshes (native build only)`); continue; }
+      if (sceneIsNativeOnly(view.scene)) { console.log(`skip ${stage.id}/${view.name}: ${view.scene} has OBJ meshes (native build only)`); continue; }
       const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, view: view.name, width: 160, height: 120 });
       if (!r.ok) { fail(`${stage.id}/${view.name}: ${r.error}`); continue; }
       const file = join(outDir, stage.id, `${view.name}.png`);
@@ -58,7 +58,7 @@ try {
 
     // 2. The assembled program, line by line with its origin, against native
     // (`raylab shader` prints ray-tracing programs).
-    for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])].filter((n) => !nativeOnly(n))) {
+    for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])].filter((n) => !sceneIsNativeOnly(n))) {
       const web = await page.evaluate((req) => window.raylab.assemble(req), { stage: stage.id, scene: sceneName });
       const native = execFileSync(raylab, ['shader', '--stage', stage.id, '--solution', '--es', '--origins', '--scene', join(projectRoot, 'assets/scenes', sceneName)], { encoding: 'utf8', cwd: projectRoot });
       const a = keep(web), b = keep(native);

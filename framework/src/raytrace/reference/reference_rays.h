@@ -21,7 +21,7 @@ struct TracedRay {
     float tMax = 1e30f;      // shadow rays: the distance to the light; others T_FAR
     Kind kind = Kind::Primary;
     // The reference's answer (double precision): the id of the object hit
-    // (kind * 1024 + index) or -1; for a shadow ray the blocker's id when
+    // (kind * 2^20 + index) or -1; for a shadow ray the blocker's id when
     // the light is blocked, else -1. HITT: its t, 0 for none.
     int hitId = -1;
     float hitT = 0.0f;

@@ -180,7 +180,9 @@ bool ReferenceTracer::Impl::lightVisible(const glm::dvec3& point, const glm::dve
     // surface (it adds nothing either way); so the ray export holds only the
     // shadow rays the GPU casts. The picture is the same in every stage.
     if (glm::dot(normal, dir) <= 0.0) {
-        if (log) *log << "  light " << light << ": behind the surface, no shadow ray\n";
+        // Said so for every stage: stages 03-07 do cast that shadow ray,
+        // whose answer changes nothing.
+        if (log) *log << "  light " << light << ": behind the surface, adds no light\n";
         return false;
     }
     const glm::dvec3 side = glm::dot(normal, dir) >= 0.0 ? normal : -normal;

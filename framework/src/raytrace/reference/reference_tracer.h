@@ -41,7 +41,7 @@ struct ReferenceSample {
     double depth = 0.0;     // hit distance t along the primary ray; 0 when it hit nothing
     glm::dvec3 normal{
         0.0};      // unit outward normal at the primary hit (after normal mapping); 0 for none
-    int id = -1;   // object id of the primary hit (kind * 1024 + index, as in GLSL); -1 for none
+    int id = -1;   // object id of the primary hit (kind * 2^20 + index, as in GLSL); -1 for none
     int rays = 0;  // rays traced for this pixel (primary, reflected, refracted; not shadow rays)
     int maxStack = 0;            // most rays waiting on the stack at once
     bool stackOverflow = false;  // a refracted ray was dropped because the stack was full

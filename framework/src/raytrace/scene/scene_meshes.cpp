@@ -6,9 +6,17 @@
 #include "obj_mesh.h"
 #include "shader_constants.h"
 
+#include <filesystem>
+#include <system_error>
+
 namespace raylab {
 
+namespace fs = std::filesystem;
+
 namespace {
+
+// About 8 million triangles of a plain OBJ file; the limit is 1 million.
+constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(512) << 20;
 
 // "scale": one positive number (uniform, so the normals stay as they are).
 float scaleOf(const SceneReader& r, const json& m, const std::string& where) {
@@ -31,6 +39,14 @@ void readMeshes(const SceneReader& r, const json& doc, Scene& scene) {
                                         : glm::vec3(0.0f);
         const float scale = scaleOf(r, m, where);
         object.material = materialOf(r, m, where, scene);
+        // Refused before it is read: parsing a file far larger than the
+        // triangle limit allows would only cost memory and time first.
+        std::error_code sizeError;
+        const auto bytes = fs::file_size(object.file, sizeError);
+        if (!sizeError && bytes > kMaxMeshFileBytes)
+            r.fail(where + ".file", "the file has " + std::to_string(bytes >> 20) +
+                                        " MB; mesh files of at most " +
+                                        std::to_string(kMaxMeshFileBytes >> 20) + " MB are read");
         try {
             object.mesh = loadObjMesh(object.file);
         } catch (const Error& e) { r.fail(where + ".file", e.what()); }

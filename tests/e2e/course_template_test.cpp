@@ -105,7 +105,7 @@ TEST(CourseTemplate, BadStageFilesNameFileAndKey) {
         {"\"yaw\": 115.0", "\"yaw\": \"115\"",
          "solution/03-shadows/stage.json: check_views[2].camera.yaw: expected a number"},
         {"\"shadows\": false", "\"shadow\": false",
-         "solution/03-shadows/stage.json: check_views[4].shadow: unknown key"},
+         "solution/03-shadows/stage.json: check_views[5].shadow: unknown key"},
         {"\"id\": \"03-shadows\"", "\"id\": \"03-shadow\"",
          "solution/03-shadows/stage.json: id: '03-shadow' is not the folder's name"},
         {"\"builds_on\": \"02-shading\"", "\"builds_on\": \"03-shadows\"",

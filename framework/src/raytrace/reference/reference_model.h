@@ -164,6 +164,9 @@ struct ReferenceTracer::Impl {
     bool findClosest(const DRay& ray, Hit& hit) const;
     static glm::dvec3 sphereTangent(const glm::dvec3& d);
     glm::dvec3 textureLayer(int layer, const glm::dvec2& uv) const;
+    // The material's texture at s.uv scales its ambient and diffuse colours
+    // (06 surface_detail.glsl, scene_meshes.glsl).
+    void applyTexture(Surface& s, std::ostream* log) const;
     // 07 normal_map.glsl
     void applyNormalMap(Surface& s, std::ostream* log) const;
     // 06 surface_detail.glsl

@@ -105,15 +105,18 @@ void ReferenceTracer::Impl::addSurfaceDetail(Surface& s, int kind, int index,
         const DDisc& d = discs[std::size_t(index)];
         s.uv = planeUV(s.point, d.center, s.normal, 2.0 * d.radius) + 0.5;
     }
-    if (s.material.texture >= 0) {
-        const glm::dvec3 picture = textureLayer(s.material.texture, s.uv);
-        s.material.ambient *= picture;
-        s.material.diffuse *= picture;
-        if (log)
-            *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", "
-                 << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
-    }
+    applyTexture(s, log);
     applyNormalMap(s, log);
+}
+
+void ReferenceTracer::Impl::applyTexture(Surface& s, std::ostream* log) const {
+    if (s.material.texture < 0) return;
+    const glm::dvec3 picture = textureLayer(s.material.texture, s.uv);
+    s.material.ambient *= picture;
+    s.material.diffuse *= picture;
+    if (log)
+        *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", "
+             << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
 }
 
 // scene_meshes.glsl: normals and texture coordinates mixed by the point's
@@ -133,14 +136,7 @@ Surface ReferenceTracer::Impl::meshSurface(const glm::dvec3& point, int i,
     s.normal = glm::dot(n, n) > 1e-12 ? glm::normalize(n) : glm::normalize(face);
     s.uv = w.x * m.uv[0] + w.y * m.uv[1] + w.z * m.uv[2];
     s.material = materials[std::size_t(m.material)];
-    if (s.material.texture >= 0) {
-        const glm::dvec3 picture = textureLayer(s.material.texture, s.uv);
-        s.material.ambient *= picture;
-        s.material.diffuse *= picture;
-        if (log)
-            *log << "  texture (layer " << s.material.texture << ") at uv (" << fmt(s.uv.x) << ", "
-                 << fmt(s.uv.y) << "): " << fmt(picture) << "\n";
-    }
+    applyTexture(s, log);
     return s;
 }
 

@@ -1,43 +1,90 @@
 // A variant file (framework/shaders/variants/) replaces a solution file for
-// one configuration; it must stay the original plus its one intended change,
-// or a fix made to the original silently goes missing there (it happened:
-// the meshes variant of surfaceAt lost the hit points' re-projection).
+// one configuration; it must stay the original plus its intended change, or a
+// fix made to the original silently goes missing there (it happened: the
+// meshes variant of surfaceAt lost the hit points' re-projection). So every
+// code line of the original must appear in the variant, except the few lines
+// the variant's change rewrites, listed here with the variant.
 #include "paths.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 using namespace raylab;
 
 namespace {
 
-// The file's lines after its leading comment block, without the lines that
-// contain any of DROP.
-std::vector<std::string> codeLines(const fs::path& file, const std::vector<std::string>& drop) {
-    std::istringstream in(test::readFile(file));
+// The file's code lines: trimmed, without comments, lab markers and blanks.
+std::vector<std::string> codeLines(const std::string& text) {
+    std::istringstream in(text);
     std::vector<std::string> lines;
-    bool header = true;
     for (std::string line; std::getline(in, line);) {
-        if (header && line.rfind("//", 0) == 0) continue;
-        header = false;
-        bool dropped = false;
-        for (const std::string& d : drop) dropped = dropped || line.find(d) != std::string::npos;
-        if (!dropped) lines.push_back(line);
+        const std::size_t comment = line.find("//");
+        if (comment != std::string::npos) line.erase(comment);
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first == std::string::npos) continue;
+        line = line.substr(first, line.find_last_not_of(" \t") - first + 1);
+        lines.push_back(line);
     }
     return lines;
 }
 
+// Code lines of ORIGINAL that VARIANT lacks (each line counted as often as
+// it occurs).
+std::vector<std::string> missingLines(const std::string& original, const std::string& variant) {
+    std::vector<std::string> have = codeLines(variant), missing;
+    for (const std::string& line : codeLines(original)) {
+        auto at = std::find(have.begin(), have.end(), line);
+        if (at == have.end()) missing.push_back(line);
+        else have.erase(at);
+    }
+    return missing;
+}
+
+struct Variant {
+    const char* original;
+    const char* variant;
+    std::vector<std::string> rewritten;  // the original's lines the change replaces
+};
+
+const Variant kVariants[] = {
+    {"solution/05-primitives/surface_at.glsl",
+     "framework/shaders/variants/meshes/08-full/surface_at.glsl",
+     {}},
+    {"solution/04-recursion/trace.glsl",
+     "framework/shaders/variants/weight-cut/04-recursion/trace.glsl",
+     {"if (glass.xyz != vec3(0.0) && stackSize < MAX_DEPTH) {",
+      "current.weight * (1.0 - F), current.depth + 1);",
+      "current.weight * reflectance, current.depth + 1);"}},
+    {"solution/06-textures/glow.glsl",
+     "framework/shaders/variants/old-path/06-textures/glow.glsl",
+     {}},
+    {"solution/08-full/light_visibility.glsl",
+     "framework/shaders/variants/old-path/08-full/light_visibility.glsl",
+     {"if (dot(normal, dir) <= 0.0) return false;",
+      "return !findBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight);"}},
+};
+
 }  // namespace
 
-TEST(ShaderVariants, MeshesSurfaceAtIsTheOriginalPlusMeshes) {
-    const fs::path root = projectRoot();
-    const auto original = codeLines(root / "solution/05-primitives/surface_at.glsl", {});
-    const auto variant = codeLines(
-        root / "framework/shaders/variants/meshes/08-full/surface_at.glsl", {"kind == KIND_MESH"});
-    EXPECT_EQ(variant, original);
-    // And the comparison can fail: the variant without its mesh line dropped.
-    EXPECT_NE(codeLines(root / "framework/shaders/variants/meshes/08-full/surface_at.glsl", {}),
-              original);
+TEST(ShaderVariants, EachVariantKeepsEveryLineOfItsOriginalButItsChange) {
+    for (const Variant& v : kVariants) {
+        SCOPED_TRACE(v.variant);
+        const std::string original = test::readFile(projectRoot() / v.original);
+        const std::string variant = test::readFile(projectRoot() / v.variant);
+        EXPECT_EQ(missingLines(original, variant), v.rewritten);
+    }
+}
+
+// The comparison can fail: a line added to the original and not to the
+// variant is reported.
+TEST(ShaderVariants, ALineAddedToTheOriginalOnlyIsReported) {
+    const Variant& v = kVariants[0];
+    const std::string original = test::readFile(projectRoot() / v.original);
+    const std::string variant = test::readFile(projectRoot() / v.variant);
+    const std::string edited = original + "\nfloat addedLater() { return 1.0; }\n";
+    EXPECT_EQ(missingLines(edited, variant),
+              std::vector<std::string>{"float addedLater() { return 1.0; }"});
 }

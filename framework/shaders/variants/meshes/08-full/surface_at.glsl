@@ -3,7 +3,7 @@
 // triangles, whose surface scene_meshes.glsl works out (interpolated normal
 // and texture coordinates, the point put back onto the triangle's plane).
 // Not part of any lab: students never see this file. Keep it in step with
-// the original (tests/unit/shader_source_test.cpp compares the two).
+// the original (tests/unit/shader_variants_test.cpp compares the two).
 #include "surface_detail.glsl"
 
 Surface surfaceAt(Ray ray, Hit hit)

@@ -4,10 +4,10 @@
 // build keeps them in 2D textures behind the same three functions.
 // (Students need not change this file.)
 //
-// Node n: (box min, first) and (box max, count). A leaf (count > 0) holds
-// the spheres bvhItem(first) .. bvhItem(first + count - 1), a leaf with
-// count < 0 the mesh triangles bvhItem(first) .. bvhItem(first - count - 1);
-// an inner node (count 0) has its children at nodes first and first + 1.
+// Node n: (box min, first) and (box max, code). A leaf's code is 8 * count
+// + kind: it holds the objects bvhItem(first) .. bvhItem(first + count - 1)
+// of that kind (KIND_SPHERE, KIND_MESH, KIND_TRIANGLE or KIND_DISC); an
+// inner node (code 0) has its children at nodes first and first + 1.
 uniform samplerBuffer uBvhNodes;
 uniform isamplerBuffer uBvhItems;
 

@@ -1,11 +1,10 @@
 // The spheres and mesh triangles along a ray, found through the BVH (see
 // find_closest.glsl). (Provided: nothing to do here.)
 // The tree's nodes and items come from bvh_access.glsl: bvhNodeLow(n) is
-// (box min, first), bvhNodeHigh(n) (box max, count). A leaf (count > 0)
-// holds the spheres bvhItem(first) .. bvhItem(first + count - 1), a leaf
-// with count < 0 the mesh triangles bvhItem(first) .. bvhItem(first -
-// count - 1); an inner node (count 0) has its children at nodes first and
-// first + 1.
+// (box min, first), bvhNodeHigh(n) (box max, code). A leaf's code is 8 *
+// count + the kind of its items (KIND_SPHERE or KIND_MESH): they are
+// bvhItem(first) .. bvhItem(first + count - 1). An inner node (code 0) has
+// its children at nodes first and first + 1.
 #include "bvh_access.glsl"
 
 const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
@@ -42,21 +41,15 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
     int node = 0;
     if (enterNode(0, ray.origin, invDir, hit.t) == T_FAR) return;
     while (true) {
-        int first = int(bvhNodeLow(node).w);
-        int count = int(bvhNodeHigh(node).w);
-        bool descend = false;
-        if (count != 0) {
-            // One of these two loops runs: count < 0 for mesh triangles.
-            for (int k = 0; k < -count; ++k) {
-                int i = bvhItem(first + k);
-                keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
-            }
-            for (int k = 0; k < count; ++k) {
-                int i = bvhItem(first + k);
-                keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
-            }
-            if (anyHit && hit.id >= 0) return;
-        } else {
+        // Down to the next leaf, then its objects: two loops one after the
+        // other, not one loop with an `if` for "inner node or leaf". The 8
+        // lock-step pixels of llvmpipe are at different nodes; with the
+        // `if`, every step would run both sides for all 8. This way they
+        // walk inner nodes together, then test leaves together (Aila and
+        // Laine's "while-while"; about a tenth faster on pro).
+        int code = int(bvhNodeHigh(node).w);
+        while (code == 0) {
+            int first = int(bvhNodeLow(node).w);
             float enterA = enterNode(first, ray.origin, invDir, hit.t);
             float enterB = enterNode(first + 1, ray.origin, invDir, hit.t);
             int near = enterA <= enterB ? first : first + 1;
@@ -66,23 +59,33 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
                 stackEnter[size] = enterFar;
                 ++size;
             }
-            if (min(enterA, enterB) < T_FAR) {
-                node = near;
-                descend = true;
+            if (min(enterA, enterB) == T_FAR) break;  // both missed: next waiting box
+            node = near;
+            code = int(bvhNodeHigh(node).w);
+        }
+        // A leaf (unless both children were missed): one of these loops
+        // runs, the one of its kind.
+        int first = int(bvhNodeLow(node).w);
+        int count = code / 8, kind = code - 8 * count;
+        for (int k = 0; k < (kind == KIND_SPHERE ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+        }
+        for (int k = 0; k < (kind == KIND_MESH ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
+        }
+        if (anyHit && hit.id >= 0) return;
+        // Next waiting box that could still hold something nearer.
+        bool found = false;
+        while (size > 0 && !found) {
+            --size;
+            if (stackEnter[size] < hit.t) {
+                node = stackNode[size];
+                found = true;
             }
         }
-        if (!descend) {
-            // Next waiting box that could still hold something nearer.
-            bool found = false;
-            while (size > 0 && !found) {
-                --size;
-                if (stackEnter[size] < hit.t) {
-                    node = stackNode[size];
-                    found = true;
-                }
-            }
-            if (!found) return;
-        }
+        if (!found) return;
     }
 }
 

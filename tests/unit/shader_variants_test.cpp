@@ -65,6 +65,19 @@ const Variant kVariants[] = {
      "framework/shaders/variants/old-path/08-full/light_visibility.glsl",
      {"if (dot(normal, dir) <= 0.0) return false;",
       "return !findBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight);"}},
+    {"solution/08-full/test_spheres.glsl",
+     "framework/shaders/variants/tree-all/08-full/test_spheres.glsl",
+     {}},
+    {"solution/08-full/find_closest.glsl",
+     "framework/shaders/variants/tree-all/08-full/find_closest.glsl",
+     {"for (int i = 0; i < uDiscCount && !(stopAtFirst && hit.id >= 0); ++i)",
+      "keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, "
+      "i);",
+      "for (int i = 0; i < uTriangleCount && !(stopAtFirst && hit.id >= 0); ++i)",
+      "keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + "
+      "1], "
+      "uTriangleVertices[3 * i + 2]),",
+      "KIND_TRIANGLE, i);"}},
 };
 
 }  // namespace

@@ -86,7 +86,7 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
         // cast its rays (the same lever; the baseline's rays have none).
         auto embreeFor = [&](const BenchRow& r) -> const BenchRow* {
             for (std::size_t i : indices)
-                if (rows[i].engine == "embree" && rows[i].lever == r.lever &&
+                if (rows[i].engine == "embree" && rows[i].lever == rayLever(r.lever) &&
                     rows[i].width == r.width && rows[i].height == r.height &&
                     rows[i].depth == r.depth && rows[i].shadows == r.shadows)
                     return &rows[i];

@@ -49,6 +49,11 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows);
 // the Embree row), then size and depth: "spec 800x600 d8".
 std::string benchSettingName(const BenchRow& row);
 
+// The part of a row's lever that changes which rays it casts: "tree-all"
+// changes only how they are found, so "tree-all+wcut1/255" casts the rays
+// of "wcut1/255" (the Embree row it is measured against).
+std::string rayLever(const std::string& lever);
+
 // scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,
 // frame_ms,compile_ms,rmse,psnr,max_err,bad_px_share,depth_err_p99_ulp,
 // engine,lever,rays,pareto

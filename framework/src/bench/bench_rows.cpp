@@ -96,6 +96,13 @@ std::string benchSettingName(const BenchRow& r) {
     return name + size;
 }
 
+std::string rayLever(const std::string& lever) {
+    const std::string treeAll = "tree-all";
+    if (lever == treeAll) return "";
+    if (lever.rfind(treeAll + "+", 0) == 0) return lever.substr(treeAll.size() + 1);
+    return lever;
+}
+
 // ---------------------------------------------------------------- all three
 
 void writeBenchFiles(const std::vector<BenchRow>& rows, const fs::path& dir,

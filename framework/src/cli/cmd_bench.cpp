@@ -59,9 +59,10 @@ struct BenchSetting {
 constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 
 // "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
-// "old-path" for the tracer before the levers (RAYLAB_OLD_PATH).
+// "old-path" for the tracer before the levers (RAYLAB_OLD_PATH), "tree-all"
+// for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL).
 std::string leverName(const ShaderVariant& v) {
-    std::string name = v.oldPath ? "old-path" : "";
+    std::string name = v.oldPath ? "old-path" : (v.treeAll ? "tree-all" : "");
     if (v.weightCut > 0.0) {
         char text[32];
         std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
@@ -112,6 +113,14 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
         s.variant.specialized = true;
         s.variant.weightCut = kWeightCut;
     }));
+    // The "one tree over every bounded kind", against the row above:
+    // the scene's few triangles and discs in the BVH instead of a loop.
+    if (!scene.triangles.empty() || !scene.discs.empty())
+        grid.push_back(with([](BenchSetting& s) {
+            s.variant.specialized = true;
+            s.variant.weightCut = kWeightCut;
+            s.variant.treeAll = true;
+        }));
     return grid;
 }
 
@@ -254,7 +263,7 @@ void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedR
                 e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
                 c.secondary, c.glow, c.shadow, threads, e.compileMs);
     for (const BenchRow& r : rows)
-        if (r.scene == e.scene && r.engine == "glsl" && r.lever == e.lever &&
+        if (r.scene == e.scene && r.engine == "glsl" && rayLever(r.lever) == e.lever &&
             r.numerics == "robust" && r.torusSolver == "robust" && r.width == e.width &&
             r.height == e.height && r.depth == e.depth && r.shadows)
             std::printf("  %-5s %-28s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
@@ -318,11 +327,12 @@ int cmdBench(const BenchOptions& options) {
                     size.width, size.height, msSince(start) / 1000.0);
         for (const BenchSetting& s : grid)
             if (s.variant.weightCut > 0.0 && !s.variant.oldPath &&
-                std::none_of(raySets.begin(), raySets.end(),
-                             [&](const RaySet& r) { return r.lever == leverName(s.variant); })) {
+                std::none_of(raySets.begin(), raySets.end(), [&](const RaySet& r) {
+                    return r.lever == rayLever(leverName(s.variant));
+                })) {
                 ReferenceTracer cut(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
                 cut.setWeightCut(s.variant.weightCut);
-                raySets.push_back({leverName(s.variant), {}});
+                raySets.push_back({rayLever(leverName(s.variant)), {}});
                 cut.traceImage(camera, size.width, size.height, &raySets.back().rays);
             }
         std::unique_ptr<EmbreeCaster> embree;

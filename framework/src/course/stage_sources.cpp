@@ -53,6 +53,8 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_OLD_PATH", true, "old-path"},  // before the bench's levers: the glow ray and shadow
                                             // rays of lights behind a surface always cast
     {"RAYLAB_MESHES", true, "meshes"},      // stage 08 scenes with OBJ meshes
+    {"RAYLAB_TREE_ALL", true,
+     "tree-all"},  // the scene's triangles and discs in the BVH too (bench)
 };
 
 bool defined(const std::vector<std::string>& defines, const std::string& name) {

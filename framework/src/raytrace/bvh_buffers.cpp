@@ -20,9 +20,10 @@ BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
     std::vector<float> nodes;
     for (const BvhNode& n : bvh.nodes) {
         nodes.insert(nodes.end(), {n.box.lo.x, n.box.lo.y, n.box.lo.z, float(n.first)});
-        // A leaf of mesh triangles says so by a negative count (bvh_access.glsl).
-        const int count = n.count > 0 && n.kind == shader::kMesh ? -n.count : n.count;
-        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(count)});
+        // A leaf says what its items are: 8 * count + kind (bvh_access.glsl);
+        // an inner node has 0 there.
+        const int code = n.count > 0 ? kBvhLeafKinds * n.count + n.kind : 0;
+        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(code)});
     }
     std::vector<GLint> items(bvh.items.begin(), bvh.items.end());
     // An empty buffer texture is not allowed everywhere: keep one dummy entry.

@@ -3,14 +3,20 @@
 // with texelFetch (solution/08-full/find_closest.glsl). Buffer textures, not
 // uniform arrays: a few hundred nodes would crowd the uniform limits some
 // drivers have (1024 vec4s for a whole fragment shader on NVIDIA).
-//   uBvhNodes (RGBA32F): texel 2i = (box.lo, first), texel 2i+1 = (box.hi, count),
-//                        count < 0 for a leaf of -count mesh triangles
-//   uBvhItems (R32I):    sphere or mesh-triangle indices
+//   uBvhNodes (RGBA32F): texel 2i = (box.lo, first), texel 2i+1 = (box.hi, code),
+//                        code = 8 * count + kind for a leaf of count items of one
+//                        kind (KIND_SPHERE, KIND_MESH, KIND_TRIANGLE, KIND_DISC), 0 for
+//                        an inner node
+//   uBvhItems (R32I):    indices into the lists of the leaves' kinds
 // Needs a current GL context. (Students need not read this file.)
 #include "bvh.h"
 #include "gl.h"
 
 namespace raylab {
+
+// A leaf's code is kBvhLeafKinds * count + kind: the kinds (shader_constants.h)
+// stay below 8, and float holds the code exactly for counts below 2^21.
+inline constexpr int kBvhLeafKinds = 8;
 
 // Fills BUFFER with BYTES of DATA and makes TEXTURE a buffer texture of
 // FORMAT over it (also used for the mesh triangles, mesh_buffers.h).

@@ -13,6 +13,7 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
     if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
     if (oldPath) d.push_back("RAYLAB_OLD_PATH");
+    if (treeAll) d.push_back("RAYLAB_TREE_ALL");
     if (weightCut > 0.0) {
         char value[32];
         std::snprintf(value, sizeof value, "%.9g", weightCut);

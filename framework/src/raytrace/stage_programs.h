@@ -34,6 +34,9 @@ struct ShaderVariant {
     // a blocker ray for every pixel in front of the sun, halo or not, and
     // light_visibility.glsl a shadow ray toward lights behind the surface.
     bool oldPath = false;
+    // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
+    // and discs (the bench's tree-all row; bvh.h says why it is not the default).
+    bool treeAll = false;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -165,7 +165,8 @@ void StageRenderer::uploadSceneConstants() {
     // The tree is built only for a program that walks it (stage 08 with
     // RAYLAB_BVH), once, on the first such build.
     if (variant_.bvh && !bvh_ && p.uniform("uBvhNodes") >= 0)
-        bvh_ = std::make_unique<BvhBuffers>(buildBvh(scene_));
+        bvh_ = std::make_unique<BvhBuffers>(buildBvh(
+            scene_, 2, variant_.treeAll ? BvhObjects::AllBounded : BvhObjects::SpheresAndMeshes));
     glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
     glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
     // Mesh triangles: uploaded once, for every program of a scene with meshes.

@@ -9,9 +9,10 @@
 // textures that web/shaders/bvh_access.glsl reads with texelFetch:
 //   element i of either lies at texel (i % BVH_TEXTURE_WIDTH, i / BVH_TEXTURE_WIDTH),
 //   rows filled one after the other (row 0 first = the first row uploaded).
-//   uBvhNodes, RGBA32F: element 2n = (box.lo.xyz, first), 2n + 1 = (box.hi.xyz, count)
-//     for node n; a leaf (count > 0) holds items first .. first + count - 1,
-//     an inner node (count 0) has its children at nodes first and first + 1.
+//   uBvhNodes, RGBA32F: element 2n = (box.lo.xyz, first), 2n + 1 = (box.hi.xyz, code)
+//     for node n; a leaf's code is 8 * count + KIND_SPHERE (0): it holds items
+//     first .. first + count - 1; an inner node (code 0) has its children at
+//     nodes first and first + 1.
 //   uBvhItems, R32I: element k = the sphere index of item k.
 // A texture is BVH_TEXTURE_WIDTH texels wide once it needs more than one
 // row; a single row is only as wide as its elements (i % 1024 = i there).
@@ -22,6 +23,9 @@ import { Scene, Vec3 } from './scene.js';
 
 export const BVH_TEXTURE_WIDTH = 1024; // as in web/shaders/bvh_access.glsl
 export const BVH_MAX_DEPTH = 32; // the GLSL traversal stack (bvh.h's kBvhMaxDepth)
+// A leaf's code is BVH_LEAF_KINDS * count + its items' kind (bvh_buffers.h's
+// kBvhLeafKinds); the web's tree holds spheres only, KIND_SPHERE = 0.
+export const BVH_LEAF_KINDS = 8;
 
 export interface Aabb {
     lo: Vec3;
@@ -220,7 +224,7 @@ export function packBvhTextures(bvh: Bvh): { nodes: BvhTexture<Float32Array>; it
     const n = shape(nodeTexels);
     const nodes = new Float32Array(n.width * n.height * 4);
     bvh.nodes.forEach((node, i) => {
-        nodes.set([...node.box.lo, node.first, ...node.box.hi, node.count], 8 * i);
+        nodes.set([...node.box.lo, node.first, ...node.box.hi, BVH_LEAF_KINDS * node.count], 8 * i);
     });
     const itemList = bvh.items.length ? bvh.items : [-1];
     const m = shape(itemList.length);

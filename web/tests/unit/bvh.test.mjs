@@ -79,7 +79,8 @@ function checkPacking(bvh) {
     assert.ok(items.height === 1 || items.width === BVH_TEXTURE_WIDTH);
     bvh.nodes.forEach((n, i) => {
         assert.deepEqual(texel(nodes, 4, 2 * i), [...n.box.lo, n.first], `bvhNodeLow(${i})`);
-        assert.deepEqual(texel(nodes, 4, 2 * i + 1), [...n.box.hi, n.count], `bvhNodeHigh(${i})`);
+        // A leaf's code: 8 * count + KIND_SPHERE (0); an inner node's: 0.
+        assert.deepEqual(texel(nodes, 4, 2 * i + 1), [...n.box.hi, 8 * n.count], `bvhNodeHigh(${i})`);
     });
     bvh.items.forEach((item, k) => assert.equal(texel(items, 1, k)[0], item, `bvhItem(${k})`));
 }

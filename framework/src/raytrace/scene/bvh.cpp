@@ -51,6 +51,20 @@ std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index) {
     throw Error("mesh triangle " + std::to_string(index) + " does not exist");
 }
 
+Aabb triangleBounds(const Scene& scene, int index) {
+    Aabb box;
+    for (glm::vec3 p : scene.triangles.at(std::size_t(index)).vertices) box.grow(p);
+    return padded(box);
+}
+
+// A disc of radius r and unit normal n reaches r * sqrt(1 - n_i^2) from its
+// centre along axis i (0 along its normal, r across it).
+Aabb discBounds(const Scene& scene, int index) {
+    const Disc& d = scene.discs.at(std::size_t(index));
+    glm::vec3 reach = d.radius * glm::sqrt(glm::max(glm::vec3(1.0f) - d.normal * d.normal, 0.0f));
+    return padded({d.center - reach, d.center + reach});
+}
+
 Aabb meshTriangleBounds(const Scene& scene, int index) {
     Aabb box;
     for (glm::vec3 p : meshTriangleCorners(scene, index)) box.grow(p);
@@ -63,7 +77,7 @@ struct Builder {
     const int maxLeaf;
     std::vector<Aabb> boxes;  // per item
     std::vector<glm::vec3> centres;
-    std::vector<int> kinds;    // per item: KIND_SPHERE or KIND_MESH
+    std::vector<int> kinds;    // per item: KIND_SPHERE, KIND_MESH, KIND_TRIANGLE or KIND_DISC
     std::vector<int> indices;  // per item: index in its kind's list
     std::vector<int> order;    // item numbers, partitioned in place
     std::vector<BvhNode> nodes;
@@ -89,8 +103,8 @@ struct Builder {
     // allowed).
     int split(int begin, int end, const Aabb& box, int level) {
         const int n = end - begin;
-        // Both kinds here: spheres to one side, triangles to the other
-        // (leaves hold one kind, see bvh.h).
+        // Several kinds here: the first item's kind to one side, the others
+        // to the other (leaves hold one kind, see bvh.h).
         const int firstKind = kinds[std::size_t(order[std::size_t(begin)])];
         auto sameKind = [&](int item) { return kinds[std::size_t(item)] == firstKind; };
         auto byKind = std::partition(order.begin() + begin, order.begin() + end, sameKind);
@@ -187,7 +201,7 @@ struct Builder {
 
 }  // namespace
 
-Bvh buildBvh(const Scene& scene, int maxLeaf) {
+Bvh buildBvh(const Scene& scene, int maxLeaf, BvhObjects objects) {
     Bvh bvh;
     Builder b{std::max(1, maxLeaf), {}, {}, {}, {}, {}, {}};
     auto add = [&](int kind, int index, const Aabb& box) {
@@ -208,6 +222,12 @@ Bvh buildBvh(const Scene& scene, int maxLeaf) {
                 box.grow(m.mesh.positions[m.mesh.indices[3 * t + std::size_t(k)]]);
             add(shader::kMesh, triangle++, padded(box));
         }
+    if (objects == BvhObjects::AllBounded) {
+        for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+            add(shader::kTriangle, int(i), triangleBounds(scene, int(i)));
+        for (std::size_t i = 0; i < scene.discs.size(); ++i)
+            add(shader::kDisc, int(i), discBounds(scene, int(i)));
+    }
     if (b.order.empty()) return bvh;
     b.nodes.emplace_back();
     b.build(0, 0, int(b.order.size()), 1);

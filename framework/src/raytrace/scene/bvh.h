@@ -1,11 +1,19 @@
 #pragma once
-// A bounding volume hierarchy over a scene's spheres and mesh triangles,
-// built on the CPU once per scene and traversed in GLSL by
-// solution/08-full/test_spheres.glsl.
+// A bounding volume hierarchy over a scene's spheres and mesh triangles
+// (and, as a bench row, its own triangles and discs too), built on the CPU
+// once per scene and traversed in GLSL by solution/08-full/test_spheres.glsl.
 //
 // Why: with a linear search every ray tests every object - 110 spheres, 3
 // shadow rays per hit and up to 8 bounces make the pro scene slow. A BVH lets
 // a ray skip whole groups of spheres whose box it misses.
+//
+// Why not the scene file's triangles and discs (stage 08 allows 32 and 4):
+// so few are tested faster one after the other than through the tree.
+// Measured on pro (14 triangles, a disc): with them in the tree a frame
+// takes about 1.5 times as long (`raylab bench`, row tree-all). A loop over
+// a handful of objects is uniform across the 8 lock-step pixels and, in
+// the specialised program, unrolled over constant corners; the tree's leaf
+// tests are divergent.
 //
 // Why one kind per leaf: llvmpipe runs 8 pixels in lock-step and executes
 // both sides of a divergent `if`; a leaf of mixed kinds needs an `if` on the
@@ -13,8 +21,8 @@
 // code (measured on a discarded first version with the torus in the tree,
 // pro at 400x300: 2157 ms a frame against 453 ms with it taken out). So a
 // node whose items are of both kinds is split by kind first, and the `if`
-// is paid once per leaf. The torus (long code) and the few planes, discs
-// and hand-written triangles stay in plain loops.
+// is paid once per leaf. Planes (unbounded) and the torus (long code) stay
+// in plain loops, and so, by default, do the scene's triangles and discs.
 //
 // Moving spheres: a sphere's box covers its whole bob (centre +- amplitude
 // along the motion axis), so one hierarchy is valid at every time and never
@@ -47,8 +55,9 @@ struct Aabb {
 // A node is a leaf when count > 0: it holds items[first .. first + count).
 // An inner node has count == 0 and its two children at nodes[first] and
 // nodes[first + 1] (siblings are stored next to each other).
-// A leaf's items are all of one kind: KIND_SPHERE or KIND_MESH
-// (shader_constants.h); its items are indices into that kind's list.
+// A leaf's items are all of one kind: KIND_SPHERE, KIND_MESH, KIND_TRIANGLE
+// or KIND_DISC (shader_constants.h); its items are indices into that kind's
+// list.
 struct BvhNode {
     Aabb box;
     int first = 0;
@@ -58,7 +67,7 @@ struct BvhNode {
 
 struct Bvh {
     std::vector<BvhNode> nodes;  // nodes[0] is the root (absent when there are no items)
-    std::vector<int> items;      // sphere or mesh-triangle indices (the leaf says which)
+    std::vector<int> items;      // indices into the lists of the leaves' kinds
     int depth = 0;               // longest root-to-leaf path, in nodes
 };
 
@@ -68,13 +77,22 @@ Aabb sphereBounds(const Scene& scene, int index);
 // The box of mesh triangle INDEX (all meshes' triangles in one list), a little padded.
 Aabb meshTriangleBounds(const Scene& scene, int index);
 
+// The box of the scene file's triangle INDEX, and of disc INDEX, a little padded.
+Aabb triangleBounds(const Scene& scene, int index);
+Aabb discBounds(const Scene& scene, int index);
+
 // The corners of mesh triangle INDEX, counter-clockwise from the front.
 std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index);
 
-// Builds the hierarchy of SCENE's spheres and mesh triangles with the
-// surface area heuristic (binned), at most MAXLEAF items per leaf, one kind
-// per leaf. Deterministic for a given scene.
-Bvh buildBvh(const Scene& scene, int maxLeaf = 2);
+// What goes into the tree: spheres and mesh triangles, or (RAYLAB_TREE_ALL,
+// the bench's tree-all row) also the scene file's triangles and discs.
+enum class BvhObjects { SpheresAndMeshes, AllBounded };
+
+// Builds the hierarchy of SCENE's OBJECTS with the surface area heuristic
+// (binned), at most MAXLEAF items per leaf, one kind per leaf.
+// Deterministic for a given scene.
+Bvh buildBvh(const Scene& scene, int maxLeaf = 2,
+             BvhObjects objects = BvhObjects::SpheresAndMeshes);
 
 // Longest path any traversal stack has to hold: the GLSL stack size
 // (BVH_STACK_SIZE) must be at least this. Where the levels left would not

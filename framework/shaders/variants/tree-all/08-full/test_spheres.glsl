@@ -1,0 +1,110 @@
+// Variant of solution/08-full/test_spheres.glsl, used instead of it when the
+// framework defines RAYLAB_TREE_ALL (`raylab bench`, row tree-all): the
+// scene file's triangles and discs are in the BVH too (see bvh.h for why
+// they are not by default). Not part of any lab: students never see this file.
+// The spheres and mesh triangles along a ray, found through the BVH (see
+// find_closest.glsl).
+// The tree's nodes and items come from bvh_access.glsl: bvhNodeLow(n) is
+// (box min, first), bvhNodeHigh(n) (box max, code). A leaf's code is 8 *
+// count + the kind of its items (KIND_SPHERE, KIND_MESH, KIND_TRIANGLE or
+// KIND_DISC): they are bvhItem(first) .. bvhItem(first + count - 1). An inner node (code 0) has
+// its children at nodes first and first + 1.
+#include "bvh_access.glsl"
+
+const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
+
+// Where the ray enters the box lo..hi (0 when it starts inside), or T_FAR
+// when it misses it or reaches it only beyond tMax (the slab test).
+float enterBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax)
+{
+    vec3 t0 = (lo - origin) * invDir;
+    vec3 t1 = (hi - origin) * invDir;
+    vec3 tNear = min(t0, t1);
+    vec3 tFar = max(t0, t1);
+    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+    float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
+    return enter <= leave ? enter : T_FAR;
+}
+
+float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
+{
+    return enterBox(origin, invDir, bvhNodeLow(node).xyz, bvhNodeHigh(node).xyz, tMax);
+}
+
+// Walks the tree, keeping the nearest hit closer than hit.t. With anyHit it
+// stops at the first object found (shadow rays need no more).
+void walkBvh(Ray ray, inout Hit hit, bool anyHit)
+{
+    // 1/0 would give 0 * inf = NaN in the slab test for a ray exactly on a
+    // box face: a tiny direction component instead gives a huge finite slope.
+    vec3 d = ray.dir;
+    vec3 invDir = 1.0 / vec3(abs(d.x) < 1e-20 ? 1e-20 : d.x, abs(d.y) < 1e-20 ? 1e-20 : d.y, abs(d.z) < 1e-20 ? 1e-20 : d.z);
+    int stackNode[BVH_STACK_SIZE];
+    float stackEnter[BVH_STACK_SIZE];
+    int size = 0;
+    int node = 0;
+    if (enterNode(0, ray.origin, invDir, hit.t) == T_FAR) return;
+    while (true) {
+        // Down to the next leaf, then its objects: two loops one after the
+        // other, not one loop with an `if` for "inner node or leaf". The 8
+        // lock-step pixels of llvmpipe are at different nodes; with the
+        // `if`, every step would run both sides for all 8. This way they
+        // walk inner nodes together, then test leaves together (Aila and
+        // Laine's "while-while"; about a tenth faster on pro).
+        int code = int(bvhNodeHigh(node).w);
+        while (code == 0) {
+            int first = int(bvhNodeLow(node).w);
+            float enterA = enterNode(first, ray.origin, invDir, hit.t);
+            float enterB = enterNode(first + 1, ray.origin, invDir, hit.t);
+            int near = enterA <= enterB ? first : first + 1;
+            float enterFar = max(enterA, enterB);
+            if (enterFar < T_FAR && size < BVH_STACK_SIZE) {
+                stackNode[size] = near == first ? first + 1 : first;
+                stackEnter[size] = enterFar;
+                ++size;
+            }
+            if (min(enterA, enterB) == T_FAR) break;  // both missed: next waiting box
+            node = near;
+            code = int(bvhNodeHigh(node).w);
+        }
+        // A leaf (unless both children were missed): one of these loops
+        // runs, the one of its kind.
+        int first = int(bvhNodeLow(node).w);
+        int count = code / 8, kind = code - 8 * count;
+        for (int k = 0; k < (kind == KIND_SPHERE ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+        }
+        for (int k = 0; k < (kind == KIND_MESH ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
+        }
+        for (int k = 0; k < (kind == KIND_TRIANGLE ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+                       KIND_TRIANGLE, i);
+        }
+        for (int k = 0; k < (kind == KIND_DISC ? count : 0); ++k) {
+            int i = bvhItem(first + k);
+            keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
+        }
+        if (anyHit && hit.id >= 0) return;
+        // Next waiting box that could still hold something nearer.
+        bool found = false;
+        while (size > 0 && !found) {
+            --size;
+            if (stackEnter[size] < hit.t) {
+                node = stackNode[size];
+                found = true;
+            }
+        }
+        if (!found) return;
+    }
+}
+
+// Keeps the nearest hit on a sphere, triangle (mesh or scene) or disc
+// closer than hit.t; with stopAtFirst it may stop at the first one found.
+void testSpheres(Ray ray, inout Hit hit, bool stopAtFirst)
+{
+    walkBvh(ray, hit, stopAtFirst);
+}

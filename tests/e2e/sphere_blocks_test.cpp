@@ -6,6 +6,7 @@
 // failing when the blocks hold wrong data; and a scene larger than the
 // device's blocks refused with one line naming the limit.
 #include "error.h"
+#include "growth_scenes.h"
 #include "image_compare.h"
 #include "reference_tracer.h"
 #include "sphere_blocks.h"
@@ -15,7 +16,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -29,52 +29,36 @@ constexpr float kTime = 0.7f;  // the moving spheres are off their rest position
 
 const StageInfo& full() { return demoStage(); }
 
-// N - 1 small spheres on a jittered grid in [-1, 1]^3 above a floor, in four
-// materials (some mirrors), every hundredth one moving; then one big mirror
-// in front, the last sphere (a wrong entry of its own shows in many pixels).
+// N - 1 small spheres on the growth bench's jittered grid in [-1, 1]^3
+// above a floor, in four materials (some mirrors), every hundredth one
+// moving; then one big mirror in front, the last sphere (a wrong entry of
+// its own shows in many pixels).
 Scene manySpheres(int n) {
-    Scene s;
+    Scene s = growthSphereScene(n - 1);
     s.file = "spheres.json";
-    s.background = glm::vec3(0.62f, 0.76f, 0.93f);
-    s.camera.position = glm::vec3(0.0f, 0.4f, 3.6f);
-    s.camera.pitchDeg = -6.0f;
-    s.fovYDeg = 45.0f;
-    const glm::vec3 colours[4] = {
-        {0.78f, 0.40f, 0.22f}, {0.2f, 0.6f, 0.3f}, {0.3f, 0.4f, 0.9f}, {0.9f, 0.9f, 0.9f}};
-    for (int m = 0; m < 4; ++m) {
-        Material mat;
-        mat.name = "m" + std::to_string(m);
-        mat.ambient = 0.1f * colours[m];
-        mat.diffuse = colours[m];
-        mat.specular = glm::vec3(0.4f);
-        if (m == 3) mat.type = Material::Type::Mirror;
-        s.materials.push_back(mat);
+    const int clay = 0;  // growthBaseScene's; 1 is the floor
+    const int green = int(s.materials.size()), blue = green + 1, mirror = green + 2;
+    for (glm::vec3 colour :
+         {glm::vec3(0.2f, 0.6f, 0.3f), glm::vec3(0.3f, 0.4f, 0.9f), glm::vec3(0.9f, 0.9f, 0.9f)}) {
+        Material m;
+        m.name = "m" + std::to_string(s.materials.size());
+        m.ambient = 0.1f * colour;
+        m.diffuse = colour;
+        m.specular = glm::vec3(0.4f);
+        s.materials.push_back(m);
     }
-    s.lights.push_back({glm::vec3(-4.0f, 6.0f, 5.0f), glm::vec3(0.9f)});
-    Plane floor;
-    floor.point = glm::vec3(0.0f, -1.05f, 0.0f);
-    floor.material = 0;
-    s.planes.push_back(floor);
-    const int side = int(std::ceil(std::cbrt(double(n))));
-    const float cell = 2.0f / float(side);
-    unsigned state = 12345u;
-    auto jitter = [&] {
-        state = state * 1664525u + 1013904223u;
-        return (float(state >> 8) / float(1u << 24) - 0.5f) * 0.3f * cell;
-    };
-    for (int i = 0; i + 1 < n; ++i) {
-        glm::vec3 c(float(i % side), float((i / side) % side), float(i / (side * side)));
-        Sphere sphere;
-        sphere.center = -1.0f + (c + 0.5f) * cell + glm::vec3(jitter(), jitter(), jitter());
-        sphere.radius = 0.3f * cell;
-        sphere.material = (i * 7) % 4;
-        if (i % 100 == 37) sphere.motion = {glm::vec3(0.0f, 1.0f, 0.0f), 0.5f * cell, 3.0f};
-        s.spheres.push_back(sphere);
+    s.materials[std::size_t(mirror)].type = Material::Type::Mirror;
+    const int kinds[4] = {clay, green, blue, mirror};
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        Sphere& sphere = s.spheres[i];
+        sphere.material = kinds[(i * 7) % 4];
+        if (i % 100 == 37)
+            sphere.motion = {glm::vec3(0.0f, 1.0f, 0.0f), 1.5f * sphere.radius, 3.0f};
     }
     Sphere big;
     big.center = glm::vec3(0.75f, -0.55f, 1.6f);
     big.radius = 0.45f;
-    big.material = 3;
+    big.material = mirror;
     s.spheres.push_back(big);
     return s;
 }

@@ -22,7 +22,7 @@
 #include "gl_loader.h"
 #include "gnuplot.h"
 #include "growth_report.h"
-#include "mesh_shapes.h"
+#include "growth_scenes.h"
 #include "paths.h"
 #include "sphere_blocks.h"
 #include "stage_renderer.h"
@@ -43,64 +43,6 @@ constexpr long kLinearMaxTriangles = 10000;
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
-}
-
-// The fixed part of both series' scenes: camera, floor, light, one material.
-Scene baseScene(const std::string& name) {
-    Scene s;
-    s.file = name;
-    s.background = glm::vec3(0.62f, 0.76f, 0.93f);
-    s.camera.position = glm::vec3(0.0f, 0.4f, 3.6f);
-    s.camera.pitchDeg = -6.0f;
-    s.fovYDeg = 45.0f;
-    Material clay;
-    clay.name = "clay";
-    clay.ambient = glm::vec3(0.08f, 0.04f, 0.02f);
-    clay.diffuse = glm::vec3(0.78f, 0.40f, 0.22f);
-    clay.specular = glm::vec3(0.4f);
-    s.materials.push_back(clay);
-    Material floor;
-    floor.name = "floor";
-    floor.ambient = glm::vec3(0.06f);
-    floor.diffuse = glm::vec3(0.55f, 0.52f, 0.45f);
-    s.materials.push_back(floor);
-    s.lights.push_back({glm::vec3(-4.0f, 6.0f, 5.0f), glm::vec3(0.9f)});
-    Plane p;
-    p.point = glm::vec3(0.0f, -1.05f, 0.0f);
-    p.material = 1;
-    s.planes.push_back(p);
-    return s;
-}
-
-// The sphere mesh with the most triangles (4d^2 - 4d) not above WANTED.
-Scene meshScene(long wanted) {
-    int detail = std::max(2, int((1.0 + std::sqrt(1.0 + double(wanted))) / 2.0));
-    while (detail > 2 && 4L * detail * detail - 4L * detail > wanted) --detail;
-    Mesh mesh = makeShape("sphere", detail);
-    Scene s =
-        baseScene("growth: sphere mesh, " + std::to_string(mesh.triangleCount()) + " triangles");
-    s.meshes.push_back({"sphere", std::move(mesh), 0});
-    return s;
-}
-
-// N spheres on a jittered grid filling the box [-1, 1]^3 (deterministic).
-Scene sphereScene(int n) {
-    Scene s = baseScene("growth: " + std::to_string(n) + " spheres");
-    const int side = int(std::ceil(std::cbrt(double(n))));
-    const float cell = 2.0f / float(side);
-    unsigned state = 12345u;
-    auto jitter = [&] {
-        state = state * 1664525u + 1013904223u;
-        return (float(state >> 8) / float(1u << 24) - 0.5f) * 0.3f * cell;
-    };
-    for (int i = 0; i < n; ++i) {
-        glm::vec3 c(float(i % side), float((i / side) % side), float(i / (side * side)));
-        Sphere sphere;
-        sphere.center = -1.0f + (c + 0.5f) * cell + glm::vec3(jitter(), jitter(), jitter());
-        sphere.radius = 0.3f * cell;
-        s.spheres.push_back(sphere);
-    }
-    return s;
 }
 
 // One point being measured: its renderer stays alive for the whole run, so
@@ -176,7 +118,7 @@ int cmdBenchGrowth(const BenchOptions& options) {
     // point in turn: a slow spell of a shared machine hits every point alike.
     std::vector<Point> points;
     for (long wanted : triangles) {
-        const Scene scene = meshScene(wanted);
+        const Scene scene = growthMeshScene(wanted);
         const long n = long(meshTriangleCount(scene));
         points.push_back(prepare(stage, sources, scene, "mesh", n, true, size.width, size.height));
         if (n <= kLinearMaxTriangles)
@@ -184,7 +126,7 @@ int cmdBenchGrowth(const BenchOptions& options) {
                 prepare(stage, sources, scene, "mesh", n, false, size.width, size.height));
     }
     for (int n : spheres) {
-        const Scene scene = sphereScene(n);
+        const Scene scene = growthSphereScene(n);
         for (bool bvh : {true, false})
             points.push_back(
                 prepare(stage, sources, scene, "spheres", n, bvh, size.width, size.height));

@@ -1,5 +1,5 @@
 // The scene's spheres, uploaded by the framework from the scene file
-// (framework/src/raytrace/stage_renderer.cpp). (Students need not change this file.)
+// (framework/src/raytrace/sphere_blocks.cpp). (Students need not change this file.)
 // The arrays sit in uniform blocks (buffers) rather than plain uniforms:
 // plain ones allow only about a hundred spheres, a block thousands. Read
 // them as plain arrays all the same: uSpheres[i], uSphereColors[i].

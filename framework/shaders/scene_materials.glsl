@@ -30,7 +30,9 @@ uniform vec3 uMatN[MAX_MATERIALS];
 uniform vec3 uMatK[MAX_MATERIALS];
 uniform int uMatTexture[MAX_MATERIALS];
 uniform int uMatNormalMap[MAX_MATERIALS];
-uniform int uSphereMaterial[MAX_SPHERES];   // material index of each sphere
+layout(std140) uniform SphereMaterials {  // a block, as the spheres (scene_spheres.glsl)
+    int uSphereMaterial[MAX_SPHERES];    // material index of each sphere
+};
 #endif
 
 Material materialAt(int m)

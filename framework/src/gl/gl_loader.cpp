@@ -27,7 +27,9 @@ namespace {
     X(VertexAttribPointer) X(TexImage3D) X(TexSubImage3D) X(TexBuffer)                            \
     X(GenRenderbuffers) X(BindRenderbuffer) X(RenderbufferStorage) X(FramebufferRenderbuffer)      \
     X(DeleteRenderbuffers) X(GenQueries) X(BeginQuery) X(EndQuery)                                \
-    X(GetQueryObjectui64v) X(DeleteQueries) X(DrawBuffers) X(ClearBufferfv)
+    X(GetQueryObjectui64v) X(DeleteQueries) X(DrawBuffers) X(ClearBufferfv)                       \
+    X(BufferSubData) X(BindBufferBase) X(GetUniformBlockIndex) X(UniformBlockBinding)             \
+    X(GetIntegeri_v)
 // clang-format on
 
 bool allLoaded(std::string* missing) {

@@ -33,6 +33,7 @@ public:
     ShaderProgram& operator=(const ShaderProgram&) = delete;
 
     void use() const { glUseProgram(id_); }
+    GLuint id() const { return id_; }  // for calls this class does not wrap (uniform blocks)
     // -1 when the program has no such (active) uniform; setting it is then a no-op.
     GLint uniform(const std::string& name) const;
 

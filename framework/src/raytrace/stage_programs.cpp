@@ -2,6 +2,7 @@
 
 #include "scene_baking.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace raylab {
@@ -34,6 +35,14 @@ ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
     return v;
 }
 
+int sphereSlots(const StageInfo& stage, const Scene& scene, const ShaderVariant& variant) {
+    if (variant.specialized) return std::max(1, int(scene.spheres.size()));
+    int slots = stage.limits.spheres;
+    if (variant.maxBlockBytes > 0)
+        slots = std::min(slots, variant.maxBlockBytes / 16);  // std140: 16 bytes a sphere
+    return std::max(1, slots);
+}
+
 StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& sources,
                                     const Scene& scene, const ShaderVariant& variant,
                                     const std::string& fragmentEntry) {
@@ -43,6 +52,9 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
         variant.specialized ? bakedSceneDefines(scene) : stage.defines();
     if (variant.specialized)
         for (const std::string& d : stage.extraDefines) defines.push_back(d);
+    for (std::string& d : defines)
+        if (d.rfind("MAX_SPHERES ", 0) == 0)
+            d = "MAX_SPHERES " + std::to_string(sphereSlots(stage, scene, variant));
     for (const std::string& d : variant.defines()) defines.push_back(d);
     // The mesh code (scene_meshes.glsl) only where there are meshes: the
     // other scenes' programs stay short.

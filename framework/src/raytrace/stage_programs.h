@@ -37,6 +37,10 @@ struct ShaderVariant {
     // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
     // and discs (the bench's tree-all row; bvh.h says why it is not the default).
     bool treeAll = false;
+    // The device's GL_MAX_UNIFORM_BLOCK_SIZE (the renderer sets it): a
+    // generic program declares no more spheres (MAX_SPHERES) than one of its
+    // blocks holds. 0: no device (`raylab shader`): the stage's limit.
+    int maxBlockBytes = 0;
     std::vector<std::string> defines() const;  // the defines for the switches above
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the
@@ -49,6 +53,11 @@ struct StagePrograms {
     ShaderSource vertex;
     ShaderSource fragment;
 };
+
+// The length of the sphere arrays (MAX_SPHERES, scene_spheres.glsl): the
+// scene's count in a specialised program, else the stage's limit, capped
+// by the device's uniform blocks (ShaderVariant::maxBlockBytes); at least 1.
+int sphereSlots(const StageInfo& stage, const Scene& scene, const ShaderVariant& variant);
 
 // FRAGMENTENTRY: the entry fragment shader; empty for the stage's own.
 // Throws Error for a missing or forbidden #include.

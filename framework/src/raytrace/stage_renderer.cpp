@@ -94,6 +94,9 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
                     ": program.geometry: the ray tracer's renderer takes no geometry shader");
     checkSceneFits(stage_, scene_);
     variant_.todoMarks = target_->hasTodoMarks();  // a check target counts them
+    variant_.maxBlockBytes = maxUniformBlockBytes();
+    checkSpheresFitBlock(scene_, variant_.maxBlockBytes);
+    spheres_ = std::make_unique<SphereBlocks>(scene_, sphereSlots(stage_, scene_, variant_));
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
     rebuild();
@@ -117,16 +120,10 @@ void StageRenderer::uploadSceneConstants() {
     p.use();
     glUniform3fv(p.uniform("uBackground"), 1, glm::value_ptr(scene_.background));
 
-    // Spheres: flat colour and material index (positions are set per frame).
-    std::vector<glm::vec3> colors;
-    std::vector<GLint> materialOf;
-    for (const Sphere& s : scene_.spheres) {
-        colors.push_back(scene_.materials[std::size_t(s.material)].diffuse);
-        materialOf.push_back(s.material);
-    }
+    // Spheres: their arrays live in uniform buffers (sphere_blocks.h),
+    // uploaded once; the program only learns where to find them.
     glUniform1i(p.uniform("uSphereCount"), GLint(scene_.spheres.size()));
-    setIntArray(p, "uSphereMaterial", materialOf);
-    setVec3Array(p, "uSphereColors", colors);
+    SphereBlocks::attach(p.id());
     uploadStaticShapes();
 
     // The material table.
@@ -269,10 +266,8 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     if (meshes_) meshes_->bind(kMeshCornerUnit, kMeshMaterialUnit);
     // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
-    std::vector<glm::vec4> spheres;
-    for (const Sphere& s : scene_.spheres)
-        spheres.emplace_back(s.center + s.motion.offsetAt(timeSeconds), s.radius);
-    setVec4Array(p, "uSpheres", spheres);
+    spheres_->moveTo(timeSeconds);
+    spheres_->bind();
     // Spinning tori turn their axis.
     std::vector<glm::mat3> toLocal;
     for (const Torus& t : scene_.tori) toLocal.push_back(torusToLocal(t.axisAt(timeSeconds)));

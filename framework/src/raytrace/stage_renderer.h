@@ -17,6 +17,7 @@
 
 #include "bvh_buffers.h"
 #include "scene_mesh_buffers.h"
+#include "sphere_blocks.h"
 
 #include <filesystem>
 #include <memory>
@@ -67,6 +68,7 @@ private:
     ShaderVariant variant_;
     std::unique_ptr<BvhBuffers> bvh_;           // made when the program walks a BVH
     std::unique_ptr<SceneMeshBuffers> meshes_;  // made when the scene has meshes
+    std::unique_ptr<SphereBlocks> spheres_;     // the spheres' uniform blocks
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
     std::string fragmentEntry_;

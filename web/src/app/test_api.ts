@@ -16,6 +16,7 @@ export interface ViewRequest {
   stage: string;
   view?: string;               // a check view of the stage; none: the scene's camera
   scene?: string;              // a file under assets/scenes/ instead of the view's
+  sceneText?: string;          // that file's text, made up by the test (no images in it)
   source?: 'solution' | 'lab';
   labFiles?: Record<string, string>;  // a lab "opened from disk": name -> text
   width: number;
@@ -39,7 +40,7 @@ async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: V
   const sources: Sources = req.labFiles
     ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
     : { kind: req.source ?? 'solution' };
-  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh);
+  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh, req.sceneText);
   return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view) };
 }
 

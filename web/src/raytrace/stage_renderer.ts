@@ -4,18 +4,21 @@
 // specialised to its scene (the scene's static data as constants): the
 // generic program keeps everything in uniform arrays, which can exceed a
 // browser's uniform budget (WebGL 2 guarantees only 224 vectors); the
-// specialised one needs only the moving spheres and the spinning tori.
+// specialised one needs only the spheres' centres (a uniform block,
+// sphere_block.ts) and the spinning tori.
 import { Camera } from '../app/camera.js';
 import { type Catalog, type Sources, type StageJson, searchPath } from '../course/catalog.js';
 import { Program } from '../gl/program.js';
 import { cubeMap, dataTexture, textureArray } from '../gl/textures.js';
 import { buildBvh, packBvhTextures } from '../scene/bvh.js';
 import type { Scene } from '../scene/scene.js';
-import { offsetAt, torusAxisAt, torusToLocal } from '../scene/scene.js';
+import { torusAxisAt, torusToLocal } from '../scene/scene.js';
 import { bakedSceneDefines, bakedSceneGlsl } from '../scene/scene_baking.js';
 import { findOpenTodos, type OpenTodo } from '../shader/open_todos.js';
 import { asGlslEs300, assembleShader, type ShaderSource } from '../shader/shader_source.js';
 import type { RenderSettings } from './render_settings.js';
+import { SceneLimitError } from './scene_limit_error.js';
+import { checkSpheresFitBlock, SphereBlock } from './sphere_block.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
 
 // Texture units, one per sampler type (WebGL refuses to draw when samplers
@@ -24,7 +27,7 @@ const TEXTURE_UNIT = 0, SKY_UNIT = 1, BVH_NODE_UNIT = 2, BVH_ITEM_UNIT = 3;
 // Measured natively (ShaderVariant::fastestFor): the BVH repays its walk from 32 spheres.
 const SPHERES_FOR_BVH = 32;
 
-export class SceneLimitError extends Error {}
+export { SceneLimitError };
 
 // The stage's limits (native: checkSceneFits).
 function checkSceneFits(stage: StageJson, scene: Scene, shown: string): void {
@@ -46,16 +49,18 @@ function checkSceneFits(stage: StageJson, scene: Scene, shown: string): void {
   if (scene.skyBox && !l.sky_box) throw new SceneLimitError(`${shown}: sky_box: stage ${stage.id} has no sky box`);
 }
 
-// The specialised program keeps one vec4 per sphere and three per torus in
-// uniforms, plus about 30 for the camera and the switches. A browser that
-// offers fewer vectors would fail to link with a message naming no cause.
+// The specialised program keeps the spheres' centres in a uniform block
+// (sphere_block.ts), three vectors per torus in plain uniforms, plus about
+// 30 for the camera and the switches. A browser that offers too little
+// would fail to link with a message naming no cause.
 const OTHER_UNIFORM_VECTORS = 32;
 function checkUniformBudget(gl: WebGL2RenderingContext, scene: Scene, shown: string): void {
-  const need = scene.spheres.length + 3 * scene.tori.length + OTHER_UNIFORM_VECTORS;
+  checkSpheresFitBlock(scene, Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)), shown);
+  const need = 3 * scene.tori.length + OTHER_UNIFORM_VECTORS;
   const have = Number(gl.getParameter(gl.MAX_FRAGMENT_UNIFORM_VECTORS));
   if (need > have)
-    throw new SceneLimitError(`${shown}: spheres: ${scene.spheres.length} spheres need about ${need} uniform vectors, ` +
-      `but this browser offers ${have} (WebGL 2 guarantees 224): use a scene with fewer spheres`);
+    throw new SceneLimitError(`${shown}: tori: ${scene.tori.length} tori need about ${need} uniform vectors, ` +
+      `but this browser offers ${have} (WebGL 2 guarantees 224): use a scene with fewer tori`);
 }
 
 export interface StageProgramSources {
@@ -84,6 +89,7 @@ export class StageRenderer implements TrackRenderer {
   private sky: WebGLTexture | null = null;
   private bvhNodes: WebGLTexture | null = null;
   private bvhItems: WebGLTexture | null = null;
+  private spheres: SphereBlock | null = null;
   private vao: WebGLVertexArrayObject;
   private buffer: WebGLBuffer;
 
@@ -122,6 +128,8 @@ export class StageRenderer implements TrackRenderer {
       throw e;
     }
     try {
+      SphereBlock.attach(gl, program.id);
+      r.spheres = new SphereBlock(gl, scene);
       if (scene.textures.length) r.textures = await textureArray(gl, scene.textures);
       if (scene.skyBox) r.sky = await cubeMap(gl, scene.skyBox);
       // The tree only for a program that walks it (as natively).
@@ -165,14 +173,7 @@ export class StageRenderer implements TrackRenderer {
     bind(BVH_NODE_UNIT, gl.TEXTURE_2D, this.bvhNodes, 'uBvhNodes');
     bind(BVH_ITEM_UNIT, gl.TEXTURE_2D, this.bvhItems, 'uBvhItems');
     // Only sphere positions and torus axes change from frame to frame.
-    if (this.scene.spheres.length) {
-      const spheres = new Float32Array(4 * this.scene.spheres.length);
-      this.scene.spheres.forEach((s, i) => {
-        const o = offsetAt(s.motion, timeSeconds);
-        spheres.set([s.center[0] + o[0], s.center[1] + o[1], s.center[2] + o[2], s.radius], 4 * i);
-      });
-      gl.uniform4fv(p.uniform('uSpheres[0]'), spheres);
-    }
+    this.spheres!.bindAt(timeSeconds);
     if (this.scene.tori.length) {
       const m = new Float32Array(9 * this.scene.tori.length);
       this.scene.tori.forEach((t, i) => m.set(torusToLocal(torusAxisAt(t, timeSeconds)), 9 * i));
@@ -186,6 +187,7 @@ export class StageRenderer implements TrackRenderer {
   dispose(): void {
     const gl = this.gl;
     this.program.dispose();
+    this.spheres?.dispose();
     for (const t of [this.textures, this.sky, this.bvhNodes, this.bvhItems]) if (t) gl.deleteTexture(t);
     gl.deleteVertexArray(this.vao);
     gl.deleteBuffer(this.buffer);

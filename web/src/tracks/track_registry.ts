@@ -27,12 +27,15 @@ async function fetchText(shown: string, url: string, what: string): Promise<stri
 
 // SCENENAME: a file under assets/scenes/ ("lite.json", "fur/torus.json").
 // BVH: the ray tracer's BVH switch (stage 08); undefined: as natively.
+// SCENETEXT: the scene file's text, not fetched (the browser tests' made-up
+// scenes, window.raylab.renderView); it is still shown as assets/scenes/SCENENAME.
 export async function loadStage(
   gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
+  sceneText?: string,
 ): Promise<LoadedStage> {
   const shown = `assets/scenes/${sceneName}`;
   const url = `${ROOT}/${shown}`;
-  const text = await fetchText(shown, url, 'scene file');
+  const text = sceneText ?? await fetchText(shown, url, 'scene file');
   if (stage.track === 'raytrace') {
     const scene = parseScene(text, url, shown);
     const renderer = await StageRenderer.create(gl, catalog, stage, sources, scene, shown, bvh);

@@ -9,7 +9,9 @@
 //  4. a lab with a syntax error reports the right file:line in the page;
 //  5. controls: a wrong picture and another scene's program are told apart;
 //  6. a watched lab folder notices a saved file;
-//  7. no console errors, page errors or failed requests.
+//  7. no console errors, page errors or failed requests;
+//  8. stage 08 with 1000 spheres (uniform blocks) equals the native render,
+//     and a scene past the stage's 4096 is refused in one line.
 // Usage: node tests/browser/render_views.mjs --raylab ../build/raylab --out DIR [--stages 01,08]
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -23,6 +25,37 @@ const outDir = resolve(option('--out', join(projectRoot, 'build/web-test')));
 const only = option('--stages', '').split(',').filter(Boolean);
 
 const failures = [];
+
+// N - 1 small spheres on a jittered grid in [-1, 1]^3 in four materials
+// (one a mirror), every hundredth one moving, and one big mirror in front.
+function manySpheres(n) {
+  const side = Math.ceil(Math.cbrt(n - 1)), cell = 2 / side;
+  let state = 12345;
+  const jitter = () => {
+    state = (Math.imul(state, 1664525) + 1013904223) >>> 0;
+    return ((state >>> 8) / (1 << 24) - 0.5) * 0.3 * cell;
+  };
+  const kinds = ['clay', 'green', 'blue', 'mirror'];
+  const spheres = [];
+  for (let i = 0; i + 1 < n; ++i) {
+    const c = [i % side, Math.floor(i / side) % side, Math.floor(i / (side * side))];
+    const sphere = { center: c.map((x) => -1 + (x + 0.5) * cell + jitter()), radius: 0.3 * cell, material: kinds[(i * 7) % 4] };
+    if (i % 100 === 37) sphere.motion = { axis: [0, 1, 0], amplitude: 0.45 * cell, period: 3 };
+    spheres.push(sphere);
+  }
+  spheres.push({ center: [0.75, -0.55, 1.6], radius: 0.45, material: 'mirror' });
+  const plastic = (d) => ({ ambient: d.map((x) => 0.1 * x), diffuse: d, specular: [0.4, 0.4, 0.4], shininess: 30 });
+  return {
+    background: [0.62, 0.76, 0.93],
+    camera: { position: [0, 0.4, 3.6], yaw: 0, pitch: -6, fov_y: 45 },
+    materials: {
+      clay: plastic([0.78, 0.4, 0.22]), green: plastic([0.2, 0.6, 0.3]), blue: plastic([0.3, 0.4, 0.9]),
+      mirror: { ...plastic([0.9, 0.9, 0.9]), type: 'mirror' },
+    },
+    lights: [{ position: [-4, 6, 5], color: [0.9, 0.9, 0.9] }],
+    spheres,
+  };
+}
 // The BVH accessors are the one file the web replaces (web/shaders/bvh_access.glsl).
 const keep = (text) => text.split('\n').filter((l) => !/^(framework|web)\/shaders\/bvh_access\.glsl:/.test(l));
 const fail = (what) => { failures.push(what); console.log(`FAIL ${what}`); };
@@ -131,6 +164,37 @@ try {
     fail(`a watched lab folder: ${JSON.stringify(watched)}`);
   else if (!/has no .*\/ folder/.test(watched.wrongStage)) fail(`a watched labs/ folder without the stage: "${watched.wrongStage}"`);
   else console.log(`ok   a watched lab folder (${watched.shown}/) notices a saved file; another stage: "${watched.wrongStage}"`);
+
+  // 8. Many spheres (a uniform block, src/raytrace/sphere_block.ts): a
+  // made-up stage 08 scene of 1000 spheres (past the old limit of 128)
+  // against the native render of the same file, within the graders'
+  // tolerance; 4097 spheres refused in one line.
+  const full = stages.find((s) => s.id === '08-full');
+  if (full) {
+    const blockBytes = await page.evaluate(() => {
+      const gl = document.createElement('canvas').getContext('webgl2');
+      return gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE);
+    });
+    const sceneText = JSON.stringify(manySpheres(1000));
+    const sceneFile = join(outDir, 'many-spheres.json');
+    writeFileSync(sceneFile, sceneText);
+    const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: full.id, scene: 'many-spheres.json', sceneText, width: 160, height: 120 });
+    if (!r.ok) fail(`08-full + 1000 spheres: ${r.error}`);
+    else {
+      const file = join(outDir, 'many-spheres.png');
+      writeFileSync(file, dataUrlBytes(r.png));
+      const native = join(outDir, 'many-spheres.native.png');
+      execFileSync(raylab, ['render', '--stage', full.id, '--solution', '--scene', sceneFile, '--size', '160x120', '--out', native], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+      const c = spawnSync(raylab, ['compare', file, native], { encoding: 'utf8' });
+      const verdict = (c.stdout + c.stderr).trim().replace(`${file}: `, '');
+      if (c.status === 0) console.log(`ok   08-full + 1000 spheres (MAX_UNIFORM_BLOCK_SIZE ${blockBytes}): as natively: ${verdict}`);
+      else fail(`08-full + 1000 spheres: ${verdict}`);
+    }
+    const tooMany = await page.evaluate((req) => window.raylab.renderView(req), { stage: full.id, scene: 'many-spheres.json', sceneText: JSON.stringify(manySpheres(4097)), width: 160, height: 120 });
+    const expected = 'assets/scenes/many-spheres.json: spheres: 4097 spheres, but stage 08-full supports at most 4096';
+    if (tooMany.ok || tooMany.error !== expected) fail(`08-full + 4097 spheres: expected "${expected}", got ${tooMany.ok ? 'a picture' : `"${tooMany.error}"`}`);
+    else console.log(`ok   08-full + 4097 spheres: "${tooMany.error}"`);
+  }
 
   // 7. Nothing went wrong behind the scenes.
   for (const p of problems) fail(p);

@@ -1,0 +1,58 @@
+#pragma once
+// The scene's spheres on the GPU: three uniform buffers behind the shaders'
+// uniform blocks SphereGeometry (uSpheres), SphereColors (uSphereColors) and
+// SphereMaterials (uSphereMaterial) (framework/shaders/scene_spheres.glsl,
+// scene_materials.glsl). Blocks, not plain uniform arrays: plain ones share
+// about 1024 vec4s per fragment shader (NVIDIA) with everything else, a
+// block holds GL_MAX_UNIFORM_BLOCK_SIZE bytes (64 KB on llvmpipe and
+// NVIDIA: 4096 spheres) on its own.
+// std140 gives every element of these arrays 16 bytes, an int or a vec3
+// as much as a vec4: hence one block per array, each within the limit.
+// Needs a current GL context. (Students need not read this file.)
+#include "gl.h"
+#include "scene.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// Bytes one sphere takes in each block (std140 array stride).
+constexpr int kSphereBlockStride = 16;
+
+// GL_MAX_UNIFORM_BLOCK_SIZE of the current context.
+int maxUniformBlockBytes();
+
+// Throws Error (one line naming the limit) when SCENE has more spheres than a
+// block of MAXBLOCKBYTES holds. Apart from the GL query, for tests.
+void checkSpheresFitBlock(const Scene& scene, int maxBlockBytes);
+
+class SphereBlocks {
+public:
+    // SLOTS: the arrays' declared length (MAX_SPHERES, sphereSlots()): the
+    // buffers hold that many entries, zero beyond the scene's spheres (as
+    // plain uniform arrays read), so a block never reads past its buffer.
+    SphereBlocks(const Scene& scene, int slots);
+    ~SphereBlocks();
+    SphereBlocks(const SphereBlocks&) = delete;
+    SphereBlocks& operator=(const SphereBlocks&) = delete;
+
+    // Ties PROGRAM's blocks to this class's binding points (a block the
+    // program lacks or never reads is skipped). Once per program.
+    static void attach(GLuint program);
+    // Binds the buffers to the binding points: every frame, since other
+    // renderers in the same context use the same points.
+    void bind() const;
+    // Moves the spheres with a motion to time T: only the range from the
+    // first to the last moving sphere is uploaded; nothing when none moves.
+    void moveTo(float t);
+
+private:
+    std::vector<Sphere> spheres_;
+    std::size_t firstMoving_ = 0, endMoving_ = 0;  // [first, end) holds every moving sphere
+    std::vector<glm::vec4> centres_;               // the uSpheres block's contents
+    float shownTime_ = 0.0f;                       // the time centres_ hold
+    GLuint buffers_[3] = {0, 0, 0};                // geometry, colours, materials
+};
+
+}  // namespace raylab

@@ -33,6 +33,13 @@ uniform int uDiscMaterial[MAX_DISCS];
 uniform int uTriangleCount;
 uniform vec3 uTriangleVertices[3 * MAX_TRIANGLES];
 uniform int uTriangleMaterial[MAX_TRIANGLES];
+// The triangles in groups (runs of one material, such as the faces of one
+// box) with the box around each group's corners: stage 08 skips a group
+// whose box the ray misses. Group g holds the triangles first .. first +
+// count - 1.
+uniform int uTriangleGroupCount;
+uniform vec4 uTriangleGroupLow[MAX_TRIANGLES];   // xyz = box min, w = first
+uniform vec4 uTriangleGroupHigh[MAX_TRIANGLES];  // xyz = box max, w = count
 #endif
 
 // Tori: a ring of radius `major` (centre to the middle of the tube) with a

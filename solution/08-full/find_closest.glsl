@@ -9,7 +9,9 @@
 // (framework/src/raytrace/scene/bvh.cpp): a tree of boxes, each box holding
 // its children. A ray that misses a box skips every object inside it. The
 // few other objects (planes, the disc, the scene's own triangles, the
-// torus) are tested one by one as in lab 05.
+// torus) are tested one by one as in lab 05 - the triangles group by group,
+// each group behind its box (framework/src/raytrace/scene/triangle_groups.h
+// says why they are not in the tree).
 //
 // Why one kind per leaf: a CPU renderer such as llvmpipe runs 8 pixels in
 // lock-step and executes both sides of an `if` whenever the pixels disagree.
@@ -45,9 +47,18 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
         keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);
     for (int i = 0; i < uDiscCount && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
-    for (int i = 0; i < uTriangleCount && !(stopAtFirst && hit.id >= 0); ++i)
-        keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
-                   KIND_TRIANGLE, i);
+    // The triangles group by group (scene_objects.glsl): a group whose box
+    // the ray misses, or meets only beyond the nearest hit, is skipped.
+    vec3 invDir = inverseDirection(ray.dir);
+    for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {
+        vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
+        vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
+        if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;
+        int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
+        for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
+            keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+                       KIND_TRIANGLE, i);
+    }
     for (int i = 0; i < uTorusCount && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
 }

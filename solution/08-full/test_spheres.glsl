@@ -6,21 +6,9 @@
 // bvhItem(first) .. bvhItem(first + count - 1). An inner node (code 0) has
 // its children at nodes first and first + 1.
 #include "bvh_access.glsl"
+#include "ray_box.glsl"
 
 const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
-
-// Where the ray enters the box lo..hi (0 when it starts inside), or T_FAR
-// when it misses it or reaches it only beyond tMax (the slab test).
-float enterBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax)
-{
-    vec3 t0 = (lo - origin) * invDir;
-    vec3 t1 = (hi - origin) * invDir;
-    vec3 tNear = min(t0, t1);
-    vec3 tFar = max(t0, t1);
-    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
-    return enter <= leave ? enter : T_FAR;
-}
 
 float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
 {
@@ -31,10 +19,7 @@ float enterNode(int node, vec3 origin, vec3 invDir, float tMax)
 // stops at the first object found (shadow rays need no more).
 void walkBvh(Ray ray, inout Hit hit, bool anyHit)
 {
-    // 1/0 would give 0 * inf = NaN in the slab test for a ray exactly on a
-    // box face: a tiny direction component instead gives a huge finite slope.
-    vec3 d = ray.dir;
-    vec3 invDir = 1.0 / vec3(abs(d.x) < 1e-20 ? 1e-20 : d.x, abs(d.y) < 1e-20 ? 1e-20 : d.y, abs(d.z) < 1e-20 ? 1e-20 : d.z);
+    vec3 invDir = inverseDirection(ray.dir);
     int stackNode[BVH_STACK_SIZE];
     float stackEnter[BVH_STACK_SIZE];
     int size = 0;

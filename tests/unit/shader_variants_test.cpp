@@ -65,6 +65,15 @@ const Variant kVariants[] = {
      "framework/shaders/variants/old-path/08-full/light_visibility.glsl",
      {"if (dot(normal, dir) <= 0.0) return false;",
       "return !findBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight);"}},
+    {"solution/08-full/find_closest.glsl",
+     "framework/shaders/variants/old-path/08-full/find_closest.glsl",
+     {"vec3 invDir = inverseDirection(ray.dir);",
+      "for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {",
+      "vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;",
+      "vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;",
+      "if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;",
+      "int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);",
+      "for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)", "}"}},
     {"solution/08-full/test_spheres.glsl",
      "framework/shaders/variants/tree-all/08-full/test_spheres.glsl",
      {}},
@@ -73,11 +82,16 @@ const Variant kVariants[] = {
      {"for (int i = 0; i < uDiscCount && !(stopAtFirst && hit.id >= 0); ++i)",
       "keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, "
       "i);",
-      "for (int i = 0; i < uTriangleCount && !(stopAtFirst && hit.id >= 0); ++i)",
+      "vec3 invDir = inverseDirection(ray.dir);",
+      "for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {",
+      "vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;",
+      "vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;",
+      "if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;",
+      "int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);",
+      "for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)",
       "keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + "
-      "1], "
-      "uTriangleVertices[3 * i + 2]),",
-      "KIND_TRIANGLE, i);"}},
+      "1], uTriangleVertices[3 * i + 2]),",
+      "KIND_TRIANGLE, i);", "}"}},
 };
 
 }  // namespace

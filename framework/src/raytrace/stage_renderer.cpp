@@ -1,4 +1,5 @@
 #include "stage_renderer.h"
+#include "triangle_groups.h"
 
 #include "error.h"
 #include "paths.h"
@@ -225,6 +226,14 @@ void StageRenderer::uploadStaticShapes() {
     glUniform1i(p.uniform("uTriangleCount"), GLint(triangleMaterial.size()));
     setVec3Array(p, "uTriangleVertices", vertices);
     setIntArray(p, "uTriangleMaterial", triangleMaterial);
+    std::vector<glm::vec4> groupLow, groupHigh;
+    for (const TriangleGroup& g : triangleGroups(scene_)) {
+        groupLow.emplace_back(g.lo, float(g.first));
+        groupHigh.emplace_back(g.hi, float(g.count));
+    }
+    glUniform1i(p.uniform("uTriangleGroupCount"), GLint(groupLow.size()));
+    setVec4Array(p, "uTriangleGroupLow", groupLow);
+    setVec4Array(p, "uTriangleGroupHigh", groupHigh);
 
     std::vector<glm::vec4> tori;
     std::vector<GLfloat> minor;

@@ -6,6 +6,7 @@
 import { dot, f32 } from './float32.js';
 import { formatG } from './format_g.js';
 import { Scene, Vec3 } from './scene.js';
+import { triangleGroups } from './triangle_groups.js';
 
 // A float literal GLSL reads back as exactly the same float: 9 significant
 // digits (%.9g), and always with a '.' or an exponent (a bare "1" would be
@@ -75,6 +76,10 @@ export function bakedSceneGlsl(scene: Scene, shownFile: string = scene.file): st
     g += constInt('uTriangleCount', scene.triangles.length);
     g += vec3s('uTriangleVertices', scene.triangles.flatMap((t) => t.vertices));
     g += ints('uTriangleMaterial', scene.triangles.map((t) => t.material));
+    const groups = triangleGroups(scene);
+    g += constInt('uTriangleGroupCount', groups.length);
+    g += vec4s('uTriangleGroupLow', groups.map((t) => [...t.lo, t.first]));
+    g += vec4s('uTriangleGroupHigh', groups.map((t) => [...t.hi, t.count]));
 
     g += constInt('uTorusCount', scene.tori.length);
     g += vec4s('uTori', scene.tori.map((t) => [...t.center, t.majorRadius]));

@@ -1,5 +1,6 @@
 #include "scene_baking.h"
 #include "text_format.h"
+#include "triangle_groups.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,6 +120,14 @@ std::string bakedSceneGlsl(const Scene& scene) {
     g += vec3s("uTriangleVertices", vertices);
     g += ints("uTriangleMaterial",
               gather(scene.triangles, [](const Triangle& t) { return t.material; }));
+    const std::vector<TriangleGroup> groups = triangleGroups(scene);
+    g += constInt("uTriangleGroupCount", int(groups.size()));
+    g += vec4s("uTriangleGroupLow", gather(groups, [](const TriangleGroup& t) {
+                   return glm::vec4(t.lo, float(t.first));
+               }));
+    g += vec4s("uTriangleGroupHigh", gather(groups, [](const TriangleGroup& t) {
+                   return glm::vec4(t.hi, float(t.count));
+               }));
 
     g += constInt("uTorusCount", int(scene.tori.size()));
     g += vec4s("uTori", gather(scene.tori,

@@ -2,6 +2,7 @@
 // framework does not define RAYLAB_BVH (`raylab demo --no-bvh`, `raylab
 // bench`, scenes with few spheres): lab 05's linear search.
 // Not part of any lab: students never see this file.
+#include "ray_box.glsl"  // for find_closest.glsl's groups of triangles
 
 void testSpheres(Ray ray, inout Hit hit, bool stopAtFirst)
 {

@@ -16,6 +16,11 @@ std::unique_ptr<TrackRenderer> rayTracer(const StageInfo& stage, const StageSour
     Scene scene = loaded ? *loaded : loadScene(file);
     ShaderVariant variant =
         use == RendererUse::Fastest ? ShaderVariant::fastestFor(scene) : ShaderVariant{};
+    // The window showing the solution (`raylab demo`, `raylab run --solution`)
+    // may trace as the headless demo does, without the rays too faint to
+    // change a pixel; a student's trace.glsl is never replaced by the variant.
+    if (use == RendererUse::Fastest && !sources.lab)
+        variant.weightCut = ShaderVariant::kDemoWeightCut;
     return std::make_unique<StageRenderer>(stage, sources, std::move(scene), width, height, format,
                                            "", variant);
 }

@@ -9,8 +9,8 @@
 // 3. Then y^2 + p/2 + m = +-(s y - q / (2 s)) with s = sqrt(2 m): two
 //    quadratics, up to four roots.
 // Floating-point error grows fast with the size of the coefficients, so the
-// caller keeps them small (see intersect_torus.glsl), and every root gets
-// two Newton steps on the original polynomial.
+// caller keeps them small (see intersect_torus.glsl); m gets two Newton steps
+// on the resolvent and every root two on the original polynomial.
 
 // The largest real root of z^3 + b z^2 + c z + d = 0.
 float largestCubicRoot(float b, float c, float d)
@@ -52,7 +52,16 @@ int solveQuartic(vec4 a, out vec4 roots)
     float q = a1 - a2 * a3 / 2.0 + sq3 * a3 / 8.0;
     float r = a0 - a1 * a3 / 4.0 + a2 * sq3 / 16.0 - 3.0 * sq3 * sq3 / 256.0;
 
-    float m = largestCubicRoot(p, p * p / 4.0 - r, -q * q / 8.0);
+    float c1 = p * p / 4.0 - r, c0 = -q * q / 8.0;  // the resolvent's coefficients
+    float m = largestCubicRoot(p, c1, c0);
+    // Cardano's and the trigonometric formula lose digits near their edge
+    // cases, and an m that is a little off loses whole roots of the quartic
+    // (deep hits, not grazing ones: the torus's numerics tests found them).
+    // Two Newton steps on the cubic bring m back to a few float steps.
+    for (int step = 0; step < 2; ++step) {
+        float slope = (3.0 * m + 2.0 * p) * m + c1;
+        if (abs(slope) > 1e-12) m -= (((m + p) * m + c1) * m + c0) / slope;
+    }
     int count = 0;
     roots = vec4(0.0);
     if (m > 1e-7) {

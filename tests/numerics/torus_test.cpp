@@ -67,35 +67,24 @@ Reference traceReference(dvec3 o, dvec3 d) {
 
 struct Figures {
     double wrongShare = 0, p50 = 0, p99 = 0, maxUlps = 0;
-    int rays = 0, hits = 0;
+    int rays = 0, hits = 0, decided = 0;
+    int nearMisses = 0;  // decided misses that pass within r / 100 of the surface
 };
 
-Figures measure(double distance, bool closedForm) {
+// Runs the rays (float32 origins and directions) through the solver and
+// compares each with the double reference.
+Figures measureRays(const std::vector<std::pair<dvec3, dvec3>>& rays, bool closedForm) {
     FunctionSpec spec;
     spec.name = "intersectTorusLocal";
     spec.includes = {"ray.glsl", "scene_objects.glsl", "intersect_torus.glsl"};
     spec.call = "vec4(intersectTorusLocal(Ray(a0.xyz, a1.xyz), a2.x, a2.y), 0.0, 0.0, 1.0)";
-    // The eye looks at the torus from a tilted direction; rays aim at a grid
-    // over a square a little larger than the torus (misses and grazes too).
-    const dvec3 eye = distance * glm::normalize(dvec3(0.3, -0.8, 0.5));
-    const dvec3 forward = glm::normalize(-eye);
-    const dvec3 right = glm::normalize(glm::cross(forward, dvec3(0, 0, 1)));
-    const dvec3 up = glm::cross(right, forward);
     std::vector<Reference> refs;
-    for (int y = 0; y < kGrid; ++y)
-        for (int x = 0; x < kGrid; ++x) {
-            dvec3 target =
-                right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid);
-            // The GPU sees float32 inputs: the reference takes the same numbers.
-            dvec3 o(f32(eye.x), f32(eye.y), f32(eye.z));
-            dvec3 dir = glm::normalize(target - o);
-            dir = dvec3(f32(dir.x), f32(dir.y), f32(dir.z));
-            FunctionCase c;
-            c.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(kR, kr, 0, 0),
-                    glm::dvec4(0.0)};
-            spec.cases.push_back(c);
-            refs.push_back(traceReference(o, dir));
-        }
+    for (const auto& [o, dir] : rays) {
+        FunctionCase c;
+        c.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(kR, kr, 0, 0), glm::dvec4(0.0)};
+        spec.cases.push_back(c);
+        refs.push_back(traceReference(o, dir));
+    }
     std::vector<std::string> defines;
     if (closedForm) defines.push_back("TORUS_SOLVER_CLOSED_FORM");
     std::vector<glm::vec4> got = runSolution(spec, "05-primitives", defines);
@@ -110,6 +99,7 @@ Figures measure(double distance, bool closedForm) {
         if (!refs[i].ambiguous) {
             ++decided;
             wrong += gotHit != refHit;
+            f.nearMisses += !refHit && refs[i].margin < 0.01 * kr;
             if (gotHit != refHit && !closedForm && wrong <= 5)
                 std::printf(
                     "[ wrong    ] ray %zu: reference %s (margin %.3g), solver %s t = %.9g\n", i,
@@ -120,11 +110,32 @@ Figures measure(double distance, bool closedForm) {
             ulps.push_back(std::fabs(double(got[i].x) - refs[i].t) / floatUlp(refs[i].t));
     }
     f.rays = int(refs.size());
+    f.decided = decided;
     f.wrongShare = double(wrong) / double(std::max(decided, 1));
     f.p50 = percentile(ulps, 50);
     f.p99 = percentile(ulps, 99);
     f.maxUlps = percentile(ulps, 100);
     return f;
+}
+
+Figures measure(double distance, bool closedForm) {
+    // The eye looks at the torus from a tilted direction; rays aim at a grid
+    // over a square a little larger than the torus (misses and grazes too).
+    const dvec3 eye = distance * glm::normalize(dvec3(0.3, -0.8, 0.5));
+    const dvec3 forward = glm::normalize(-eye);
+    const dvec3 right = glm::normalize(glm::cross(forward, dvec3(0, 0, 1)));
+    const dvec3 up = glm::cross(right, forward);
+    std::vector<std::pair<dvec3, dvec3>> rays;
+    for (int y = 0; y < kGrid; ++y)
+        for (int x = 0; x < kGrid; ++x) {
+            dvec3 target =
+                right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid);
+            // The GPU sees float32 inputs: the reference takes the same numbers.
+            dvec3 o(f32(eye.x), f32(eye.y), f32(eye.z));
+            dvec3 dir = glm::normalize(target - o);
+            rays.emplace_back(o, dvec3(f32(dir.x), f32(dir.y), f32(dir.z)));
+        }
+    return measureRays(rays, closedForm);
 }
 
 void print(const char* solver, double distance, const Figures& f) {
@@ -151,4 +162,46 @@ TEST(TorusNumerics, DefaultSolverIsRightAtEveryDistanceAndTheClosedFormIsNot) {
     // The difference the default makes: far away the closed form gets many
     // rays wrong (the seed saw the torus fall apart).
     EXPECT_GT(closedFormWrongFar, 0.05);
+}
+
+// Rays that just graze the tube, where a root is easiest to lose and a quick
+// "no root here" test (the solver's Bernstein bound) most likely to be
+// wrong: tangent to the surface at points all around it, in every
+// direction of the tangent plane, moved off it by +-0.1% to 10% of r
+// (inward: a short chord; outward: a near miss). The solver must decide
+// every one of them like the double reference (where the reference itself
+// calls a ray undecidable in float, either answer is right).
+TEST(TorusNumerics, GrazingRaysAreDecidedRight) {
+    std::vector<std::pair<dvec3, dvec3>> rays;
+    const double offsets[] = {0.001, 0.003, 0.01, 0.03, 0.1};
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < 16; ++j)
+            for (int k = 0; k < 8; ++k)
+                for (double offset : offsets)
+                    for (double side : {-1.0, 1.0}) {
+                        const double phi = 2.0 * M_PI * (i + 0.3) / 16.0;    // around the axis
+                        const double theta = 2.0 * M_PI * (j + 0.1) / 16.0;  // around the tube
+                        const double psi = M_PI * (k + 0.2) / 8.0;           // in the tangent plane
+                        const dvec3 normal(std::cos(theta) * std::cos(phi),
+                                           std::cos(theta) * std::sin(phi), std::sin(theta));
+                        const dvec3 point =
+                            kR * dvec3(std::cos(phi), std::sin(phi), 0.0) + kr * normal;
+                        const dvec3 along(-std::sin(phi), std::cos(phi), 0.0);
+                        const dvec3 across = glm::cross(normal, along);
+                        const dvec3 dir = std::cos(psi) * along + std::sin(psi) * across;
+                        // From 4 R back: outside the bounding sphere.
+                        const dvec3 o = point + side * offset * kr * normal - 4.0 * kR * dir;
+                        const dvec3 d = glm::normalize(dvec3(f32(dir.x), f32(dir.y), f32(dir.z)));
+                        rays.emplace_back(dvec3(f32(o.x), f32(o.y), f32(o.z)),
+                                          dvec3(f32(d.x), f32(d.y), f32(d.z)));
+                    }
+    Figures f = measureRays(rays, false);
+    print("default", 4.0, f);
+    std::printf("[ figure   ] grazing rays: %d decided, %d of them misses within r/100 of the "
+                "surface\n",
+                f.decided, f.nearMisses);
+    EXPECT_GT(f.decided, int(rays.size()) / 2);
+    EXPECT_GT(f.nearMisses, 1000) << "the rays must include near misses";
+    EXPECT_GT(f.hits, 1000) << "and short chords";
+    EXPECT_EQ(f.wrongShare, 0.0);
 }

@@ -8,12 +8,13 @@
 // a ray skip whole groups of spheres whose box it misses.
 //
 // Why not the scene file's triangles and discs (stage 08 allows 32 and 4):
-// so few are tested faster one after the other than through the tree.
-// Measured on pro (14 triangles, a disc): with them in the tree a frame
-// takes about 1.5 times as long (`raylab bench`, row tree-all). A loop over
-// a handful of objects is uniform across the 8 lock-step pixels and, in
-// the specialised program, unrolled over constant corners; the tree's leaf
-// tests are divergent.
+// so few are tested faster in a loop than through the tree. Measured on pro
+// (14 triangles, a disc): with them in the tree a frame takes 15% longer,
+// on lite 16% (`raylab bench`, row tree-all; docs/bench/README.md).
+// llvmpipe runs every loop body at least once, so each walk step would
+// also run a triangle test and a disc test; the loop over the scene's few
+// triangles runs in step for all 8 lock-step pixels and, in the
+// specialised program, over constant corners (triangle_groups.h).
 //
 // Why one kind per leaf: llvmpipe runs 8 pixels in lock-step and executes
 // both sides of a divergent `if`; a leaf of mixed kinds needs an `if` on the

@@ -291,6 +291,16 @@ TEST(BenchMarkdown, EmbreeRowGivesEveryRowWithTheSameRaysItsRatio) {
         << md;
     EXPECT_NE(md.find("| 300.0 | 1.50 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| embree-cast+wcut1/255 800x600 d8 |"), std::string::npos) << md;
+    // tree-all finds the same rays differently: set against the lever's own
+    // Embree row, not against one of its own.
+    BenchRow treeAll = cut;
+    treeAll.lever = "tree-all+wcut1/255";
+    treeAll.frameMs = 75;
+    md = benchMarkdown({treeAll, embree, embreeCut}, "t", "c");
+    EXPECT_NE(md.find("| 75.0 | 1.50 |"), std::string::npos) << md;
+    EXPECT_EQ(rayLever("tree-all"), "");
+    EXPECT_EQ(rayLever("tree-all+wcut1/255"), "wcut1/255");
+    EXPECT_EQ(rayLever("old-path"), "old-path");
     // No Embree row: no Embree line.
     EXPECT_EQ(benchMarkdown({glsl}, "t", "c").find("embree-cast"), std::string::npos);
 }

@@ -1,6 +1,7 @@
 #include "stage_programs.h"
 
 #include "scene_baking.h"
+#include "sphere_blocks.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -39,7 +40,7 @@ int sphereSlots(const StageInfo& stage, const Scene& scene, const ShaderVariant&
     if (variant.specialized) return std::max(1, int(scene.spheres.size()));
     int slots = stage.limits.spheres;
     if (variant.maxBlockBytes > 0)
-        slots = std::min(slots, variant.maxBlockBytes / 16);  // std140: 16 bytes a sphere
+        slots = std::min(slots, variant.maxBlockBytes / kSphereBlockStride);
     return std::max(1, slots);
 }
 

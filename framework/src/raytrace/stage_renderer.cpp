@@ -1,8 +1,8 @@
 #include "stage_renderer.h"
-#include "triangle_groups.h"
 
 #include "error.h"
 #include "paths.h"
+#include "triangle_groups.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -3,7 +3,8 @@
 // scene's triangles and discs are found through the BVH
 // (variants/tree-all/08-full/test_spheres.glsl), so testOthers leaves them
 // out. Not part of any lab: students never see this file.
-// The nearest object along a ray, for the full demo.
+// The nearest object along a ray, for the full demo. (The text below is the
+// solution's; here the scene's triangles and discs are in the tree.)
 //
 // Lab 05's findClosest tests every object for every ray. That is fine for a
 // dozen objects; the pro scene has 110 spheres, a mesh from an OBJ file may

@@ -30,8 +30,17 @@ uniform vec3 uMatN[MAX_MATERIALS];
 uniform vec3 uMatK[MAX_MATERIALS];
 uniform int uMatTexture[MAX_MATERIALS];
 uniform int uMatNormalMap[MAX_MATERIALS];
-layout(std140) uniform SphereMaterials {  // a block, as the spheres (scene_spheres.glsl)
-    int uSphereMaterial[MAX_SPHERES];    // material index of each sphere
+#endif
+#ifndef SPHERE_BLOCK  // scene_spheres.glsl's, where this file comes without it
+#ifdef RAYLAB_SPHERE_STORAGE
+#define SPHERE_BLOCK readonly buffer
+#else
+#define SPHERE_BLOCK uniform
+#endif
+#endif
+#if !defined(SCENE_BAKED) || defined(RAYLAB_SPHERE_STORAGE)  // else constants (scene_baking.cpp)
+layout(std140) SPHERE_BLOCK SphereMaterials {  // a block, as the spheres (scene_spheres.glsl)
+    int uSphereMaterial[MAX_SPHERES];          // material index of each sphere
 };
 #endif
 

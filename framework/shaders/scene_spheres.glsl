@@ -6,12 +6,21 @@
 #ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uSphereCount;                   // how many entries below are used
 #endif
-layout(std140) uniform SphereGeometry {
+// Thousands of spheres, more than a uniform block holds, come in storage
+// blocks instead (OpenGL 4.3): read the same way.
+#ifdef RAYLAB_SPHERE_STORAGE
+#define SPHERE_BLOCK readonly buffer
+#else
+#define SPHERE_BLOCK uniform
+#endif
+layout(std140) SPHERE_BLOCK SphereGeometry {
     vec4 uSpheres[MAX_SPHERES];             // xyz = centre, w = radius
 };
-#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
-layout(std140) uniform SphereColors {
+#if !defined(SCENE_BAKED) || defined(RAYLAB_SPHERE_STORAGE)  // else constants (scene_baking.cpp)
+layout(std140) SPHERE_BLOCK SphereColors {
     vec3 uSphereColors[MAX_SPHERES];        // flat colour of each sphere
 };
+#endif
+#ifndef SCENE_BAKED  // else constants (framework/src/raytrace/scene/scene_baking.cpp)
 uniform vec3 uBackground;                   // seen where a ray hits nothing
 #endif

@@ -3,9 +3,13 @@
 // BVH takes to build (growth_report.h). Two series, each in one fixed view:
 //   mesh:    a sphere mesh (makeShape) of 8 to about a million triangles,
 //            filling the middle of the picture, on a floor, one light;
-//   spheres: 10 to 4096 spheres (stage 08's limit: what one 64 KB uniform
-//            block holds, sphere_blocks.h; less where the device's blocks
-//            are smaller) on a jittered grid in the same box.
+//   spheres: 10 to 4096 spheres (what one 64 KB uniform block holds,
+//            sphere_blocks.h; less where the device's blocks are smaller)
+//            on a jittered grid in the same box;
+//   spheres in storage blocks: the same scenes of 1000 and 4096 spheres,
+//            and 10,000, with the arrays in storage blocks (OpenGL 4.3, as
+//            a scene past a uniform block gets them), where the device has
+//            them: side by side with the uniform blocks at 1000 and 4096.
 // Both programs are the specialised ones (the scene compiled in), as the
 // demo draws. The linear search stops at kLinearMaxTriangles: beyond, a
 // frame takes minutes on llvmpipe and adds nothing but its slope - and
@@ -13,7 +17,7 @@
 // tests/e2e/bvh_images_test.cpp) would cut its frames short from about 30k
 // triangles (a primary and a shadow ray per pixel), so they would look
 // faster than they are. The spheres' linear search runs to the end: at
-// 4096 spheres its two rays a pixel stay at 8192 iterations, below the limiter.
+// 10,000 spheres its two rays a pixel stay at 20,000 iterations, below the limiter.
 #include "bvh.h"
 #include "command.h"
 #include "commands.h"
@@ -54,6 +58,8 @@ struct Point {
     std::vector<double> frameMs;
 };
 
+constexpr const char* kStorageSeries = "spheres in storage blocks";
+
 Point prepare(const StageInfo& stage, const StageSources& sources, const Scene& scene,
               const std::string& series, long objects, bool bvh, int width, int height) {
     GrowthRow row;
@@ -73,6 +79,7 @@ Point prepare(const StageInfo& stage, const StageSources& sources, const Scene& 
     ShaderVariant variant;
     variant.bvh = bvh;
     variant.specialized = true;
+    variant.sphereStorage = series == kStorageSeries;
     Point p{row,
             std::make_unique<StageRenderer>(stage, sources, scene, width, height,
                                             PixelFormat::Rgba32F, "", variant),
@@ -105,11 +112,17 @@ int cmdBenchGrowth(const BenchOptions& options) {
     auto context = createHeadlessContext(options.backend);
     const StageInfo& stage = demoStage();
     const StageSources sources = solutionSources(stage);
-    // The largest sphere scene: stage 08's limit, or what the device's
-    // uniform blocks hold where that is less (sphere_blocks.h).
-    const int mostSpheres =
-        std::min(stage.limits.spheres, maxUniformBlockBytes() / kSphereBlockStride);
-    if (!options.quick) spheres.push_back(mostSpheres);
+    // The largest uniform-block scene: what the device's blocks hold, at
+    // most stage 08's limit; storage blocks where the device has them
+    // (sphere_blocks.h).
+    const SphereArrayLimits limits = sphereArrayLimits();
+    const int inBlock =
+        std::min(stage.limits.spheres, limits.uniformBlockBytes / kSphereBlockStride);
+    if (!options.quick) spheres.push_back(inBlock);
+    std::vector<int> inStorage;
+    constexpr int kMostSpheres = 10000;
+    if (!options.quick && limits.storageBlockBytes / kSphereBlockStride >= kMostSpheres)
+        inStorage = {1000, inBlock, kMostSpheres};
     std::printf("raylab bench --growth: stage %s, %dx%d, depth 8, shadows on, %s backend, %s; %d "
                 "timed frame%s per point\n",
                 stage.id.c_str(), size.width, size.height, context->backendName().c_str(),
@@ -130,6 +143,12 @@ int cmdBenchGrowth(const BenchOptions& options) {
         for (bool bvh : {true, false})
             points.push_back(
                 prepare(stage, sources, scene, "spheres", n, bvh, size.width, size.height));
+    }
+    for (int n : inStorage) {
+        const Scene scene = growthSphereScene(n);
+        for (bool bvh : {true, false})
+            points.push_back(
+                prepare(stage, sources, scene, kStorageSeries, n, bvh, size.width, size.height));
     }
     const RenderSettings settings;  // depth 8, shadows on
     for (int round = 0; round < frames; ++round)
@@ -162,8 +181,14 @@ int cmdBenchGrowth(const BenchOptions& options) {
         "iterations per pixel, would cut it short). Spheres: a jittered grid in the same box, "
         "10 to " +
         std::to_string(spheres.back()) +
-        " (stage 08's limit: what one uniform block of the device holds), both searches to "
-        "the end. Build: `buildBvh` on the CPU, once.";
+        " (what one uniform block of the device holds), both searches to the end. " +
+        (inStorage.empty() ? std::string("This device has no storage blocks. ")
+                           : "Spheres in storage blocks: the same scenes with the spheres' "
+                             "arrays in storage blocks (OpenGL 4.3, what a scene of more than " +
+                                 std::to_string(inBlock) + " spheres gets), " +
+                                 std::to_string(inStorage.front()) + " to " +
+                                 std::to_string(inStorage.back()) + ". ") +
+        "Build: `buildBvh` on the CPU, once.";
     writeGrowthFiles(rows, options.outDir, "RayLab growth (" + glDescription() + ")",
                      options.commandLine, notes);
     std::printf("raylab bench --growth: wrote %s/growth.csv, growth.md and growth.png\n",

@@ -176,10 +176,13 @@ SourceLine ShaderSource::where(int assembledLine) const {
 }
 
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
-                            const std::vector<std::string>& defines, const std::string& prelude) {
+                            const std::vector<std::string>& defines, const std::string& prelude,
+                            const std::vector<std::string>& extensions) {
     Assembler a{search, {}, {}};
     a.emit(kGlslVersionLine, kGenerated, 1);
     int n = 2;
+    for (const std::string& e : extensions)
+        a.emit("#extension " + e + " : require", kGenerated, n++);
     for (const std::string& d : defines) a.emit("#define " + d, kGenerated, n++);
     // The pipeline stage, from the entry's extension: shared files (lab_todo.glsl)
     // offer fragment-only code such as gl_FragCoord to fragment shaders only.

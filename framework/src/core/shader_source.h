@@ -36,10 +36,13 @@ inline constexpr const char* kGlslVersionLine = "#version 330 core";
 // The shared constants (shader_constants.h) follow the defines, then PRELUDE
 // (generated GLSL, e.g. a scene's constants). An entry ending in .vert, .geom
 // or .frag also gets RAYLAB_VERTEX_SHADER, RAYLAB_GEOMETRY_SHADER or
-// RAYLAB_FRAGMENT_SHADER defined.
+// RAYLAB_FRAGMENT_SHADER defined. Each of EXTENSIONS becomes an
+// `#extension NAME : require` line right after the version line (GLSL wants
+// them before any code).
 ShaderSource assembleShader(const std::string& entry, const std::vector<fs::path>& search,
                             const std::vector<std::string>& defines,
-                            const std::string& prelude = {});
+                            const std::string& prelude = {},
+                            const std::vector<std::string>& extensions = {});
 
 // The same shader for WebGL 2: `#version 300 es` in place of the first line
 // and precision lines after it (GLSL ES has no default float precision in

@@ -30,6 +30,9 @@ namespace {
     X(GetQueryObjectui64v) X(DeleteQueries) X(DrawBuffers) X(ClearBufferfv)                       \
     X(BufferSubData) X(BindBufferBase) X(GetUniformBlockIndex) X(UniformBlockBinding)             \
     X(GetIntegeri_v)
+// Functions of later versions, used only where the context offers them
+// (GL 4.3 storage buffers: sphere_blocks.cpp); loaded when present, never required.
+#define RAYLAB_GLEW_OPTIONAL_FUNCTIONS(X) X(GetProgramResourceIndex) X(ShaderStorageBlockBinding)
 // clang-format on
 
 bool allLoaded(std::string* missing) {
@@ -62,6 +65,7 @@ void loadGlFrom(GetProcFn getProc) {
 #define RAYLAB_LOAD(name)                                                                          \
     __glew##name = reinterpret_cast<decltype(__glew##name)>(getProc("gl" #name));
     RAYLAB_GLEW_FUNCTIONS(RAYLAB_LOAD)
+    RAYLAB_GLEW_OPTIONAL_FUNCTIONS(RAYLAB_LOAD)
 #undef RAYLAB_LOAD
     std::string missing;
     if (!allLoaded(&missing))

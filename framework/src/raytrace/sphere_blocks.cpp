@@ -20,16 +20,42 @@ int maxUniformBlockBytes() {
     return int(bytes);
 }
 
-void checkSpheresFitBlock(const Scene& scene, int maxBlockBytes) {
-    const int most = maxBlockBytes / kSphereBlockStride;
-    if (scene.spheres.size() > std::size_t(most))
-        throw Error(scene.file + ": spheres: " + std::to_string(scene.spheres.size()) +
-                    " spheres, but this GPU's uniform blocks hold at most " + std::to_string(most) +
-                    " (GL_MAX_UNIFORM_BLOCK_SIZE " + std::to_string(maxBlockBytes) + " bytes, " +
-                    std::to_string(kSphereBlockStride) + " per sphere)");
+SphereArrayLimits sphereArrayLimits() {
+    SphereArrayLimits limits;
+    limits.uniformBlockBytes = maxUniformBlockBytes();
+    GLint major = 0, minor = 0, fragmentBlocks = 0, bytes = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    // Optional entry points (gl_loader.cpp): null before OpenGL 4.3.
+    if (major * 10 + minor < 43 || !glGetProgramResourceIndex || !glShaderStorageBlockBinding)
+        return limits;
+    glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);  // a GLint64: clamped to the int range
+    if (fragmentBlocks >= 3) limits.storageBlockBytes = int(bytes);
+    return limits;
 }
 
-SphereBlocks::SphereBlocks(const Scene& scene, int slots) : spheres_(scene.spheres) {
+bool spheresNeedStorage(const Scene& scene, const SphereArrayLimits& limits) {
+    const std::size_t n = scene.spheres.size();
+    const std::size_t inBlock = std::size_t(limits.uniformBlockBytes / kSphereBlockStride);
+    const std::size_t inStorage = std::size_t(limits.storageBlockBytes / kSphereBlockStride);
+    if (n <= inBlock) return false;
+    if (n <= inStorage) return true;
+    std::string why = scene.file + ": spheres: " + std::to_string(n) +
+                      " spheres, but this GPU's uniform blocks hold at most " +
+                      std::to_string(inBlock) + " (GL_MAX_UNIFORM_BLOCK_SIZE " +
+                      std::to_string(limits.uniformBlockBytes) + " bytes, " +
+                      std::to_string(kSphereBlockStride) + " per sphere)";
+    if (limits.storageBlockBytes == 0) why += " and it has no storage blocks (OpenGL 4.3)";
+    else
+        why += " and its storage blocks " + std::to_string(inStorage) +
+               " (GL_MAX_SHADER_STORAGE_BLOCK_SIZE " + std::to_string(limits.storageBlockBytes) +
+               " bytes)";
+    throw Error(why);
+}
+
+SphereBlocks::SphereBlocks(const Scene& scene, int slots, bool storage)
+    : spheres_(scene.spheres), target_(storage ? GL_SHADER_STORAGE_BUFFER : GL_UNIFORM_BUFFER) {
     const std::size_t n = std::max<std::size_t>(std::size_t(std::max(slots, 1)), spheres_.size());
     centres_.assign(n, glm::vec4(0.0f));
     std::vector<glm::vec4> colours(n, glm::vec4(0.0f));
@@ -63,12 +89,16 @@ void SphereBlocks::attach(GLuint program) {
         const GLuint index = glGetUniformBlockIndex(program, kBlockNames[b]);
         if (index != GL_INVALID_INDEX)
             glUniformBlockBinding(program, index, kFirstBindingPoint + b);
+        if (!glGetProgramResourceIndex) continue;  // no storage blocks before OpenGL 4.3
+        const GLuint storage =
+            glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, kBlockNames[b]);
+        if (storage != GL_INVALID_INDEX)
+            glShaderStorageBlockBinding(program, storage, kFirstBindingPoint + b);
     }
 }
 
 void SphereBlocks::bind() const {
-    for (GLuint b = 0; b < 3; ++b)
-        glBindBufferBase(GL_UNIFORM_BUFFER, kFirstBindingPoint + b, buffers_[b]);
+    for (GLuint b = 0; b < 3; ++b) glBindBufferBase(target_, kFirstBindingPoint + b, buffers_[b]);
 }
 
 void SphereBlocks::moveTo(float t) {

@@ -16,12 +16,18 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
     if (oldPath) d.push_back("RAYLAB_OLD_PATH");
     if (treeAll) d.push_back("RAYLAB_TREE_ALL");
+    if (sphereStorage) d.push_back("RAYLAB_SPHERE_STORAGE");
     if (weightCut > 0.0) {
         char value[32];
         std::snprintf(value, sizeof value, "%.9g", weightCut);
         d.push_back(std::string("RAYLAB_WEIGHT_CUT ") + value);
     }
     return d;
+}
+
+std::vector<std::string> ShaderVariant::extensions() const {
+    if (sphereStorage) return {"GL_ARB_shader_storage_buffer_object"};
+    return {};
 }
 
 ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
@@ -37,11 +43,12 @@ ShaderVariant ShaderVariant::fastestFor(const Scene& scene) {
 }
 
 int sphereSlots(const StageInfo& stage, const Scene& scene, const ShaderVariant& variant) {
-    if (variant.specialized) return std::max(1, int(scene.spheres.size()));
-    int slots = stage.limits.spheres;
-    if (variant.maxBlockBytes > 0)
-        slots = std::min(slots, variant.maxBlockBytes / kSphereBlockStride);
-    return std::max(1, slots);
+    if (variant.specialized || variant.sphereStorage) return std::max(1, int(scene.spheres.size()));
+    // 64 KB: what llvmpipe and NVIDIA offer, so `raylab shader` prints a
+    // program those compile.
+    constexpr int kUsualBlockBytes = 65536;
+    const int blockBytes = variant.maxBlockBytes > 0 ? variant.maxBlockBytes : kUsualBlockBytes;
+    return std::max(1, std::min(stage.limits.spheres, blockBytes / kSphereBlockStride));
 }
 
 StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& sources,
@@ -60,11 +67,12 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     // The mesh code (scene_meshes.glsl) only where there are meshes: the
     // other scenes' programs stay short.
     if (!scene.meshes.empty()) defines.push_back("RAYLAB_MESHES");
-    const std::string prelude = variant.specialized ? bakedSceneGlsl(scene) : std::string();
+    const std::string prelude =
+        variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();
     const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);
     const std::string& entry = fragmentEntry.empty() ? stage.program.fragment : fragmentEntry;
-    return {assembleShader(stage.program.vertex, search, defines),
-            assembleShader(entry, search, defines, prelude)};
+    return {assembleShader(stage.program.vertex, search, defines, {}, variant.extensions()),
+            assembleShader(entry, search, defines, prelude, variant.extensions())};
 }
 
 }  // namespace raylab

@@ -41,7 +41,13 @@ struct ShaderVariant {
     // generic program declares no more spheres (MAX_SPHERES) than one of its
     // blocks holds. 0: no device (`raylab shader`): the stage's limit.
     int maxBlockBytes = 0;
-    std::vector<std::string> defines() const;  // the defines for the switches above
+    // RAYLAB_SPHERE_STORAGE: the spheres' arrays are storage blocks (OpenGL
+    // 4.3). The renderer sets it for more spheres than a uniform block holds
+    // (sphere_blocks.h); set beforehand, it asks for them anyway (the growth
+    // bench compares the two).
+    bool sphereStorage = false;
+    std::vector<std::string> defines() const;     // the defines for the switches above
+    std::vector<std::string> extensions() const;  // the GLSL extensions they need
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the
     // scene compiled in, and the BVH only where there are enough spheres to
@@ -56,7 +62,9 @@ struct StagePrograms {
 
 // The length of the sphere arrays (MAX_SPHERES, scene_spheres.glsl): the
 // scene's count in a specialised program, else the stage's limit, capped
-// by the device's uniform blocks (ShaderVariant::maxBlockBytes); at least 1.
+// by the device's uniform blocks (ShaderVariant::maxBlockBytes, or 64 KB
+// where no device is known); at least 1. Storage blocks have no declared
+// length; their buffers hold the scene's spheres.
 int sphereSlots(const StageInfo& stage, const Scene& scene, const ShaderVariant& variant);
 
 // FRAGMENTENTRY: the entry fragment shader; empty for the stage's own.

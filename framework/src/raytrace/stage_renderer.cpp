@@ -95,9 +95,13 @@ StageRenderer::StageRenderer(const StageInfo& stage, StageSources sources, Scene
                     ": program.geometry: the ray tracer's renderer takes no geometry shader");
     checkSceneFits(stage_, scene_);
     variant_.todoMarks = target_->hasTodoMarks();  // a check target counts them
-    variant_.maxBlockBytes = maxUniformBlockBytes();
-    checkSpheresFitBlock(scene_, variant_.maxBlockBytes);
-    spheres_ = std::make_unique<SphereBlocks>(scene_, sphereSlots(stage_, scene_, variant_));
+    const SphereArrayLimits sphereLimits = sphereArrayLimits();
+    variant_.maxBlockBytes = sphereLimits.uniformBlockBytes;
+    if (variant_.sphereStorage && sphereLimits.storageBlockBytes == 0)
+        throw Error("storage blocks asked for, but this context has none (OpenGL 4.3)");
+    variant_.sphereStorage = variant_.sphereStorage || spheresNeedStorage(scene_, sphereLimits);
+    spheres_ = std::make_unique<SphereBlocks>(scene_, sphereSlots(stage_, scene_, variant_),
+                                              variant_.sphereStorage);
     if (!scene_.textures.empty()) textures_ = std::make_unique<TextureArray>(scene_.textures);
     if (scene_.skyBox) sky_ = std::make_unique<CubeMap>(*scene_.skyBox);
     rebuild();

@@ -71,17 +71,20 @@ auto gather(const std::vector<T>& list, F f) {
 
 }  // namespace
 
-std::string bakedSceneGlsl(const Scene& scene) {
+std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage) {
     std::string g =
         "// The scene, compiled in (framework/src/raytrace/scene/scene_baking.cpp): " + scene.file +
         "\n";
     g += "const vec3 uBackground = " + vec3Literal(scene.background) + ";\n";
 
     g += constInt("uSphereCount", int(scene.spheres.size()));
-    g += vec3s("uSphereColors", gather(scene.spheres, [&](const Sphere& s) {
-                   return scene.materials[std::size_t(s.material)].diffuse;
-               }));
-    g += ints("uSphereMaterial", gather(scene.spheres, [](const Sphere& s) { return s.material; }));
+    if (!spheresInStorage) {
+        g += vec3s("uSphereColors", gather(scene.spheres, [&](const Sphere& s) {
+                       return scene.materials[std::size_t(s.material)].diffuse;
+                   }));
+        g += ints("uSphereMaterial",
+                  gather(scene.spheres, [](const Sphere& s) { return s.material; }));
+    }
 
     const auto& m = scene.materials;
     g += vec3s("uMatAmbient", gather(m, [](const Material& x) { return x.ambient; }));

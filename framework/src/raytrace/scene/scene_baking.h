@@ -18,8 +18,11 @@
 
 namespace raylab {
 
-// The GLSL constants (one declaration per line) for SCENE.
-std::string bakedSceneGlsl(const Scene& scene);
+// The GLSL constants (one declaration per line) for SCENE. With
+// SPHERESINSTORAGE the spheres' colours and materials stay in their storage
+// blocks (sphere_blocks.h): a scene that needs those has too many spheres
+// to spell out.
+std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage = false);
 
 // SCENE_BAKED and MAX_SPHERES, MAX_PLANES, ... set to the scene's own counts
 // (at least 1: GLSL has no empty arrays).

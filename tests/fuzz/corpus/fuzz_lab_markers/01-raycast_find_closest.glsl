@@ -6,7 +6,7 @@ bool findClosest(Ray ray, out Hit hit)
     hit = Hit(T_FAR, -1);
     // TODO(01.b): test every sphere (uSpheres[i].xyz is its centre, .w its
     // radius, i < uSphereCount) and keep the hit with the smallest t.
-    // Checked by: raylab check --stage 01 (views front, close-overlap).
+    // Checked by: raylab check --stage 01 (views front, close-overlap; findClosest).
     //@solution
     for (int i = 0; i < uSphereCount; ++i) {
         float t = intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w);

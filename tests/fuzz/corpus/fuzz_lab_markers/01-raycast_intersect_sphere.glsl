@@ -11,23 +11,15 @@ float intersectSphere(Ray ray, vec3 center, float radius)
     // sphere lies behind the origin. The camera may be inside a sphere.
     // For a small sphere far away b*b - c cancels (guide, section 2): use
     //     h = radius^2 - |oc - b d|^2
-    // and the roots q = -b - sign(b) (square root of h) and c / q (they
-    // multiply to c; the smaller is the near one).
+    // and the roots q = -b - s (square root of h) and c / q (they multiply
+    // to c; the smaller is the near one), with s = 1 for b >= 0, else -1
+    // (not GLSL's sign(b): that is 0 for b = 0, a ray from the centre).
     // Checked by: raylab check --stage 01 (all views).
     //@solution
     vec3 oc = ray.origin - center;
     float b = dot(oc, ray.dir);               // half the linear coefficient
     float c = dot(oc, oc) - radius * radius;
     vec3 closest = oc - b * ray.dir;          // centre to the line's closest point
-#ifdef RAYLAB_NAIVE_NUMERICS
-    // The textbook form (tests/numerics/sphere_test.cpp): for a sphere at
-    // 1000 radii b*b and c agree in their first six digits, and h is noise.
-    float h = b * b - c;                      // a quarter of the discriminant
-    if (h < 0.0) return NO_HIT;               // the line misses the sphere
-    h = sqrt(h);
-    float t = -b - h;                         // the near root: entering the sphere
-    if (t <= T_MIN) t = -b + h;               // entry behind us: we are inside, take the exit
-#else
     float h = radius * radius - dot(closest, closest);  // the same quarter discriminant, no cancellation
     if (h < 0.0) return NO_HIT;               // the line misses the sphere
     float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(h);  // -b and the root pull the same way: no cancellation
@@ -36,7 +28,6 @@ float intersectSphere(Ray ray, vec3 center, float radius)
     float t1 = max(c / q, q);
     float t = t0;                             // the near root: entering the sphere
     if (t <= T_MIN) t = t1;                   // entry behind us: we are inside, take the exit
-#endif
     return t > T_MIN ? t : NO_HIT;            // both behind us: no hit
     //@stub
     //@ labTodo();

@@ -37,3 +37,30 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
     //@ return vec3(1.0);
     //@end
 }
+
+// Glass: a ray with unit direction `dir` meets a glass surface of index of
+// refraction `ior`; `normal` is the unit normal facing the ray, and
+// `entering` is true when the ray comes from the air. Returns the refracted
+// direction in xyz and in w the share F of the light that is reflected (the
+// rest goes on in the refracted ray). Under total internal reflection
+// nothing is refracted: vec4(0.0, 0.0, 0.0, 1.0).
+vec4 refractGlass(vec3 dir, vec3 normal, bool entering, float ior)
+{
+    // TODO(04.e): the relative index eta is 1/ior entering the glass and ior
+    // leaving it. refract(dir, normal, eta) returns vec3(0.0) under total
+    // internal reflection: then F = 1. Otherwise F is fresnelDielectric with
+    // the cosine on the air side: the incident ray's entering, the refracted
+    // ray's leaving.
+    // Checked by: raylab check --stage 04 (function refractGlass, views glass-closeup, inside-glass).
+    //@solution
+    float eta = entering ? 1.0 / ior : ior;
+    vec3 refracted = refract(dir, normal, eta);
+    if (refracted == vec3(0.0)) return vec4(0.0, 0.0, 0.0, 1.0);  // total internal reflection
+    float cosIncident = -dot(dir, normal);
+    float cosTransmitted = -dot(refracted, normal);
+    return vec4(refracted, fresnelDielectric(entering ? cosIncident : cosTransmitted, ior));
+    //@stub
+    //@ labTodo();
+    //@ return vec4(0.0, 0.0, 0.0, 1.0);  // placeholder: everything reflected
+    //@end
+}

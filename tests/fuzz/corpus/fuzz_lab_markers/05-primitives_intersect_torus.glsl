@@ -31,16 +31,16 @@ float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
     return t;
 }
 
-// The nearest t > T_MIN where the ray (in the torus frame) meets the torus,
-// or NO_HIT. (Provided.)
-float intersectTorusLocal(Ray ray, float R, float r)
+// The nearest t > tMin where the ray (in the torus frame, in units where
+// 1 <= R < 2) meets the torus, or NO_HIT. (Provided.)
+float intersectTorusUnit(Ray ray, float R, float r, float tMin)
 {
     // Float precision: the quartic's coefficients grow with the fourth power
     // of the distance to the torus, and the roots drown in rounding error a
     // few radii away (the seed thesis saw exactly this). So first jump to
     // where the ray enters the torus's bounding sphere and solve from there
-    // (compiling with TORUS_SOLVER_CLOSED_FORM defined skips this and the
-    // Newton steps, for the numerics tests' comparison).
+    // (the numerics tests compare this with the seed's way, which skips
+    // this and the Newton steps).
     // A little larger than the torus: on its outer equator the torus touches
     // the sphere R + r, and an entry point rounded inward would start inside.
     float bound = 1.01 * (R + r);
@@ -51,12 +51,8 @@ float intersectTorusLocal(Ray ray, float R, float r)
     vec3 closest = ray.origin - b * ray.dir;
     float h = bound * bound - dot(closest, closest);
     if (h < 0.0) return NO_HIT;          // misses the bounding sphere
-    if (-b + sqrt(h) <= T_MIN) return NO_HIT;  // the sphere is behind the ray
-#ifdef TORUS_SOLVER_CLOSED_FORM
-    float tEnter = 0.0;  // the seed's way, kept for comparison: solved from the ray origin itself
-#else
+    if (-b + sqrt(h) <= tMin) return NO_HIT;  // the sphere is behind the ray
     float tEnter = max(-b - sqrt(h), 0.0);
-#endif
     vec3 o = ray.origin + tEnter * ray.dir;
     vec3 d = ray.dir;
 
@@ -70,45 +66,36 @@ float intersectTorusLocal(Ray ray, float R, float r)
                              k * k - R4 * (o.x * o.x + o.y * o.y));
     vec4 roots;
     int count = solveQuartic(coefficients, roots);
-#ifdef TORUS_SOLVER_CLOSED_FORM
-    float best = T_FAR;
-    for (int i = 0; i < count; ++i)
-        if (tEnter + roots[i] > T_MIN && roots[i] < best) best = roots[i];
-    return best < T_FAR ? tEnter + best : NO_HIT;
-#else
     // Nearest first; each root polished and kept only if the point really
-    // lies on the surface (near a double root, rounding can invent a root
-    // or lose one).
+    // lies on the surface (near a double root, rounding can invent a root).
     for (int i = 0; i < count; ++i)
         for (int j = i + 1; j < count; ++j)
             if (roots[j] < roots[i]) { float x = roots[i]; roots[i] = roots[j]; roots[j] = x; }
     for (int i = 0; i < count; ++i) {
-        if (tEnter + roots[i] <= T_MIN) continue;
+        if (tEnter + roots[i] <= tMin) continue;
         float t = polishTorusHit(o, d, roots[i], R, r);
         // Polishing may move a root just in front of the origin behind it.
-        if (tEnter + t > T_MIN && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
+        if (tEnter + t > tMin && abs(torusDistance(o + t * d, R, r)) < 1e-3 * r) return tEnter + t;
     }
-    // No root survived: march the distance function through the bounding
-    // sphere (rays close to tangent, where a lost root hides).
-    float t = max(T_MIN - tEnter, 0.0);
-    float tExit = -b + sqrt(h) - tEnter;
-    if (torusDistance(o + t * d, R, r) < 0.0) return NO_HIT;  // starts inside the tube: no marching from there (rare: only a lost root gets here)
-    // A secondary ray starts a hair off the surface (offsetRayOrigin): it
-    // must first get clear of it, or its own start would count as a hit.
-    float hitDistance = 1e-4 * r;
-    bool clear = false;
-    for (int step = 0; step < 96 && t < tExit; ++step) {
-        float dist = torusDistance(o + t * d, R, r);
-        if (dist >= hitDistance) {
-            clear = true;
-        } else if (clear) {
-            float polished = polishTorusHit(o, d, t, R, r);
-            return tEnter + (tEnter + polished > T_MIN ? polished : t);
-        }
-        t += max(dist, hitDistance);
-    }
+    // No march of the distance function after this for roots the solver
+    // might have lost: with the resolvent polished (solve_quartic.glsl) the
+    // numerics tests find none lost, grazing rays included, and llvmpipe
+    // runs 8 pixels in lock-step through every branch, so even an unused
+    // march cost every ray about a tenth of the pro frame (issue 14).
     return NO_HIT;
-#endif
+}
+
+// The same for a torus of any size (in the torus frame): solved in units of
+// the power of two just below its major radius, so the quartic's
+// coefficients stay near 1 however large or small the torus (in world units
+// they grow with R^4 and overflowed float from about R = 1e3 on). A power of
+// two, because dividing by it is exact: a torus of any size is solved with
+// the same numbers. (Provided.)
+float intersectTorusLocal(Ray ray, float R, float r)
+{
+    float unit = exp2(floor(log2(R)));
+    float t = intersectTorusUnit(Ray(ray.origin / unit, ray.dir), R / unit, r / unit, T_MIN / unit);
+    return t == NO_HIT ? NO_HIT : t * unit;
 }
 
 // The unit outward normal of the torus at a surface point p (torus frame).

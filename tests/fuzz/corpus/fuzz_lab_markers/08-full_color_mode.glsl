@@ -9,7 +9,7 @@ vec3 applyColorMode(vec3 c)
 {
     // TODO(08.a): return the channels in the order of mode uColorMode
     // (GLSL swizzles help: c.brb is vec3(c.b, c.r, c.b)).
-    // Checked by: raylab check --stage 08 (views lite-brb, lite-brr, lite-rbb, lite-ggr).
+    // Checked by: raylab check --stage 08 (function applyColorMode, views lite-brb, lite-brr, lite-rbb, lite-ggr).
     //@solution
     if (uColorMode == 1) return c.brb;
     if (uColorMode == 2) return c.brr;

@@ -31,13 +31,7 @@ uniform vec3 uMatK[MAX_MATERIALS];
 uniform int uMatTexture[MAX_MATERIALS];
 uniform int uMatNormalMap[MAX_MATERIALS];
 #endif
-#ifndef SPHERE_BLOCK  // scene_spheres.glsl's, where this file comes without it
-#ifdef RAYLAB_SPHERE_STORAGE
-#define SPHERE_BLOCK readonly buffer
-#else
-#define SPHERE_BLOCK uniform
-#endif
-#endif
+#include "scene_spheres.glsl"  // MAX_SPHERES, SPHERE_BLOCK (included once)
 #if !defined(SCENE_BAKED) || defined(RAYLAB_SPHERE_STORAGE)  // else constants (scene_baking.cpp)
 layout(std140) SPHERE_BLOCK SphereMaterials {  // a block, as the spheres (scene_spheres.glsl)
     int uSphereMaterial[MAX_SPHERES];          // material index of each sphere

@@ -67,12 +67,14 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
             keepNearer(hit, intersectMeshTriangle(ray, i), KIND_MESH, i);
         }
         if (anyHit && hit.id >= 0) return;
-        // Next waiting box that could still hold something nearer.
+        // Next waiting box that could still hold something nearer. (A
+        // shadow ray's boxes all can: its hit.t stays the light's distance,
+        // the limit they were pushed under, until it stops.)
         bool found = false;
         int node = 0;
         while (size > 0 && !found) {
             --size;
-            if (stackEnter[size] < hit.t) {
+            if (anyHit || stackEnter[size] < hit.t) {
                 node = stackNode[size];
                 found = true;
             }

@@ -133,6 +133,32 @@ TEST_P(VariantViews, WeightCutDrawsWhatTheReferenceTracerDraws) {
     EXPECT_FALSE(imagesAgree(bad, CompareTolerance{})) << "a coarse cut went unnoticed";
 }
 
+// The shared-work lever (`raylab demo`, the bench's "shared" rows): the
+// glow reuses the primary ray's hit and shading skips lights behind the
+// surface - the same picture as without it (measured: not one pixel
+// differs in any of the four views). The same comparison sees the glow
+// switched off (pro-front: 3.1% of pixels), so it can fail.
+TEST_P(VariantViews, SharedWorkDrawsWhatThePlainProgramDraws) {
+    const CheckView& v = view(GetParam());
+    ShaderVariant plain, shared;
+    plain.weightCut = shared.weightCut = ShaderVariant::kDemoWeightCut;
+    plain.specialized = shared.specialized = true;
+    shared.sharedWork = true;
+    const Image expected = render(v, plain);
+    ImageDiff d = diff(render(v, shared), expected);
+    std::printf("[ figure ] %s: shared work vs without: %.3f%% of pixels differ (max %d/255)\n",
+                v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
+    EXPECT_TRUE(imagesAgree(d, CompareTolerance{})) << 100.0 * d.badShare << "% of pixels differ";
+    EXPECT_LE(d.maxDiff, 1) << "the same rays and sums: at most a rounding step";
+    if (v.name != "pro-front") return;  // the view with the sun's halo in it
+    CheckView noGlow = v;
+    noGlow.glow = false;
+    ImageDiff bad = diff(render(noGlow, shared), expected);
+    std::printf("[ figure ] %s without its glow: %.3f%% of pixels differ\n", v.name.c_str(),
+                100.0 * bad.badShare);
+    EXPECT_GT(bad.maxDiff, 1) << "a missing glow went unnoticed";
+}
+
 // The bench's tree-all row (the scene's triangles and discs in the BVH too)
 // draws what the reference draws (the comparison is shown failing on a
 // broken traversal below).

@@ -130,6 +130,23 @@ TEST(EmbreeRays, TheWeightCutFrameCastsFewerRaysAndEmbreeAgreesOnThem) {
     EXPECT_GE(agreementWithReference(rays, answers), 0.9999);
 }
 
+// The shared-work lever's glow reuses the primary ray's hit: its frame's
+// export is the same rays without the glow rays.
+TEST(EmbreeRays, TheSharedWorkFrameCastsNoGlowRays) {
+    const Frame& f = proFrame();
+    ReferenceTracer shared(f.scene, ReferenceFeatures::forStage(demoStage()), 0.0f,
+                           RenderSettings{});
+    shared.setGlowSharesPrimaryHit(true);
+    std::vector<TracedRay> rays;
+    shared.traceImage(cameraFor(std::nullopt, f.scene), kWidth, kHeight, &rays);
+    const TracedRayCounts all = countRays(f.rays), fewer = countRays(rays);
+    EXPECT_GT(all.glow, 0u);
+    EXPECT_EQ(fewer.glow, 0u);
+    EXPECT_EQ(fewer.primary, all.primary);
+    EXPECT_EQ(fewer.secondary, all.secondary);
+    EXPECT_EQ(fewer.shadow, all.shadow);
+}
+
 TEST(Embree, TimesACastAndBuildsItsBvh) {
     if (!embreeBuilt()) GTEST_SKIP() << "Embree not built";
     const Frame& f = proFrame();

@@ -60,14 +60,17 @@ constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 
 // "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
 // "old-path" for the tracer before the levers (RAYLAB_OLD_PATH), "tree-all"
-// for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL).
+// for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL), "shared"
+// for the shared-work variants (RAYLAB_SHARED_WORK).
 std::string leverName(const ShaderVariant& v) {
     std::string name = v.oldPath ? "old-path" : (v.treeAll ? "tree-all" : "");
+    auto add = [&](const std::string& lever) { name += (name.empty() ? "" : "+") + lever; };
     if (v.weightCut > 0.0) {
         char text[32];
         std::snprintf(text, sizeof text, "wcut%g/255", v.weightCut * 255.0);
-        name += (name.empty() ? "" : "+") + std::string(text);
+        add(text);
     }
+    if (v.sharedWork) add("shared");
     return name;
 }
 
@@ -112,6 +115,13 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     grid.push_back(with([](BenchSetting& s) {
         s.variant.specialized = true;
         s.variant.weightCut = kWeightCut;
+    }));
+    // ... and with the shared-work variants on top (the demo's choice): the
+    // glow reuses the primary ray's hit, shading skips lights behind.
+    grid.push_back(with([](BenchSetting& s) {
+        s.variant.specialized = true;
+        s.variant.weightCut = kWeightCut;
+        s.variant.sharedWork = true;
     }));
     // The "one tree over every bounded kind", against the row above:
     // the scene's few triangles and discs in the BVH instead of a loop.
@@ -319,19 +329,21 @@ int cmdBench(const BenchOptions& options) {
         const std::vector<BenchSetting> grid =
             gridFor(scene, options.quick, size.width, size.height);
         // Every ray of the frame, for Embree: the baseline's, and those of
-        // the weight-cut frame when the grid has it (it casts fewer).
+        // each lever that casts fewer (the weight cut; shared work, whose
+        // glow casts no ray of its own) when the grid has it.
         std::vector<RaySet> raySets(1);
         std::vector<ReferenceSample> reference =
             tracer.traceImage(camera, size.width, size.height, &raySets[0].rays);
         std::printf("  %s: reference %dx%d traced in %.1f s (CPU, double)\n", name.c_str(),
                     size.width, size.height, msSince(start) / 1000.0);
         for (const BenchSetting& s : grid)
-            if (s.variant.weightCut > 0.0 && !s.variant.oldPath &&
+            if ((s.variant.weightCut > 0.0 || s.variant.sharedWork) && !s.variant.oldPath &&
                 std::none_of(raySets.begin(), raySets.end(), [&](const RaySet& r) {
                     return r.lever == rayLever(leverName(s.variant));
                 })) {
                 ReferenceTracer cut(scene, ReferenceFeatures::forStage(stage), 0.0f, full);
                 cut.setWeightCut(s.variant.weightCut);
+                cut.setGlowSharesPrimaryHit(s.variant.sharedWork);
                 raySets.push_back({rayLever(leverName(s.variant)), {}});
                 cut.traceImage(camera, size.width, size.height, &raySets.back().rays);
             }

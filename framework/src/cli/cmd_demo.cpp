@@ -82,8 +82,10 @@ int cmdDemo(const DemoOptions& demo) {
     ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
     if (demo.noBvh) variant.bvh = false;
     // The demo runs the solution, so it may use the bench's weight-cut
-    // variant of trace.glsl (a student's trace.glsl is never replaced).
+    // variant of trace.glsl and the shared-work variants of the glow and
+    // the shading (a student's files are never replaced).
     variant.weightCut = ShaderVariant::kDemoWeightCut;
+    variant.sharedWork = true;
     StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height,
                            PixelFormat::Rgba8, "", variant);
     const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);
@@ -102,7 +104,8 @@ int cmdDemo(const DemoOptions& demo) {
     }
     FrameTiming timing = summarizeFrameTimes(ms);
     std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised "
-                "shader, rays under 1/255 of the pixel not traced, %s backend, %s\n",
+                "shader, rays under 1/255 of the pixel not traced, shared work (glow and lights), "
+                "%s backend, %s\n",
                 stage.id.c_str(), setup.scene.file.c_str(), setup.size.width, setup.size.height,
                 setup.settings.maxDepth, setup.settings.shadows ? "on" : "off",
                 variant.bvh ? "BVH" : "linear search", context->backendName().c_str(),

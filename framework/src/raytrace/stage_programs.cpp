@@ -15,6 +15,7 @@ std::vector<std::string> ShaderVariant::defines() const {
     if (torusClosedForm) d.push_back("TORUS_SOLVER_CLOSED_FORM");
     if (todoMarks) d.push_back("RAYLAB_TODO_MARK");
     if (oldPath) d.push_back("RAYLAB_OLD_PATH");
+    if (sharedWork) d.push_back("RAYLAB_SHARED_WORK");
     if (treeAll) d.push_back("RAYLAB_TREE_ALL");
     if (sphereStorage) d.push_back("RAYLAB_SPHERE_STORAGE");
     if (weightCut > 0.0) {

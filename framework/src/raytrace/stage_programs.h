@@ -34,6 +34,11 @@ struct ShaderVariant {
     // a blocker ray for every pixel in front of the sun, halo or not, and
     // light_visibility.glsl a shadow ray toward lights behind the surface.
     bool oldPath = false;
+    // RAYLAB_SHARED_WORK: the same picture with less work (variants/shared-
+    // work): the glow reuses the primary ray's hit instead of searching
+    // again, and shading visits only the lights in front of the surface.
+    // On in `raylab demo` and the window whenever they show the solution.
+    bool sharedWork = false;
     // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
     // and discs (the bench's tree-all row; bvh.h says why it is not the default).
     bool treeAll = false;

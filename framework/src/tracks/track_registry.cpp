@@ -18,9 +18,12 @@ std::unique_ptr<TrackRenderer> rayTracer(const StageInfo& stage, const StageSour
         use == RendererUse::Fastest ? ShaderVariant::fastestFor(scene) : ShaderVariant{};
     // The window showing the solution (`raylab demo`, `raylab run --solution`)
     // may trace as the headless demo does, without the rays too faint to
-    // change a pixel; a student's trace.glsl is never replaced by the variant.
-    if (use == RendererUse::Fastest && !sources.lab)
+    // change a pixel and with the shared-work variants; a student's files
+    // are never replaced by a variant.
+    if (use == RendererUse::Fastest && !sources.lab) {
         variant.weightCut = ShaderVariant::kDemoWeightCut;
+        variant.sharedWork = true;
+    }
     return std::make_unique<StageRenderer>(stage, sources, std::move(scene), width, height, format,
                                            "", variant);
 }

@@ -140,7 +140,8 @@ struct ReferenceTracer::Impl {
     SceneTransform frame;
     ReferenceFeatures features;
     RenderSettings settings;
-    double weightCut = 0.0;  // setWeightCut
+    double weightCut = 0.0;             // setWeightCut
+    bool glowSharesPrimaryHit = false;  // setGlowSharesPrimaryHit
     glm::dvec3 background{0.0};
     std::vector<DMaterial> materials;
     std::vector<DLight> lights;

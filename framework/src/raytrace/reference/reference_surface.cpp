@@ -249,7 +249,7 @@ glm::dvec3 ReferenceTracer::Impl::sunGlow(const DRay& ray, std::ostream* log) co
     }
     Hit blocker;
     const bool found = findClosest(ray, blocker);
-    recordRay(TracedRay::Kind::Glow, ray, 1e30, blocker, found);
+    if (!glowSharesPrimaryHit) recordRay(TracedRay::Kind::Glow, ray, 1e30, blocker, found);
     if (found && blocker.id != obj::kSphere * obj::kStride + glow.sphere && blocker.t < tc) {
         if (log)
             *log << "glow: none (" << objectName(blocker.id) << " at t=" << fmt(blocker.t)

@@ -229,6 +229,8 @@ ReferenceTracer::~ReferenceTracer() = default;
 
 void ReferenceTracer::setWeightCut(double cut) { impl_->weightCut = cut; }
 
+void ReferenceTracer::setGlowSharesPrimaryHit(bool shared) { impl_->glowSharesPrimaryHit = shared; }
+
 // The weight-cut variant's test (its weightCounts()); always true without a cut.
 bool ReferenceTracer::Impl::weightCounts(const glm::dvec3& weight) const {
     return weightCut <= 0.0 || std::max({weight.r, weight.g, weight.b}) >= double(float(weightCut));

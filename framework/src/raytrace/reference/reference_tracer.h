@@ -77,6 +77,11 @@ public:
     // For `raylab bench`, to export the rays such a frame casts.
     void setWeightCut(double cut);
 
+    // The shared-work variant (framework/shaders/variants/shared-work): the
+    // glow reuses the primary ray's hit instead of casting its own ray. The
+    // picture is the same; only the ray export changes (no glow rays).
+    void setGlowSharesPrimaryHit(bool shared);
+
     // Traces one primary ray. With LOG, writes the path bounce by bounce:
     // object hit, t, normal, material, Fresnel weights, what is pushed and
     // popped, the colour added.

@@ -263,12 +263,12 @@ void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedR
                     int threads) {
     const BenchRow& e = rows.back();
     if (std::isnan(e.frameMs)) {
-        std::printf("  %-5s %-28s Embree not built (install libembree-dev, run cmake again)\n",
+        std::printf("  %-5s %-38s Embree not built (install libembree-dev, run cmake again)\n",
                     e.scene.c_str(), benchSettingName(e).c_str());
         return;
     }
     const TracedRayCounts c = countRays(rays);
-    std::printf("  %-5s %-28s frame %8.1f ms  (%zu rays: %zu primary, %zu reflected/refracted, "
+    std::printf("  %-5s %-38s frame %8.1f ms  (%zu rays: %zu primary, %zu reflected/refracted, "
                 "%zu glow, %zu shadow; %d threads; BVH build %.1f ms)\n",
                 e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
                 c.secondary, c.glow, c.shadow, threads, e.compileMs);
@@ -276,7 +276,7 @@ void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedR
         if (r.scene == e.scene && r.engine == "glsl" && rayLever(r.lever) == e.lever &&
             r.numerics == "robust" && r.torusSolver == "robust" && r.width == e.width &&
             r.height == e.height && r.depth == e.depth && r.shadows)
-            std::printf("  %-5s %-28s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
+            std::printf("  %-5s %-38s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
                         benchSettingName(e).c_str(), r.frameMs / e.frameMs);
 }
 
@@ -368,7 +368,7 @@ int cmdBench(const BenchOptions& options) {
         for (const Measured& m : measured) {
             BenchRow row =
                 rowFor(name, scene, stage, sources, m, reference, size.width, size.height);
-            std::printf("  %-5s %-28s frame %8.1f ms  compile %7.0f ms  rmse %.5f  psnr %5.1f dB  "
+            std::printf("  %-5s %-38s frame %8.1f ms  compile %7.0f ms  rmse %.5f  psnr %5.1f dB  "
                         "bad px %5.1f%%  depth p99 %.1f ulp\n",
                         name.c_str(), benchSettingName(row).c_str(), row.frameMs, row.compileMs,
                         row.rmse, row.psnr, 100.0 * row.badPxShare, row.depthErrP99Ulp);

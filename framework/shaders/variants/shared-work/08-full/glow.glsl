@@ -4,10 +4,11 @@
 //
 // The glow asks what the primary ray meets first - a question trace() has
 // already asked of the same ray. Here the answer is the one findClosest
-// kept from the pixel's first search (pixelFirstHit, find_closest.glsl),
-// so the program holds no second search at all: on llvmpipe, which runs the
-// code of every branch for 8 pixels in lock step, that search cost every
-// pixel, halo or not (5% of a pro frame). Same picture.
+// kept from the pixel's first search (pixelFirstHit, in this variant's
+// find_closest.glsl), so the program holds no second search at all: on
+// llvmpipe, which runs the code of every branch for 8 pixels in lock step,
+// that search cost every pixel, halo or not (5% of a pro frame). Same
+// picture.
 vec3 sunGlow(Ray ray)
 {
     if (uGlowSphere < 0) return vec3(0.0);

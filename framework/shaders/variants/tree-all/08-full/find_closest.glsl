@@ -53,23 +53,11 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
 }
 
 
-#ifdef RAYLAB_SHARED_WORK
-// The pixel's first search - its primary ray's - is kept for the demo's
-// glow (framework/shaders/variants/shared-work), which asks the same
-// question of the same ray.
-Hit pixelFirstHit = Hit(T_FAR, -1);
-bool pixelSearched = false;
-#endif
-
 bool findClosest(Ray ray, out Hit hit)
 {
     hit = Hit(T_FAR, -1);
     testSpheres(ray, hit, false);
     testOthers(ray, hit, false);
-#ifdef RAYLAB_SHARED_WORK
-    if (!pixelSearched) pixelFirstHit = hit;
-    pixelSearched = true;
-#endif
     return hit.id >= 0;
 }
 

@@ -1,0 +1,96 @@
+// Variant of solution/08-full/find_closest.glsl, used instead of it when
+// RAYLAB_SHARED_WORK is defined (the demo, and raylab bench's "shared"
+// lever). Not part of any lab: students never see this file.
+//
+// The same searches; findClosest also keeps the pixel's first answer - its
+// primary ray's - for the variant's glow.glsl, which asks the same question
+// of the same ray.
+
+// The nearest object along a ray, for the full demo. (Provided: nothing to
+// do here, read it if you are curious.)
+//
+// Lab 05's findClosest tests every object for every ray. That is fine for a
+// dozen objects; the pro scene has 110 spheres, a mesh from an OBJ file may
+// have a hundred thousand triangles, and every shading point sends a shadow
+// ray per light on top. Here the spheres and the meshes' triangles sit in
+// a bounding volume hierarchy (BVH), built on the CPU
+// (framework/src/raytrace/scene/bvh.cpp): a tree of boxes, each box holding
+// its children. A ray that misses a box skips every object inside it. The
+// few other objects (planes, the disc, the scene's own triangles, the
+// torus) are tested one by one as in lab 05 - the triangles group by group,
+// each group behind its box (framework/src/raytrace/scene/triangle_groups.h
+// says why they are not in the tree).
+//
+// Why one kind per leaf: a CPU renderer such as llvmpipe runs 8 pixels in
+// lock-step and executes both sides of an `if` whenever the pixels disagree.
+// A leaf holding several kinds would need an `if` on the kind at every
+// object, and every sphere test would pay for the other kind's code (tried
+// with the torus: five times slower in an earlier version). So each leaf
+// holds spheres only or mesh triangles only, and the triangle code is
+// compiled only for scenes with meshes (RAYLAB_MESHES).
+//
+// GLSL has no recursion, so the tree is walked with a small stack of boxes
+// still to visit - the same idea as trace()'s stack of rays. The nearer
+// child is visited first; the farther one waits and is skipped when a hit
+// nearer than its box has been found meanwhile.
+//
+// The walk is in test_spheres.glsl. Where the BVH is switched off (`raylab
+// demo --no-bvh`, `raylab bench`, scenes with few spheres) the framework
+// uses a test_spheres.glsl with lab 05's linear search instead.
+
+void keepNearer(inout Hit hit, float t, int kind, int index)
+{
+    if (t != NO_HIT && t < hit.t) hit = Hit(t, objectId(kind, index));
+}
+
+#include "scene_meshes.glsl"
+#include "test_spheres.glsl"
+
+
+// Every object but the spheres, one by one. With stopAtFirst it returns as
+// soon as something nearer than hit.t is found.
+void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
+{
+    for (int i = 0; i < uPlaneCount && !(stopAtFirst && hit.id >= 0); ++i)
+        keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);
+    for (int i = 0; i < uDiscCount && !(stopAtFirst && hit.id >= 0); ++i)
+        keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
+    // The triangles group by group (scene_objects.glsl): a group whose box
+    // the ray misses, or meets only beyond the nearest hit, is skipped.
+    vec3 invDir = inverseDirection(ray.dir);
+    for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {
+        vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
+        vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
+        if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;
+        int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
+        for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
+            keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+                       KIND_TRIANGLE, i);
+    }
+    for (int i = 0; i < uTorusCount && !(stopAtFirst && hit.id >= 0); ++i)
+        keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
+}
+
+
+Hit pixelFirstHit = Hit(T_FAR, -1);
+bool pixelSearched = false;
+
+bool findClosest(Ray ray, out Hit hit)
+{
+    hit = Hit(T_FAR, -1);
+    testSpheres(ray, hit, false);
+    testOthers(ray, hit, false);
+    if (!pixelSearched) pixelFirstHit = hit;
+    pixelSearched = true;
+    return hit.id >= 0;
+}
+
+// Is any object nearer than maxT along the ray? For shadow rays: unlike
+// findClosest it may stop at the first blocker it meets.
+bool findBlocker(Ray ray, float maxT)
+{
+    Hit hit = Hit(maxT, -1);
+    testSpheres(ray, hit, true);
+    if (hit.id < 0) testOthers(ray, hit, true);
+    return hit.id >= 0;
+}

@@ -84,8 +84,7 @@ int cmdDemo(const DemoOptions& demo) {
     // The demo runs the solution, so it may use the bench's weight-cut
     // variant of trace.glsl and the shared-work variants of the glow and
     // the shading (a student's files are never replaced).
-    variant.weightCut = ShaderVariant::kDemoWeightCut;
-    variant.sharedWork = true;
+    variant.useDemoLevers();
     StageRenderer renderer(stage, setup.sources, setup.scene, setup.size.width, setup.size.height,
                            PixelFormat::Rgba8, "", variant);
     const std::filesystem::path outDir = prepareOutputFolder(demo, sceneName);

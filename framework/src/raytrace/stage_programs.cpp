@@ -26,6 +26,11 @@ std::vector<std::string> ShaderVariant::defines() const {
     return d;
 }
 
+void ShaderVariant::useDemoLevers() {
+    weightCut = kDemoWeightCut;
+    sharedWork = true;
+}
+
 std::vector<std::string> ShaderVariant::extensions() const {
     if (sphereStorage) return {"GL_ARB_shader_storage_buffer_object"};
     return {};

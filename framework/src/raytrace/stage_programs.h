@@ -51,6 +51,10 @@ struct ShaderVariant {
     // (sphere_blocks.h); set beforehand, it asks for them anyway (the growth
     // bench compares the two).
     bool sphereStorage = false;
+    // Switches on the levers of `raylab demo` and of the window showing the
+    // solution: the weight cut (kDemoWeightCut) and shared work. Only for
+    // the solution: their variant files replace files students write.
+    void useDemoLevers();
     std::vector<std::string> defines() const;     // the defines for the switches above
     std::vector<std::string> extensions() const;  // the GLSL extensions they need
 

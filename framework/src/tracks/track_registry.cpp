@@ -20,10 +20,7 @@ std::unique_ptr<TrackRenderer> rayTracer(const StageInfo& stage, const StageSour
     // may trace as the headless demo does, without the rays too faint to
     // change a pixel and with the shared-work variants; a student's files
     // are never replaced by a variant.
-    if (use == RendererUse::Fastest && !sources.lab) {
-        variant.weightCut = ShaderVariant::kDemoWeightCut;
-        variant.sharedWork = true;
-    }
+    if (use == RendererUse::Fastest && !sources.lab) variant.useDemoLevers();
     return std::make_unique<StageRenderer>(stage, sources, std::move(scene), width, height, format,
                                            "", variant);
 }

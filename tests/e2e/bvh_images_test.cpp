@@ -159,6 +159,25 @@ TEST_P(VariantViews, SharedWorkDrawsWhatThePlainProgramDraws) {
     EXPECT_GT(bad.maxDiff, 1) << "a missing glow went unnoticed";
 }
 
+// The light buffer (`raylab demo`, the bench's "lbuf" row): shadow rays
+// test the spheres their light's cell lists instead of walking the BVH. The
+// lists are conservative (tests/unit/light_buffer_test.cpp), so every
+// shadow ray gets the walk's answer and not one byte changes. (The same
+// comparison sees a missing glow: SharedWorkDrawsWhatThePlainProgramDraws.)
+TEST_P(VariantViews, LightBufferDrawsWhatTheWalkDraws) {
+    const CheckView& v = view(GetParam());
+    ShaderVariant walk, buffer;
+    walk.specialized = buffer.specialized = true;
+    walk.weightCut = ShaderVariant::kDemoWeightCut;
+    walk.sharedWork = true;
+    buffer.useDemoLevers();
+    ASSERT_TRUE(buffer.lightBuffer);
+    ImageDiff d = diff(render(v, buffer), render(v, walk));
+    std::printf("[ figure ] %s: light buffer vs BVH walk: %.3f%% of pixels differ (max %d/255)\n",
+                v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
+    EXPECT_EQ(d.maxDiff, 0) << "the same shadow answers: the same bytes";
+}
+
 // The bench's tree-all row (the scene's triangles and discs in the BVH too)
 // draws what the reference draws (the comparison is shown failing on a
 // broken traversal below).

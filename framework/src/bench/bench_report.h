@@ -50,8 +50,8 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows);
 std::string benchSettingName(const BenchRow& row);
 
 // The part of a row's lever that changes which rays it casts: "tree-all"
-// changes only how they are found, so "tree-all+wcut1/255" casts the rays
-// of "wcut1/255" (the Embree row it is measured against).
+// and "lbuf" change only how they are found, so "tree-all+wcut1/255" casts
+// the rays of "wcut1/255" (the Embree row it is measured against).
 std::string rayLever(const std::string& lever);
 
 // scene,width,height,depth,shadows,torus_solver,bvh,specialized,numerics,

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace raylab {
 
@@ -97,10 +98,12 @@ std::string benchSettingName(const BenchRow& r) {
 }
 
 std::string rayLever(const std::string& lever) {
-    const std::string treeAll = "tree-all";
-    if (lever == treeAll) return "";
-    if (lever.rfind(treeAll + "+", 0) == 0) return lever.substr(treeAll.size() + 1);
-    return lever;
+    // "tree-all" and "lbuf" change how the rays find objects, not which.
+    std::string kept, part;
+    std::istringstream parts(lever);
+    while (std::getline(parts, part, '+'))
+        if (part != "tree-all" && part != "lbuf") kept += (kept.empty() ? "" : "+") + part;
+    return kept;
 }
 
 // ---------------------------------------------------------------- all three

@@ -30,6 +30,7 @@
 #include "frame_error.h"
 #include "frame_timer.h"
 #include "gl_loader.h"
+#include "light_buffer.h"
 #include "paths.h"
 #include "reference_tracer.h"
 #include "scene_transform.h"
@@ -61,7 +62,8 @@ constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 // "wcut1/255" for a cut of 1/255: the lever's name in the bench's rows.
 // "old-path" for the tracer before the levers (RAYLAB_OLD_PATH), "tree-all"
 // for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL), "shared"
-// for the shared-work variants (RAYLAB_SHARED_WORK).
+// for the shared-work variants (RAYLAB_SHARED_WORK), "lbuf" for shadow rays
+// through a light buffer (RAYLAB_LIGHT_BUFFER).
 std::string leverName(const ShaderVariant& v) {
     std::string name = v.oldPath ? "old-path" : (v.treeAll ? "tree-all" : "");
     auto add = [&](const std::string& lever) { name += (name.empty() ? "" : "+") + lever; };
@@ -71,6 +73,7 @@ std::string leverName(const ShaderVariant& v) {
         add(text);
     }
     if (v.sharedWork) add("shared");
+    if (v.lightBuffer) add("lbuf");
     return name;
 }
 
@@ -116,13 +119,19 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
         s.variant.specialized = true;
         s.variant.weightCut = kWeightCut;
     }));
-    // ... and with the shared-work variants on top (the demo's choice): the
-    // glow reuses the primary ray's hit, shading skips lights behind.
+    // ... with the shared-work variants on top: the glow reuses the primary
+    // ray's hit, shading skips lights behind ...
     grid.push_back(with([](BenchSetting& s) {
         s.variant.specialized = true;
         s.variant.weightCut = kWeightCut;
         s.variant.sharedWork = true;
     }));
+    // ... and shadow rays through a light buffer (the demo's choice).
+    if (lightBufferSuits(scene))
+        grid.push_back(with([](BenchSetting& s) {
+            s.variant.specialized = true;
+            s.variant.useDemoLevers();
+        }));
     // The "one tree over every bounded kind", against the row above:
     // the scene's few triangles and discs in the BVH instead of a loop.
     if (!scene.triangles.empty() || !scene.discs.empty())

@@ -53,7 +53,8 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_OLD_PATH", true, "old-path"},  // before the bench's levers: the glow ray and shadow
                                             // rays of lights behind a surface always cast
     {"RAYLAB_MESHES", true, "meshes"},      // stage 08 scenes with OBJ meshes
-    {"RAYLAB_SHARED_WORK", true, "shared-work"},  // the same picture, less work (demo, bench)
+    {"RAYLAB_SHARED_WORK", true, "shared-work"},    // the same picture, less work (demo, bench)
+    {"RAYLAB_LIGHT_BUFFER", true, "light-buffer"},  // shadow rays through a light buffer (demo)
     {"RAYLAB_TREE_ALL", true,
      "tree-all"},  // the scene's triangles and discs in the BVH too (bench)
 };

@@ -1,5 +1,6 @@
 #include "stage_programs.h"
 
+#include "light_buffer.h"
 #include "scene_baking.h"
 #include "sphere_blocks.h"
 
@@ -29,6 +30,14 @@ std::vector<std::string> ShaderVariant::defines() const {
 void ShaderVariant::useDemoLevers() {
     weightCut = kDemoWeightCut;
     sharedWork = true;
+    lightBuffer = true;
+}
+
+bool ShaderVariant::usesLightBuffer(const Scene& scene) const {
+    // The old path has its own light_visibility.glsl; tree-all moves the
+    // triangles and discs out of testOthers; the naive numerics' fixed ray
+    // offset is not covered by the lists' margins.
+    return lightBuffer && !oldPath && !treeAll && !naiveNumerics && lightBufferSuits(scene);
 }
 
 std::vector<std::string> ShaderVariant::extensions() const {
@@ -73,6 +82,7 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     // The mesh code (scene_meshes.glsl) only where there are meshes: the
     // other scenes' programs stay short.
     if (!scene.meshes.empty()) defines.push_back("RAYLAB_MESHES");
+    if (variant.usesLightBuffer(scene)) defines.push_back("RAYLAB_LIGHT_BUFFER");
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();
     const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);

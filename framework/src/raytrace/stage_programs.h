@@ -39,6 +39,11 @@ struct ShaderVariant {
     // again, and shading visits only the lights in front of the surface.
     // On in `raylab demo` and the window whenever they show the solution.
     bool sharedWork = false;
+    // RAYLAB_LIGHT_BUFFER: shadow rays find the spheres that may block them
+    // in a light buffer (scene/light_buffer.h) instead of walking the BVH;
+    // the same picture. Where the scene suits it (lightBufferSuits) and not
+    // with oldPath, treeAll or naiveNumerics. On with the demo's levers.
+    bool lightBuffer = false;
     // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
     // and discs (the bench's tree-all row; bvh.h says why it is not the default).
     bool treeAll = false;
@@ -55,7 +60,9 @@ struct ShaderVariant {
     // solution: the weight cut (kDemoWeightCut) and shared work. Only for
     // the solution: their variant files replace files students write.
     void useDemoLevers();
-    std::vector<std::string> defines() const;     // the defines for the switches above
+    std::vector<std::string> defines() const;  // the defines for the switches above
+    // Whether a program for SCENE gets RAYLAB_LIGHT_BUFFER (see lightBuffer).
+    bool usesLightBuffer(const Scene& scene) const;
     std::vector<std::string> extensions() const;  // the GLSL extensions they need
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

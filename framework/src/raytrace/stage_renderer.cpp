@@ -48,6 +48,8 @@ constexpr int kBvhNodeUnit = 2;
 constexpr int kBvhItemUnit = 3;
 constexpr int kMeshCornerUnit = 4;
 constexpr int kMeshMaterialUnit = 5;
+constexpr int kLightCellUnit = 6;
+constexpr int kLightItemUnit = 7;
 
 void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
     if (!values.empty())
@@ -171,6 +173,12 @@ void StageRenderer::uploadSceneConstants() {
             scene_, 2, variant_.treeAll ? BvhObjects::AllBounded : BvhObjects::SpheresAndMeshes));
     glUniform1i(p.uniform("uBvhNodes"), kBvhNodeUnit);
     glUniform1i(p.uniform("uBvhItems"), kBvhItemUnit);
+    // The light buffer: built once, for the first program whose shadow rays use it.
+    if (!lightBuffer_ && p.uniform("uLightCells") >= 0)
+        lightBuffer_ = std::make_unique<LightBufferBuffers>(buildLightBuffer(scene_));
+    if (lightBuffer_) lightBuffer_->setUniforms(p.id());
+    glUniform1i(p.uniform("uLightCells"), kLightCellUnit);
+    glUniform1i(p.uniform("uLightItems"), kLightItemUnit);
     // Mesh triangles: uploaded once, for every program of a scene with meshes.
     if (!scene_.meshes.empty() && !meshes_) meshes_ = std::make_unique<SceneMeshBuffers>(scene_);
     glUniform1i(p.uniform("uMeshCorners"), kMeshCornerUnit);
@@ -277,6 +285,7 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     if (sky_) sky_->bind(kSkyUnit);
     if (bvh_) bvh_->bind(kBvhNodeUnit, kBvhItemUnit);
     if (meshes_) meshes_->bind(kMeshCornerUnit, kMeshMaterialUnit);
+    if (lightBuffer_) lightBuffer_->bind(kLightCellUnit, kLightItemUnit);
     // Only sphere positions and torus axes change from frame to frame;
     // the rest of the scene is uploaded once per program, in uploadSceneConstants().
     spheres_->moveTo(timeSeconds);

@@ -16,6 +16,7 @@
 #include "texture.h"
 
 #include "bvh_buffers.h"
+#include "light_buffer_buffers.h"
 #include "scene_mesh_buffers.h"
 #include "sphere_blocks.h"
 
@@ -66,9 +67,10 @@ private:
     std::unique_ptr<TextureArray> textures_;
     std::unique_ptr<CubeMap> sky_;
     ShaderVariant variant_;
-    std::unique_ptr<BvhBuffers> bvh_;           // made when the program walks a BVH
-    std::unique_ptr<SceneMeshBuffers> meshes_;  // made when the scene has meshes
-    std::unique_ptr<SphereBlocks> spheres_;     // the spheres' uniform blocks
+    std::unique_ptr<BvhBuffers> bvh_;                  // made when the program walks a BVH
+    std::unique_ptr<SceneMeshBuffers> meshes_;         // made when the scene has meshes
+    std::unique_ptr<LightBufferBuffers> lightBuffer_;  // made when shadow rays use one
+    std::unique_ptr<SphereBlocks> spheres_;            // the spheres' uniform blocks
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
     std::string fragmentEntry_;

@@ -1,0 +1,46 @@
+// Shadow rays through a light buffer (Haines and Greenberg, 1986): a cube of
+// cells around each light, each listing the spheres seen from the light
+// through it (built on the CPU: framework/src/raytrace/scene/light_buffer.h).
+// Part of the light-buffer variant (RAYLAB_LIGHT_BUFFER; the demo and raylab
+// bench's "lbuf" lever). Not part of any lab: students never see this file.
+//
+// A shadow ray toward light L tests the spheres of the one cell its
+// direction falls in, instead of walking the BVH: one read of the cell, a
+// short loop, where a walk is many steps of reads whose addresses differ
+// between llvmpipe's 8 lock-step pixels. The lists are conservative, so the
+// answer - blocked or not - is the same as the walk's, bit for bit.
+uniform isamplerBuffer uLightCells;  // (first, count) of each cell's list
+uniform isamplerBuffer uLightItems;  // the lists: sphere indices
+uniform int uLightBufferSize;        // cells along a cube face's edge
+uniform int uLightBufferEveryCell;   // the cell listing every sphere
+uniform float uLightBufferReach;     // shading points farther out use that cell
+
+// The cell of light `light`'s cube that direction d (from the light) falls
+// in: the face of d's largest component, then a square grid on that face.
+// Selects, not branches: llvmpipe would run every branch for all 8 pixels.
+int lightCell(int light, vec3 d)
+{
+    vec3 a = abs(d);
+    bool xMajor = a.x >= a.y && a.x >= a.z, yMajor = !xMajor && a.y >= a.z;
+    float major = xMajor ? d.x : yMajor ? d.y : d.z;
+    vec2 uv = (xMajor ? d.yz : yMajor ? d.xz : d.xy) / abs(major);
+    int face = 2 * (xMajor ? 0 : yMajor ? 1 : 2) + (major < 0.0 ? 1 : 0);
+    ivec2 c = clamp(ivec2(floor((uv * 0.5 + 0.5) * float(uLightBufferSize))), ivec2(0), ivec2(uLightBufferSize - 1));
+    return ((light * 6 + face) * uLightBufferSize + c.y) * uLightBufferSize + c.x;
+}
+
+// findBlocker (find_closest.glsl) for a ray toward light `light`.
+bool findLightBlocker(Ray ray, float maxT, int light)
+{
+    Hit hit = Hit(maxT, -1);
+    // A point far out on an infinite plane: its ray origin moved further off
+    // the surface than the lists allow for, so every sphere is tested.
+    int cell = length(ray.origin) > uLightBufferReach ? uLightBufferEveryCell : lightCell(light, -ray.dir);
+    ivec2 list = texelFetch(uLightCells, cell).rg;
+    for (int k = 0; k < list.y && hit.id < 0; ++k) {
+        int i = texelFetch(uLightItems, list.x + k).r;
+        keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+    }
+    if (hit.id < 0) testOthers(ray, hit, true);
+    return hit.id >= 0;
+}

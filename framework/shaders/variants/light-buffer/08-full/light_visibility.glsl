@@ -1,0 +1,32 @@
+// Variant of solution/08-full/light_visibility.glsl, used instead of it when
+// RAYLAB_LIGHT_BUFFER is defined (the demo, and raylab bench's "lbuf"
+// lever). Not part of any lab: students never see this file.
+//
+// The same answer; the shadow ray asks the light buffer (light_buffer.glsl)
+// which spheres could block it, instead of walking the BVH.
+
+// Does light `light` reach `point`? Lab 03's answer, with two changes for
+// speed: the shadow ray asks findBlocker (find_closest.glsl), which may stop
+// at the first object between the point and the light, instead of searching
+// for the nearest one; and a light behind the surface gets no shadow ray at
+// all. (Provided.)
+//   point  - a surface point (a hit found by findClosest)
+//   normal - unit surface normal at the point (facing the eye)
+// uShadows == 0 (key 1 in the window) turns shadows off: every light is visible.
+#include "ray_offset.glsl"
+#include "light_buffer.glsl"
+
+uniform int uShadows;
+
+bool lightVisible(vec3 point, vec3 normal, int light)
+{
+    if (uShadows == 0) return true;
+    vec3 toLight = uLightPositions[light] - point;
+    float distanceToLight = length(toLight);
+    vec3 dir = toLight / distanceToLight;
+    // A light behind the surface adds nothing (blinn_phong.glsl: lambert 0,
+    // no specular), so it needs no shadow ray: a third of pro's.
+    if (dot(normal, dir) <= 0.0) return false;
+    // So the light is on the normal's side: the ray leaves from there.
+    return !findLightBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight, light);
+}

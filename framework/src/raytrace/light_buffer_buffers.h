@@ -1,0 +1,32 @@
+#pragma once
+// The light buffer (scene/light_buffer.h) on the GPU: two buffer textures
+// that light_buffer.glsl reads with texelFetch.
+//   uLightCells (RG32I): texel c = (first, count) of cell c's list
+//   uLightItems (R32I):  the lists, sphere indices
+// Needs a current GL context. (Students need not read this file.)
+#include "gl.h"
+#include "light_buffer.h"
+
+namespace raylab {
+
+class LightBufferBuffers {
+public:
+    explicit LightBufferBuffers(const LightBuffer& buffer);
+    ~LightBufferBuffers();
+    LightBufferBuffers(const LightBufferBuffers&) = delete;
+    LightBufferBuffers& operator=(const LightBufferBuffers&) = delete;
+
+    // Binds the cell texture to CELLUNIT and the list texture to ITEMUNIT.
+    void bind(int cellUnit, int itemUnit) const;
+    // Sets the uniforms light_buffer.glsl reads besides the textures.
+    void setUniforms(GLuint program) const;
+
+private:
+    GLuint buffers_[2] = {0, 0};
+    GLuint textures_[2] = {0, 0};
+    int resolution_ = 0;
+    int everySphereCell_ = 0;
+    float reach_ = 0.0f;
+};
+
+}  // namespace raylab

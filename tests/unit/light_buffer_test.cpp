@@ -1,0 +1,155 @@
+// The light buffer (framework/src/raytrace/scene/light_buffer.h): every
+// sphere a shadow ray can meet must be in the list of the cell the ray's
+// direction falls in, or the shadow-ray variant would draw light where the
+// BVH walk draws shadow. Checked with shadow rays built the way
+// light_visibility.glsl builds them (float direction, origin moved off the
+// surface by up to ray_offset.glsl's bound) against an exact segment-sphere
+// test in double. The GPU side (the same picture as the walk, bit for bit)
+// is tests/e2e/bvh_images_test.cpp's LightBufferDrawsWhatTheWalkDraws.
+#include "light_buffer.h"
+#include "paths.h"
+#include "scene.h"
+#include "scene_transform.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using namespace raylab;
+
+namespace {
+
+Scene demoScene(const char* name) {
+    return loadScene(projectRoot() / "assets/scenes" / (std::string(name) + ".json"));
+}
+
+// Does the segment from O along unit D, 0 <= t <= maxT, come within R of C?
+// (A little more than the GLSL's test finds: a stricter check of the lists.)
+bool segmentMeetsSphere(glm::dvec3 o, glm::dvec3 d, double maxT, glm::dvec3 c, double r) {
+    const double t = std::clamp(glm::dot(c - o, d), 0.0, maxT);
+    return glm::length(o + t * d - c) <= r * (1.0 + 1e-6);
+}
+
+struct Audit {
+    long blockedRays = 0;  // (ray, sphere) pairs where the sphere blocks the ray
+    long missing = 0;      // ... and the ray's cell does not list it
+};
+
+// Shadow rays from points on the spheres and anywhere in the scene's reach
+// toward every light, with the spheres anywhere on their swing.
+Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    auto randomDirection = [&] {
+        glm::dvec3 v;
+        do v = {unit(rng), unit(rng), unit(rng)};
+        while (glm::length(v) > 1.0 || glm::length(v) < 1e-3);
+        return glm::normalize(v);
+    };
+    Audit a;
+    const double reach = buffer.reach;
+    for (int sample = 0; sample < 20000; ++sample) {
+        // Half the points on a sphere's surface (where shadows are cast on
+        // neighbours), half anywhere within the reach.
+        glm::dvec3 p;
+        if (sample % 2 == 0) {
+            const Sphere& s = scene.spheres[std::size_t(sample / 2) % scene.spheres.size()];
+            p = glm::dvec3(s.center) + double(s.radius) * randomDirection();
+        } else {
+            p = reach * std::cbrt(0.5 + 0.5 * unit(rng)) * randomDirection();
+        }
+        // ray_offset.glsl's offset: up to 256 float steps per coordinate.
+        const glm::dvec3 off = (3.05e-5 * glm::length(p) + 1.5e-5) * unit(rng) * randomDirection();
+        const glm::vec3 point(p);
+        const double time = 10.0 * (0.5 + 0.5 * unit(rng));
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            const glm::vec3 toLight = scene.lights[l].position - point;
+            const float distance = glm::length(toLight);
+            if (distance <= 0.0f) continue;
+            const glm::vec3 dir = toLight / distance;  // as the GLSL forms it
+            const glm::vec3 origin = glm::vec3(glm::dvec3(point) + off);
+            const int cell = glm::length(origin) > buffer.reach
+                                 ? buffer.everySphereCell()
+                                 : lightBufferCell(lookupResolution, int(l), -dir);
+            const glm::ivec2 list = buffer.cells.at(std::size_t(cell));
+            const auto first = buffer.items.begin() + list.x, end = first + list.y;
+            for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+                const Sphere& s = scene.spheres[i];
+                const glm::dvec3 centre = glm::dvec3(s.center + s.motion.offsetAt(float(time)));
+                if (!segmentMeetsSphere(origin, dir, distance, centre, s.radius)) continue;
+                ++a.blockedRays;
+                if (std::find(first, end, int(i)) == end) ++a.missing;
+            }
+        }
+    }
+    return a;
+}
+
+void expectConservative(const char* name, const Scene& scene) {
+    const LightBuffer buffer = buildLightBuffer(scene);
+    const Audit a = audit(scene, buffer, buffer.resolution, 1);
+    std::printf("[ figure ] %s: %d lights x 6 faces x %d^2 cells, lists %.2f spheres on average, "
+                "%d at most (of %zu); %ld blocked shadow rays, %ld missing from their cell\n",
+                name, int(scene.lights.size()), buffer.resolution, buffer.meanList(),
+                buffer.longestList(), scene.spheres.size(), a.blockedRays, a.missing);
+    EXPECT_GT(a.blockedRays, 1000) << "too few blocked rays to say anything";
+    EXPECT_EQ(a.missing, 0) << "a shadow ray's cell lacks a sphere that blocks it";
+}
+
+}  // namespace
+
+TEST(LightBuffer, EveryBlockingSphereIsInTheRaysCell) {
+    expectConservative("pro", demoScene("pro"));
+    expectConservative("lite", demoScene("lite"));
+}
+
+// The margins are shares of the scene's size and distance from the origin,
+// so they hold for a scene resized or moved far away (the renderers draw
+// those in a standard frame, but the buffer does not rely on it).
+TEST(LightBuffer, EveryBlockingSphereIsInTheRaysCellAtAnyScaleAndPlace) {
+    const Scene pro = demoScene("pro");
+    for (double scale : {1e-4, 1e6}) {
+        SceneTransform t;
+        t.scale = scale;
+        expectConservative(("pro x " + std::to_string(scale)).c_str(), transformScene(pro, t));
+    }
+    SceneTransform far;
+    far.offset = glm::dvec3(1e5, 0.0, 0.0);
+    expectConservative("pro moved by 1e5", transformScene(pro, far));
+}
+
+// The lists are short: that is the point of the buffer (pro's BVH walk
+// visits about 20 nodes per shadow ray).
+TEST(LightBuffer, ProsListsAreShort) {
+    const LightBuffer buffer = buildLightBuffer(demoScene("pro"));
+    EXPECT_LT(buffer.meanList(), 4.0);
+    EXPECT_EQ(buffer.cells.back().y, 110) << "the last cell lists every sphere";
+}
+
+// The audit can fail: lists built for spheres 10% smaller, or looked up
+// with the wrong grid, miss blockers.
+TEST(LightBuffer, AWrongBufferIsCaught) {
+    const Scene pro = demoScene("pro");
+    Scene smaller = pro;
+    for (Sphere& s : smaller.spheres) s.radius *= 0.9f;
+    const Audit shrunk = audit(pro, buildLightBuffer(smaller), kLightBufferResolution, 2);
+    std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld blocked rays missing\n",
+                shrunk.missing, shrunk.blockedRays);
+    EXPECT_GT(shrunk.missing, 0);
+    const LightBuffer buffer = buildLightBuffer(pro);
+    const Audit grid = audit(pro, buffer, kLightBufferResolution / 2, 3);
+    std::printf("[ figure ] lists looked up on a grid half as fine: %ld of %ld missing\n",
+                grid.missing, grid.blockedRays);
+    EXPECT_GT(grid.missing, 0);
+}
+
+TEST(LightBuffer, OnlyForScenesItSuits) {
+    EXPECT_TRUE(lightBufferSuits(demoScene("pro")));
+    EXPECT_FALSE(lightBufferSuits(demoScene("mesh"))) << "mesh triangles stay in the BVH";
+    Scene none = demoScene("lite");
+    none.spheres.clear();
+    EXPECT_FALSE(lightBufferSuits(none));
+}

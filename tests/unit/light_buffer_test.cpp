@@ -1,11 +1,11 @@
 // The light buffer (framework/src/raytrace/scene/light_buffer.h): every
-// sphere a shadow ray can meet must be in the list of the cell the ray's
-// direction falls in, or the shadow-ray variant would draw light where the
+// sphere and triangle a shadow ray can meet must be in the lists of the cell
+// the ray's direction falls in, or the shadow-ray variant would draw light where the
 // BVH walk draws shadow. Checked with shadow rays built the way
 // light_visibility.glsl builds them (float direction, origin moved off the
 // surface by up to ray_offset.glsl's bound) against an exact segment-sphere
-// test in double. The GPU side (the same picture as the walk, bit for bit)
-// is tests/e2e/bvh_images_test.cpp's LightBufferDrawsWhatTheWalkDraws.
+// test in double (segment-sphere, segment-triangle). The GPU side (the same picture as the walk,
+// bit for bit) is tests/e2e/bvh_images_test.cpp's LightBufferDrawsWhatTheWalkDraws.
 #include "light_buffer.h"
 #include "paths.h"
 #include "scene.h"
@@ -33,9 +33,24 @@ bool segmentMeetsSphere(glm::dvec3 o, glm::dvec3 d, double maxT, glm::dvec3 c, d
     return glm::length(o + t * d - c) <= r * (1.0 + 1e-6);
 }
 
+// Does the segment from O along unit D, 0 <= t <= maxT, cross triangle
+// (A, B, C)? Moeller and Trumbore's test in double, with the triangle's
+// edges widened a little (a stricter check).
+bool segmentMeetsTriangle(glm::dvec3 o, glm::dvec3 d, double maxT, glm::dvec3 a, glm::dvec3 b,
+                          glm::dvec3 c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    if (std::fabs(det) < 1e-300) return false;
+    const glm::dvec3 s = o - a, q = glm::cross(s, e1);
+    const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det, t = glm::dot(e2, q) / det;
+    const double slack = 1e-6;
+    return u >= -slack && v >= -slack && u + v <= 1.0 + slack && t >= 0.0 && t <= maxT;
+}
+
 struct Audit {
-    long blockedRays = 0;  // (ray, sphere) pairs where the sphere blocks the ray
+    long blockedRays = 0;  // (ray, object) pairs where the object blocks the ray
     long missing = 0;      // ... and the ray's cell does not list it
+    long blockedByTriangles = 0;
 };
 
 // Shadow rays from points on the spheres and anywhere in the scene's reach
@@ -72,10 +87,19 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
             const glm::vec3 dir = toLight / distance;  // as the GLSL forms it
             const glm::vec3 origin = glm::vec3(glm::dvec3(point) + off);
             const int cell = glm::length(origin) > buffer.reach
-                                 ? buffer.everySphereCell()
+                                 ? buffer.everyObjectCell()
                                  : lightBufferCell(lookupResolution, int(l), -dir);
-            const glm::ivec2 list = buffer.cells.at(std::size_t(cell));
+            const glm::ivec4 list = buffer.cells.at(std::size_t(cell));
             const auto first = buffer.items.begin() + list.x, end = first + list.y;
+            const auto firstTriangle = buffer.items.begin() + list.z,
+                       endTriangle = firstTriangle + list.w;
+            for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+                const auto& v = scene.triangles[i].vertices;
+                if (!segmentMeetsTriangle(origin, dir, distance, v[0], v[1], v[2])) continue;
+                ++a.blockedRays;
+                ++a.blockedByTriangles;
+                if (std::find(firstTriangle, endTriangle, int(i)) == endTriangle) ++a.missing;
+            }
             for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
                 const Sphere& s = scene.spheres[i];
                 const glm::dvec3 centre = glm::dvec3(s.center + s.motion.offsetAt(float(time)));
@@ -91,11 +115,14 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
 void expectConservative(const char* name, const Scene& scene) {
     const LightBuffer buffer = buildLightBuffer(scene);
     const Audit a = audit(scene, buffer, buffer.resolution, 1);
-    std::printf("[ figure ] %s: %d lights x 6 faces x %d^2 cells, lists %.2f spheres on average, "
-                "%d at most (of %zu); %ld blocked shadow rays, %ld missing from their cell\n",
+    std::printf("[ figure ] %s: %d lights x 6 faces x %d^2 cells; a list that is not empty holds "
+                "%.2f objects on average, %d at most (of %zu spheres, %zu triangles); %ld blocked "
+                "shadow rays (%ld by triangles), %ld missing from their cell\n",
                 name, int(scene.lights.size()), buffer.resolution, buffer.meanList(),
-                buffer.longestList(), scene.spheres.size(), a.blockedRays, a.missing);
+                buffer.longestList(), scene.spheres.size(), scene.triangles.size(), a.blockedRays,
+                a.blockedByTriangles, a.missing);
     EXPECT_GT(a.blockedRays, 1000) << "too few blocked rays to say anything";
+    if (!scene.triangles.empty()) { EXPECT_GT(a.blockedByTriangles, 100); }
     EXPECT_EQ(a.missing, 0) << "a shadow ray's cell lacks a sphere that blocks it";
 }
 
@@ -125,12 +152,13 @@ TEST(LightBuffer, EveryBlockingSphereIsInTheRaysCellAtAnyScaleAndPlace) {
 // visits about 20 nodes per shadow ray).
 TEST(LightBuffer, ProsListsAreShort) {
     const LightBuffer buffer = buildLightBuffer(demoScene("pro"));
-    EXPECT_LT(buffer.meanList(), 4.0);
+    EXPECT_LT(buffer.meanList(), 6.0);
     EXPECT_EQ(buffer.cells.back().y, 110) << "the last cell lists every sphere";
+    EXPECT_EQ(buffer.cells.back().w, 14) << "... and every triangle";
 }
 
-// The audit can fail: lists built for spheres 10% smaller, or looked up
-// with the wrong grid, miss blockers.
+// The audit can fail: lists built for spheres 10% smaller, for triangles
+// moved 3 along x, or looked up with the wrong grid, miss blockers.
 TEST(LightBuffer, AWrongBufferIsCaught) {
     const Scene pro = demoScene("pro");
     Scene smaller = pro;
@@ -139,6 +167,13 @@ TEST(LightBuffer, AWrongBufferIsCaught) {
     std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld blocked rays missing\n",
                 shrunk.missing, shrunk.blockedRays);
     EXPECT_GT(shrunk.missing, 0);
+    Scene movedTriangles = pro;
+    for (Triangle& t : movedTriangles.triangles)
+        for (glm::vec3& v : t.vertices) v.x += 3.0f;
+    const Audit triangles = audit(pro, buildLightBuffer(movedTriangles), kLightBufferResolution, 4);
+    std::printf("[ figure ] lists of triangles moved 3 along x: %ld of %ld blocked rays missing\n",
+                triangles.missing, triangles.blockedRays);
+    EXPECT_GT(triangles.missing, 0);
     const LightBuffer buffer = buildLightBuffer(pro);
     const Audit grid = audit(pro, buffer, kLightBufferResolution / 2, 3);
     std::printf("[ figure ] lists looked up on a grid half as fine: %ld of %ld missing\n",

@@ -1,8 +1,8 @@
 #pragma once
 // The light buffer (scene/light_buffer.h) on the GPU: two buffer textures
 // that light_buffer.glsl reads with texelFetch.
-//   uLightCells (RG32I): texel c = (first, count) of cell c's list
-//   uLightItems (R32I):  the lists, sphere indices
+//   uLightCells (RGBA32I): texel c = (first, count) of cell c's spheres, then of its triangles
+//   uLightItems (R32I):    the lists, sphere and triangle indices
 // Needs a current GL context. (Students need not read this file.)
 #include "gl.h"
 #include "light_buffer.h"
@@ -25,7 +25,7 @@ private:
     GLuint buffers_[2] = {0, 0};
     GLuint textures_[2] = {0, 0};
     int resolution_ = 0;
-    int everySphereCell_ = 0;
+    int everyObjectCell_ = 0;
     float reach_ = 0.0f;
 };
 

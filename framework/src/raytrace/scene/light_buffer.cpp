@@ -51,15 +51,20 @@ constexpr double kCellBorderMargin = 1e-5;
 
 int LightBuffer::longestList() const {
     int longest = 0;
-    for (std::size_t c = 0; c + 1 < cells.size(); ++c) longest = std::max(longest, cells[c].y);
+    for (std::size_t c = 0; c + 1 < cells.size(); ++c)
+        longest = std::max(longest, cells[c].y + cells[c].w);
     return longest;
 }
 
 double LightBuffer::meanList() const {
-    if (cells.size() < 2) return 0.0;
     double sum = 0.0;
-    for (std::size_t c = 0; c + 1 < cells.size(); ++c) sum += cells[c].y;
-    return sum / double(cells.size() - 1);
+    int used = 0;
+    for (std::size_t c = 0; c + 1 < cells.size(); ++c)
+        if (cells[c].y + cells[c].w > 0) {
+            sum += cells[c].y + cells[c].w;
+            ++used;
+        }
+    return used > 0 ? sum / used : 0.0;
 }
 
 bool lightBufferSuits(const Scene& scene) {
@@ -126,23 +131,42 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     // A face's directions lie within this angle of its axis (a corner: acos(1/sqrt(3))).
     const double faceRadius = std::acos(1.0 / std::sqrt(3.0)) + kCellBorderMargin;
 
-    std::vector<std::vector<int>> lists(std::size_t(perLight) * scene.lights.size());
+    // An object as a ball: the spheres over their whole swing, the
+    // triangles by a ball around their corners.
+    struct Ball {
+        glm::dvec3 centre;
+        double radius;
+    };
+    std::vector<Ball> spheres, triangles;
+    for (const Sphere& s : scene.spheres)
+        spheres.push_back(
+            {s.center, s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude)});
+    for (const Triangle& t : scene.triangles) {
+        const glm::dvec3 centre =
+            (glm::dvec3(t.vertices[0]) + glm::dvec3(t.vertices[1]) + glm::dvec3(t.vertices[2])) /
+            3.0;
+        double radius = 0.0;
+        for (glm::vec3 v : t.vertices)
+            radius = std::max(radius, glm::length(glm::dvec3(v) - centre));
+        triangles.push_back({centre, radius});
+    }
+
+    const std::size_t cellCount = std::size_t(perLight) * scene.lights.size();
+    std::vector<std::vector<int>> sphereLists(cellCount), triangleLists(cellCount);
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         const glm::dvec3 light = scene.lights[l].position;
-        for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-            const Sphere& s = scene.spheres[i];
-            // The sphere over its whole swing, grown by how far a shadow ray
-            // may run off the line through the light.
-            const double radius =
-                s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude) + offMargin;
-            const glm::dvec3 toSphere = glm::dvec3(s.center) - light;
-            const double distance = glm::length(toSphere);
+        // Adds I to the lists of the cells whose directions come near BALL,
+        // grown by how far a shadow ray may run off the line through the light.
+        auto list = [&](const Ball& ball, int i, std::vector<std::vector<int>>& lists) {
             std::vector<int>* cube = &lists[l * std::size_t(perLight)];
+            const double radius = ball.radius + offMargin;
+            const glm::dvec3 toBall = ball.centre - light;
+            const double distance = glm::length(toBall);
             if (distance <= radius) {  // the light inside: every direction may meet it
-                for (int c = 0; c < perLight; ++c) cube[c].push_back(int(i));
-                continue;
+                for (int c = 0; c < perLight; ++c) cube[c].push_back(i);
+                return;
             }
-            const glm::dvec3 axis = toSphere / distance;
+            const glm::dvec3 axis = toBall / distance;
             const double theta = std::asin(radius / distance);  // the cone's half-angle
             const double cosT = std::cos(theta), sinT = std::sin(theta);
             for (int face = 0; face < 6; ++face) {
@@ -154,17 +178,25 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
                     // angle(axis, centre) <= theta + r, as cosines (theta + r < pi here).
                     if (theta + g.radius >= 3.14159 ||
                         glm::dot(axis, g.centre) >= cosT * g.cosR - sinT * g.sinR)
-                        cube[c].push_back(int(i));
+                        cube[c].push_back(i);
                 }
             }
-        }
+        };
+        for (std::size_t i = 0; i < spheres.size(); ++i) list(spheres[i], int(i), sphereLists);
+        for (std::size_t i = 0; i < triangles.size(); ++i)
+            list(triangles[i], int(i), triangleLists);
     }
-    for (const std::vector<int>& list : lists) {
-        buffer.cells.emplace_back(int(buffer.items.size()), int(list.size()));
+    auto append = [&](const std::vector<int>& list) {
+        const glm::ivec2 at(int(buffer.items.size()), int(list.size()));
         buffer.items.insert(buffer.items.end(), list.begin(), list.end());
-    }
-    buffer.cells.emplace_back(int(buffer.items.size()), int(scene.spheres.size()));
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) buffer.items.push_back(int(i));
+        return at;
+    };
+    for (std::size_t c = 0; c < cellCount; ++c)
+        buffer.cells.emplace_back(append(sphereLists[c]), append(triangleLists[c]));
+    std::vector<int> everySphere(spheres.size()), everyTriangle(triangles.size());
+    for (std::size_t i = 0; i < everySphere.size(); ++i) everySphere[i] = int(i);
+    for (std::size_t i = 0; i < everyTriangle.size(); ++i) everyTriangle[i] = int(i);
+    buffer.cells.emplace_back(append(everySphere), append(everyTriangle));
     return buffer;
 }
 

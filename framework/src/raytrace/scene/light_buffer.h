@@ -1,10 +1,11 @@
 #pragma once
 // A light buffer (Haines and Greenberg, "The Light Buffer: A Shadow-Testing
 // Accelerator", IEEE CG&A 1986): for each point light, a cube around it
-// whose faces are divided into cells, each cell listing the spheres seen
-// from the light through it. A shadow ray toward the light tests only the
-// spheres of the cell its direction falls in, instead of walking the whole
-// BVH (framework/shaders/variants/light-buffer/08-full/light_buffer.glsl).
+// whose faces are divided into cells, each cell listing the spheres and the
+// scene file's triangles seen from the light through it. A shadow ray toward
+// the light tests only the objects of the cell its direction falls in,
+// instead of walking the whole BVH and every group of triangles
+// (framework/shaders/variants/light-buffer/08-full/light_buffer.glsl).
 //
 // Why: shadow rays were about half of a pro frame on llvmpipe, and a BVH
 // walk is many steps of reads whose addresses differ between the 8 lock-step
@@ -18,8 +19,9 @@
 // off the surface, float rounding, a cell chosen near its border).
 // A shading point farther from the origin than `reach` (an infinite floor
 // far away: the offset grows with the coordinates) uses the last cell,
-// which lists every sphere. Planes, discs, triangles and tori are still
-// tested one by one (find_closest.glsl's testOthers).
+// which lists every sphere and triangle. Planes, discs and tori are still
+// tested one by one (a disc is cheap; a torus test costs the same whether
+// or not a list skips it: llvmpipe runs a loop's body at least once).
 #include "scene.h"
 
 #include <glm/glm.hpp>
@@ -29,19 +31,21 @@
 namespace raylab {
 
 struct LightBuffer {
-    int resolution = 0;             // cells along a cube face's edge
-    std::vector<glm::ivec2> cells;  // (first, count) of light, face, row, column; then the
-                                    // every-sphere cell
-    std::vector<int> items;         // the lists: sphere indices
-    float reach = 0.0f;             // shading points farther from the origin use every sphere
-    int everySphereCell() const { return int(cells.size()) - 1; }
-    int longestList() const;  // of the cells of the cube faces
-    double meanList() const;  // the same, on average
+    int resolution = 0;  // cells along a cube face's edge
+    // Per cell: (first, count) of its spheres, then of its triangles; cells
+    // ordered by light, face, row, column; then the every-object cell.
+    std::vector<glm::ivec4> cells;
+    std::vector<int> items;  // the lists: sphere and triangle indices
+    float reach = 0.0f;      // shading points farther from the origin use every object
+    int everyObjectCell() const { return int(cells.size()) - 1; }
+    int longestList() const;  // spheres and triangles, of the cells of the cube faces
+    double meanList() const;  // the same, on average over the cells that list any
 };
 
-// Cells along a face's edge: 32 (2.8 degrees at a face's centre). Measured on
-// pro with tools/bench/instructions_per_frame.sh: see docs/bench/README.md.
-inline constexpr int kLightBufferResolution = 32;
+// Cells along a face's edge: 64 (1.4 degrees at a face's centre). On pro
+// (tools/bench/instructions_per_frame.sh) 64 costs 2% less than 32: shorter
+// lists; the CPU builds pro's 3 x 6 x 64^2 cells in about 40 ms, once.
+inline constexpr int kLightBufferResolution = 64;
 
 // Scenes with more spheres keep the BVH for shadow rays: the brute-force
 // build below tests every sphere against every cell.
@@ -61,6 +65,7 @@ glm::dvec3 lightBufferCellCentre(int resolution, int face, int row, int column);
 double lightBufferCellRadius(int resolution, int face, int row, int column);
 
 // Builds the lists for every light of SCENE (in the shaders' units).
+// Triangles are listed by a ball around their corners (they never move).
 LightBuffer buildLightBuffer(const Scene& scene, int resolution = kLightBufferResolution);
 
 }  // namespace raylab

@@ -1,18 +1,19 @@
 // Shadow rays through a light buffer (Haines and Greenberg, 1986): a cube of
-// cells around each light, each listing the spheres seen from the light
-// through it (built on the CPU: framework/src/raytrace/scene/light_buffer.h).
+// cells around each light, each listing the spheres and triangles seen from
+// the light through it (built on the CPU: framework/src/raytrace/scene/light_buffer.h).
 // Part of the light-buffer variant (RAYLAB_LIGHT_BUFFER; the demo and raylab
 // bench's "lbuf" lever). Not part of any lab: students never see this file.
 //
-// A shadow ray toward light L tests the spheres of the one cell its
-// direction falls in, instead of walking the BVH: one read of the cell, a
-// short loop, where a walk is many steps of reads whose addresses differ
-// between llvmpipe's 8 lock-step pixels. The lists are conservative, so the
-// answer - blocked or not - is the same as the walk's, bit for bit.
-uniform isamplerBuffer uLightCells;  // (first, count) of each cell's list
-uniform isamplerBuffer uLightItems;  // the lists: sphere indices
+// A shadow ray toward light L tests the spheres and triangles of the one
+// cell its direction falls in, instead of walking the BVH and testing every
+// group of triangles: one read of the cell and two short loops, where a walk
+// is many steps of reads whose addresses differ between llvmpipe's 8
+// lock-step pixels. The lists are conservative, so the answer - blocked or
+// not - is the same as findBlocker's, bit for bit.
+uniform isamplerBuffer uLightCells;  // per cell: (first, count) of its spheres, of its triangles
+uniform isamplerBuffer uLightItems;  // the lists: sphere and triangle indices
 uniform int uLightBufferSize;        // cells along a cube face's edge
-uniform int uLightBufferEveryCell;   // the cell listing every sphere
+uniform int uLightBufferEveryCell;   // the cell listing every sphere and triangle
 uniform float uLightBufferReach;     // shading points farther out use that cell
 
 // The cell of light `light`'s cube that direction d (from the light) falls
@@ -29,18 +30,32 @@ int lightCell(int light, vec3 d)
     return ((light * 6 + face) * uLightBufferSize + c.y) * uLightBufferSize + c.x;
 }
 
-// findBlocker (find_closest.glsl) for a ray toward light `light`.
+// findBlocker (find_closest.glsl) for a ray toward light `light`: the same
+// objects in the same order of kinds, the spheres and triangles from the
+// ray's cell, the planes, discs and tori one by one (testOthers, less its
+// triangles: a loop over few cheap objects, or a torus whose test costs the
+// same skipped or not, since llvmpipe runs a loop's body at least once).
 bool findLightBlocker(Ray ray, float maxT, int light)
 {
     Hit hit = Hit(maxT, -1);
     // A point far out on an infinite plane: its ray origin moved further off
-    // the surface than the lists allow for, so every sphere is tested.
+    // the surface than the lists allow for, so every object is tested.
     int cell = length(ray.origin) > uLightBufferReach ? uLightBufferEveryCell : lightCell(light, -ray.dir);
-    ivec2 list = texelFetch(uLightCells, cell).rg;
+    ivec4 list = texelFetch(uLightCells, cell);
     for (int k = 0; k < list.y && hit.id < 0; ++k) {
         int i = texelFetch(uLightItems, list.x + k).r;
         keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
     }
-    if (hit.id < 0) testOthers(ray, hit, true);
+    for (int i = 0; i < uPlaneCount && hit.id < 0; ++i)
+        keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);
+    for (int i = 0; i < uDiscCount && hit.id < 0; ++i)
+        keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
+    for (int k = 0; k < list.w && hit.id < 0; ++k) {
+        int i = texelFetch(uLightItems, list.z + k).r;
+        keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+                   KIND_TRIANGLE, i);
+    }
+    for (int i = 0; i < uTorusCount && hit.id < 0; ++i)
+        keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
     return hit.id >= 0;
 }

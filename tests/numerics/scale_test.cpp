@@ -193,6 +193,37 @@ TEST_P(SceneScale, PicturesAndDepthsDoNotDependOnSizeOrPlace) {
     }
 }
 
+// The demo's program (specialised, weight cut, shared work, light buffer:
+// ShaderVariant::useDemoLevers) at the same scales and places: still within
+// the graders' tolerance of the reference tracer. The light buffer's
+// margins are shares of the scene's size, and this is where a margin that
+// did not scale would show as missing shadows.
+TEST_P(SceneScale, TheDemosProgramAgreesWithTheReferenceAtEveryScale) {
+    const Scene base = loadScene(demoSceneFile(GetParam()));
+    ensureGlContext();
+    const StageInfo& stage = demoStage();
+    ShaderVariant demo;
+    demo.specialized = true;
+    demo.useDemoLevers();
+    for (const Case& c : cases()) {
+        const Scene moved = transformScene(base, SceneTransform{c.scale, c.offset});
+        ASSERT_TRUE(demo.usesLightBuffer(moved));
+        StageRenderer gpu(stage, solutionSources(stage), moved, kWidth, kHeight,
+                          PixelFormat::Rgba32F, "", demo);
+        gpu.render(cameraFor(std::nullopt, moved), 0.0f, RenderSettings{});
+        long nonFinite = 0;
+        const Image picture =
+            imageFromFloats(gpu.target().readFloats(), kWidth, kHeight, &nonFinite);
+        EXPECT_EQ(nonFinite, 0);
+        const ImageDiff d =
+            compareImages(referenceFrame(moved).color, picture, CompareTolerance{}.channel);
+        std::printf("[ figure ] %s %s: the demo's program against the reference: %.3f%% of "
+                    "pixels off (max %d/255)\n",
+                    GetParam().c_str(), c.label.c_str(), 100.0 * d.badShare, d.maxDiff);
+        EXPECT_LE(d.badShare, kShare) << GetParam() << " " << c.label;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(DemoScenes, SceneScale, ::testing::Values("lite", "pro"));
 
 // The command line does the same: `raylab render --scene-scale S` draws the

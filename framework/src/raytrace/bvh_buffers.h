@@ -9,8 +9,8 @@
 //                        an inner node
 //   uBvhItems (R32I):    indices into the lists of the leaves' kinds
 // Needs a current GL context. (Students need not read this file.)
+#include "buffer_texture_pair.h"
 #include "bvh.h"
-#include "gl.h"
 
 namespace raylab {
 
@@ -18,25 +18,16 @@ namespace raylab {
 // stay below 8, and float holds the code exactly for counts below 2^21.
 inline constexpr int kBvhLeafKinds = 8;
 
-// Fills BUFFER with BYTES of DATA and makes TEXTURE a buffer texture of
-// FORMAT over it (also used for the mesh triangles, mesh_buffers.h).
-void fillTextureBuffer(GLuint buffer, GLuint texture, GLenum format, const void* data,
-                       std::size_t bytes);
-
 class BvhBuffers {
 public:
     explicit BvhBuffers(const Bvh& bvh);
-    ~BvhBuffers();
-    BvhBuffers(const BvhBuffers&) = delete;
-    BvhBuffers& operator=(const BvhBuffers&) = delete;
 
     // Binds the node texture to NODEUNIT and the item texture to ITEMUNIT.
-    void bind(int nodeUnit, int itemUnit) const;
+    void bind(int nodeUnit, int itemUnit) const { textures_.bind(nodeUnit, itemUnit); }
     int nodeCount() const { return nodeCount_; }
 
 private:
-    GLuint buffers_[2] = {0, 0};
-    GLuint textures_[2] = {0, 0};
+    BufferTexturePair textures_;
     int nodeCount_ = 0;
 };
 

@@ -4,7 +4,7 @@
 //   uLightCells (RGBA32I): texel c = (first, count) of cell c's spheres, then of its triangles
 //   uLightItems (R32I):    the lists, sphere and triangle indices
 // Needs a current GL context. (Students need not read this file.)
-#include "gl.h"
+#include "buffer_texture_pair.h"
 #include "light_buffer.h"
 
 namespace raylab {
@@ -12,18 +12,14 @@ namespace raylab {
 class LightBufferBuffers {
 public:
     explicit LightBufferBuffers(const LightBuffer& buffer);
-    ~LightBufferBuffers();
-    LightBufferBuffers(const LightBufferBuffers&) = delete;
-    LightBufferBuffers& operator=(const LightBufferBuffers&) = delete;
 
     // Binds the cell texture to CELLUNIT and the list texture to ITEMUNIT.
-    void bind(int cellUnit, int itemUnit) const;
+    void bind(int cellUnit, int itemUnit) const { textures_.bind(cellUnit, itemUnit); }
     // Sets the uniforms light_buffer.glsl reads besides the textures.
     void setUniforms(GLuint program) const;
 
 private:
-    GLuint buffers_[2] = {0, 0};
-    GLuint textures_[2] = {0, 0};
+    BufferTexturePair textures_;
     int resolution_ = 0;
     int everyObjectCell_ = 0;
     float reach_ = 0.0f;

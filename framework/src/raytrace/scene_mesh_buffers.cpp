@@ -1,6 +1,5 @@
 #include "scene_mesh_buffers.h"
 
-#include "bvh_buffers.h"
 #include "error.h"
 
 #include <vector>
@@ -35,25 +34,8 @@ SceneMeshBuffers::SceneMeshBuffers(const Scene& scene) {
     // An empty buffer texture is not allowed everywhere: keep one dummy entry.
     if (corners.empty()) corners.assign(4, 0.0f);
     if (materials.empty()) materials.push_back(0);
-    glGenBuffers(2, buffers_);
-    glGenTextures(2, textures_);
-    fillTextureBuffer(buffers_[0], textures_[0], GL_RGBA32F, corners.data(),
-                      corners.size() * sizeof(float));
-    fillTextureBuffer(buffers_[1], textures_[1], GL_R32I, materials.data(),
-                      materials.size() * sizeof(GLint));
-}
-
-SceneMeshBuffers::~SceneMeshBuffers() {
-    glDeleteTextures(2, textures_);
-    glDeleteBuffers(2, buffers_);
-}
-
-void SceneMeshBuffers::bind(int cornerUnit, int materialUnit) const {
-    glActiveTexture(GLenum(GL_TEXTURE0 + cornerUnit));
-    glBindTexture(GL_TEXTURE_BUFFER, textures_[0]);
-    glActiveTexture(GLenum(GL_TEXTURE0 + materialUnit));
-    glBindTexture(GL_TEXTURE_BUFFER, textures_[1]);
-    glActiveTexture(GL_TEXTURE0);
+    textures_.fill(0, GL_RGBA32F, corners.data(), corners.size() * sizeof(float));
+    textures_.fill(1, GL_R32I, materials.data(), materials.size() * sizeof(GLint));
 }
 
 }  // namespace raylab

@@ -5,7 +5,7 @@
 //   uMeshMaterials (R32I):  per triangle, its mesh's material
 // Buffer textures: a mesh is limited by memory, not by uniform slots.
 // Needs a current GL context. (Students need not read this file.)
-#include "gl.h"
+#include "buffer_texture_pair.h"
 #include "scene.h"
 
 namespace raylab {
@@ -14,15 +14,11 @@ class SceneMeshBuffers {
 public:
     // Throws Error when the triangles exceed the driver's buffer texture size.
     explicit SceneMeshBuffers(const Scene& scene);
-    ~SceneMeshBuffers();
-    SceneMeshBuffers(const SceneMeshBuffers&) = delete;
-    SceneMeshBuffers& operator=(const SceneMeshBuffers&) = delete;
 
-    void bind(int cornerUnit, int materialUnit) const;
+    void bind(int cornerUnit, int materialUnit) const { textures_.bind(cornerUnit, materialUnit); }
 
 private:
-    GLuint buffers_[2] = {0, 0};
-    GLuint textures_[2] = {0, 0};
+    BufferTexturePair textures_;
 };
 
 }  // namespace raylab

@@ -23,6 +23,32 @@ double angleBetween(glm::dvec3 a, glm::dvec3 b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
+// How far sphere S reaches from its centre over its whole swing.
+double sweptRadius(const Sphere& s) {
+    return s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude);
+}
+
+// The unit direction through the middle of cell (FACE, ROW, COLUMN).
+glm::dvec3 cellCentre(int resolution, int face, int row, int column) {
+    const double u = 0.5 * (edge(resolution, column) + edge(resolution, column + 1));
+    const double v = 0.5 * (edge(resolution, row) + edge(resolution, row + 1));
+    return glm::normalize(faceDirection(face, u, v));
+}
+
+// The largest angle between that direction and a corner of the cell.
+double cellRadius(int resolution, int face, int row, int column) {
+    // A cell is a convex spherical quadrilateral: its farthest point from
+    // any point inside it is a corner.
+    const glm::dvec3 centre = cellCentre(resolution, face, row, column);
+    double radius = 0.0;
+    for (int du = 0; du < 2; ++du)
+        for (int dv = 0; dv < 2; ++dv)
+            radius = std::max(
+                radius, angleBetween(centre, faceDirection(face, edge(resolution, column + du),
+                                                           edge(resolution, row + dv))));
+    return radius;
+}
+
 // How far a GLSL shadow ray may run off the line through the light: the
 // ray origin's offset (ray_offset.glsl: up to 256 float steps of each
 // coordinate, 3.05e-5 of the point's distance from the origin, or 1/65536
@@ -35,8 +61,7 @@ double sceneReach(const Scene& scene) {
     double r = 0.0;
     auto grow = [&](glm::dvec3 p, double radius) { r = std::max(r, glm::length(p) + radius); };
     for (const PointLight& l : scene.lights) grow(l.position, 0.0);
-    for (const Sphere& s : scene.spheres)
-        grow(s.center, s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude));
+    for (const Sphere& s : scene.spheres) grow(s.center, sweptRadius(s));
     for (const Triangle& t : scene.triangles)
         for (glm::vec3 p : t.vertices) grow(p, 0.0);
     for (const Disc& d : scene.discs) grow(d.center, d.radius);
@@ -46,6 +71,8 @@ double sceneReach(const Scene& scene) {
 
 // Margin in radians for a direction that GLSL rounds into the neighbouring cell.
 constexpr double kCellBorderMargin = 1e-5;
+
+constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -87,25 +114,6 @@ int lightBufferCell(int resolution, int light, glm::vec3 d) {
     return ((light * 6 + face) * resolution + c.y) * resolution + c.x;
 }
 
-glm::dvec3 lightBufferCellCentre(int resolution, int face, int row, int column) {
-    const double u = 0.5 * (edge(resolution, column) + edge(resolution, column + 1));
-    const double v = 0.5 * (edge(resolution, row) + edge(resolution, row + 1));
-    return glm::normalize(faceDirection(face, u, v));
-}
-
-double lightBufferCellRadius(int resolution, int face, int row, int column) {
-    // A cell is a convex spherical quadrilateral: its farthest point from
-    // any point inside it is a corner.
-    const glm::dvec3 centre = lightBufferCellCentre(resolution, face, row, column);
-    double radius = 0.0;
-    for (int du = 0; du < 2; ++du)
-        for (int dv = 0; dv < 2; ++dv)
-            radius = std::max(
-                radius, angleBetween(centre, faceDirection(face, edge(resolution, column + du),
-                                                           edge(resolution, row + dv))));
-    return radius;
-}
-
 LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     LightBuffer buffer;
     buffer.resolution = resolution;
@@ -122,11 +130,9 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     for (int face = 0; face < 6; ++face)
         for (int row = 0; row < resolution; ++row)
             for (int column = 0; column < resolution; ++column) {
-                const double r =
-                    lightBufferCellRadius(resolution, face, row, column) + kCellBorderMargin;
+                const double r = cellRadius(resolution, face, row, column) + kCellBorderMargin;
                 geometry[std::size_t((face * resolution + row) * resolution + column)] = {
-                    lightBufferCellCentre(resolution, face, row, column), std::cos(r), std::sin(r),
-                    r};
+                    cellCentre(resolution, face, row, column), std::cos(r), std::sin(r), r};
             }
     // A face's directions lie within this angle of its axis (a corner: acos(1/sqrt(3))).
     const double faceRadius = std::acos(1.0 / std::sqrt(3.0)) + kCellBorderMargin;
@@ -138,9 +144,7 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
         double radius;
     };
     std::vector<Ball> spheres, triangles;
-    for (const Sphere& s : scene.spheres)
-        spheres.push_back(
-            {s.center, s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude)});
+    for (const Sphere& s : scene.spheres) spheres.push_back({s.center, sweptRadius(s)});
     for (const Triangle& t : scene.triangles) {
         const glm::dvec3 centre =
             (glm::dvec3(t.vertices[0]) + glm::dvec3(t.vertices[1]) + glm::dvec3(t.vertices[2])) /
@@ -176,7 +180,7 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
                      c < (face + 1) * resolution * resolution; ++c) {
                     const Cell& g = geometry[std::size_t(c)];
                     // angle(axis, centre) <= theta + r, as cosines (theta + r < pi here).
-                    if (theta + g.radius >= 3.14159 ||
+                    if (theta + g.radius >= kPi ||
                         glm::dot(axis, g.centre) >= cosT * g.cosR - sinT * g.sinR)
                         cube[c].push_back(i);
                 }

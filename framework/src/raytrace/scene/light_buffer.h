@@ -59,11 +59,6 @@ bool lightBufferSuits(const Scene& scene);
 // > 0) falls in: the same float arithmetic as light_buffer.glsl's lightCell.
 int lightBufferCell(int resolution, int light, glm::vec3 direction);
 
-// The unit direction through the middle of cell (FACE, ROW, COLUMN) and the
-// largest angle between it and a corner of the cell, in radians.
-glm::dvec3 lightBufferCellCentre(int resolution, int face, int row, int column);
-double lightBufferCellRadius(int resolution, int face, int row, int column);
-
 // Builds the lists for every light of SCENE (in the shaders' units).
 // Triangles are listed by a ball around their corners (they never move).
 LightBuffer buildLightBuffer(const Scene& scene, int resolution = kLightBufferResolution);

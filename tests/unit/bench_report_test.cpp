@@ -302,6 +302,7 @@ TEST(BenchMarkdown, EmbreeRowGivesEveryRowWithTheSameRaysItsRatio) {
     EXPECT_EQ(rayLever("tree-all+wcut1/255"), "wcut1/255");
     EXPECT_EQ(rayLever("old-path"), "old-path");
     EXPECT_EQ(rayLever("wcut1/255+shared+lbuf"), "wcut1/255+shared");
+    EXPECT_EQ(rayLever("wcut1/255+shared+lbuf+eye"), "wcut1/255+shared");
     // No Embree row: no Embree line.
     EXPECT_EQ(benchMarkdown({glsl}, "t", "c").find("embree-cast"), std::string::npos);
 }

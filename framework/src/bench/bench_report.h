@@ -49,8 +49,8 @@ std::vector<std::size_t> paretoFront(const std::vector<BenchRow>& rows);
 // the Embree row), then size and depth: "spec 800x600 d8".
 std::string benchSettingName(const BenchRow& row);
 
-// The part of a row's lever that changes which rays it casts: "tree-all"
-// and "lbuf" change only how they are found, so "tree-all+wcut1/255" casts
+// The part of a row's lever that changes which rays it casts: "tree-all",
+// "lbuf" and "eye" change only how they are found, so "tree-all+wcut1/255" casts
 // the rays of "wcut1/255" (the Embree row it is measured against).
 std::string rayLever(const std::string& lever);
 

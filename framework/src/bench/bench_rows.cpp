@@ -98,11 +98,12 @@ std::string benchSettingName(const BenchRow& r) {
 }
 
 std::string rayLever(const std::string& lever) {
-    // "tree-all" and "lbuf" change how the rays find objects, not which.
+    // "tree-all", "lbuf" and "eye" change how the rays find objects, not which.
     std::string kept, part;
     std::istringstream parts(lever);
     while (std::getline(parts, part, '+'))
-        if (part != "tree-all" && part != "lbuf") kept += (kept.empty() ? "" : "+") + part;
+        if (part != "tree-all" && part != "lbuf" && part != "eye")
+            kept += (kept.empty() ? "" : "+") + part;
     return kept;
 }
 

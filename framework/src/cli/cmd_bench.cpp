@@ -27,6 +27,7 @@
 #include "debug_views.h"
 #include "embree_caster.h"
 #include "error.h"
+#include "eye_cells.h"
 #include "frame_error.h"
 #include "frame_timer.h"
 #include "gl_loader.h"
@@ -63,7 +64,8 @@ constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 // "old-path" for the tracer before the levers (RAYLAB_OLD_PATH), "tree-all"
 // for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL), "shared"
 // for the shared-work variants (RAYLAB_SHARED_WORK), "lbuf" for shadow rays
-// through a light buffer (RAYLAB_LIGHT_BUFFER).
+// through a light buffer (RAYLAB_LIGHT_BUFFER), "eye" for primary rays
+// through the eye's cells (RAYLAB_EYE_CELLS).
 std::string leverName(const ShaderVariant& v) {
     std::string name = v.oldPath ? "old-path" : (v.treeAll ? "tree-all" : "");
     auto add = [&](const std::string& lever) { name += (name.empty() ? "" : "+") + lever; };
@@ -74,6 +76,7 @@ std::string leverName(const ShaderVariant& v) {
     }
     if (v.sharedWork) add("shared");
     if (v.lightBuffer) add("lbuf");
+    if (v.eyeCells) add("eye");
     return name;
 }
 
@@ -126,8 +129,15 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
         s.variant.weightCut = kWeightCut;
         s.variant.sharedWork = true;
     }));
-    // ... and shadow rays through a light buffer (the demo's choice).
+    // ... shadow rays through a light buffer ...
     if (lightBufferSuits(scene))
+        grid.push_back(with([](BenchSetting& s) {
+            s.variant.specialized = true;
+            s.variant.useDemoLevers();
+            s.variant.eyeCells = false;
+        }));
+    // ... and primary rays through the eye's cells (the demo's choice).
+    if (lightBufferSuits(scene) && eyeCellsSuit(scene))
         grid.push_back(with([](BenchSetting& s) {
             s.variant.specialized = true;
             s.variant.useDemoLevers();

@@ -55,6 +55,7 @@ constexpr VariantSwitch kVariants[] = {
     {"RAYLAB_MESHES", true, "meshes"},      // stage 08 scenes with OBJ meshes
     {"RAYLAB_SHARED_WORK", true, "shared-work"},    // the same picture, less work (demo, bench)
     {"RAYLAB_LIGHT_BUFFER", true, "light-buffer"},  // shadow rays through a light buffer (demo)
+    {"RAYLAB_EYE_CELLS", true, "eye-cells"},        // primary rays through the eye's cells (demo)
     {"RAYLAB_TREE_ALL", true,
      "tree-all"},  // the scene's triangles and discs in the BVH too (bench)
 };

@@ -2,32 +2,26 @@
 // Two buffer textures that travel together - a BVH's nodes and items
 // (bvh_buffers.h), the mesh triangles' corners and materials
 // (scene_mesh_buffers.h), a light buffer's cells and lists
-// (light_buffer_buffers.h) - created, filled, bound to two texture units
-// and deleted as one. Buffer textures, not uniform arrays: their size is
-// limited by memory, not by the few uniform slots some drivers have.
+// (light_buffer_buffers.h) - filled and bound as one.
 // Needs a current GL context. (Students need not read this file.)
-#include "gl.h"
-
-#include <cstddef>
+#include "buffer_texture.h"
 
 namespace raylab {
 
 class BufferTexturePair {
 public:
-    BufferTexturePair();
-    ~BufferTexturePair();
-    BufferTexturePair(const BufferTexturePair&) = delete;
-    BufferTexturePair& operator=(const BufferTexturePair&) = delete;
-
-    // Texture WHICH (0 or 1) becomes BYTES of DATA read as FORMAT (an empty
-    // buffer texture is not allowed everywhere: callers keep one dummy entry).
-    void fill(int which, GLenum format, const void* data, std::size_t bytes);
+    // Texture WHICH (0 or 1) becomes BYTES of DATA read as FORMAT (see BufferTexture::fill).
+    void fill(int which, GLenum format, const void* data, std::size_t bytes) {
+        textures_[which].fill(format, data, bytes);
+    }
     // Binds texture 0 to UNIT0 and texture 1 to UNIT1.
-    void bind(int unit0, int unit1) const;
+    void bind(int unit0, int unit1) const {
+        textures_[0].bind(unit0);
+        textures_[1].bind(unit1);
+    }
 
 private:
-    GLuint buffers_[2] = {0, 0};
-    GLuint textures_[2] = {0, 0};
+    BufferTexture textures_[2];
 };
 
 }  // namespace raylab

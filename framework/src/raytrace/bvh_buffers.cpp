@@ -6,7 +6,8 @@
 
 namespace raylab {
 
-BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
+BvhBuffers::BvhBuffers(const Bvh& bvh)
+    : nodeCount_(int(bvh.nodes.size())), treeItems_(bvh.items.begin(), bvh.items.end()) {
     std::vector<float> nodes;
     for (const BvhNode& n : bvh.nodes) {
         nodes.insert(nodes.end(), {n.box.lo.x, n.box.lo.y, n.box.lo.z, float(n.first)});
@@ -15,11 +16,21 @@ BvhBuffers::BvhBuffers(const Bvh& bvh) : nodeCount_(int(bvh.nodes.size())) {
         const int code = n.count > 0 ? kBvhLeafKinds * n.count + n.kind : 0;
         nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(code)});
     }
-    std::vector<GLint> items(bvh.items.begin(), bvh.items.end());
     // An empty buffer texture is not allowed everywhere: keep one dummy entry.
     if (nodes.empty()) nodes.assign(8, 0.0f);
-    if (items.empty()) items.push_back(-1);
     textures_.fill(0, GL_RGBA32F, nodes.data(), nodes.size() * sizeof(float));
+    fillItems({});
+}
+
+int BvhBuffers::setItemTail(const std::vector<int>& tail) {
+    fillItems(tail);
+    return int(treeItems_.size());
+}
+
+void BvhBuffers::fillItems(const std::vector<int>& tail) {
+    std::vector<GLint> items(treeItems_.begin(), treeItems_.end());
+    items.insert(items.end(), tail.begin(), tail.end());
+    if (items.empty()) items.push_back(-1);
     textures_.fill(1, GL_R32I, items.data(), items.size() * sizeof(GLint));
 }
 

@@ -12,6 +12,8 @@
 #include "buffer_texture_pair.h"
 #include "bvh.h"
 
+#include <vector>
+
 namespace raylab {
 
 // A leaf's code is kBvhLeafKinds * count + kind: the kinds (shader_constants.h)
@@ -25,10 +27,17 @@ public:
     // Binds the node texture to NODEUNIT and the item texture to ITEMUNIT.
     void bind(int nodeUnit, int itemUnit) const { textures_.bind(nodeUnit, itemUnit); }
     int nodeCount() const { return nodeCount_; }
+    // Puts TAIL after the tree's own items (lists that the walk takes as
+    // leaves: the eye's cells, eye_cell_buffers.h), replacing any earlier
+    // tail; returns where it starts.
+    int setItemTail(const std::vector<int>& tail);
 
 private:
+    void fillItems(const std::vector<int>& tail);
+
     BufferTexturePair textures_;
     int nodeCount_ = 0;
+    std::vector<int> treeItems_;
 };
 
 }  // namespace raylab

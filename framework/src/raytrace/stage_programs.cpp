@@ -1,5 +1,6 @@
 #include "stage_programs.h"
 
+#include "eye_cells.h"
 #include "light_buffer.h"
 #include "scene_baking.h"
 #include "sphere_blocks.h"
@@ -31,6 +32,7 @@ void ShaderVariant::useDemoLevers() {
     weightCut = kDemoWeightCut;
     sharedWork = true;
     lightBuffer = true;
+    eyeCells = true;
 }
 
 bool ShaderVariant::usesLightBuffer(const Scene& scene) const {
@@ -38,6 +40,13 @@ bool ShaderVariant::usesLightBuffer(const Scene& scene) const {
     // triangles and discs out of testOthers; the naive numerics' fixed ray
     // offset is not covered by the lists' margins.
     return lightBuffer && !oldPath && !treeAll && !naiveNumerics && lightBufferSuits(scene);
+}
+
+bool ShaderVariant::usesEyeCells(const Scene& scene) const {
+    // The cells replace a walk over spheres only: not without the tree, not
+    // with tree-all's triangles and discs in it; the old path is the tracer
+    // before the bench's levers.
+    return eyeCells && bvh && !treeAll && !oldPath && eyeCellsSuit(scene);
 }
 
 std::vector<std::string> ShaderVariant::extensions() const {
@@ -83,6 +92,7 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     // other scenes' programs stay short.
     if (!scene.meshes.empty()) defines.push_back("RAYLAB_MESHES");
     if (variant.usesLightBuffer(scene)) defines.push_back("RAYLAB_LIGHT_BUFFER");
+    if (variant.usesEyeCells(scene)) defines.push_back("RAYLAB_EYE_CELLS");
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();
     const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);

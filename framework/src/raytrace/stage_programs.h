@@ -44,6 +44,12 @@ struct ShaderVariant {
     // the same picture. Where the scene suits it (lightBufferSuits) and not
     // with oldPath, treeAll or naiveNumerics. On with the demo's levers.
     bool lightBuffer = false;
+    // RAYLAB_EYE_CELLS: primary rays find the spheres they may meet in the
+    // eye's cells (scene/eye_cells.h) instead of walking the BVH from its
+    // root; the same picture. Where the scene suits it (eyeCellsSuit) and
+    // the program walks a BVH of spheres (not with oldPath or treeAll). On
+    // with the demo's levers.
+    bool eyeCells = false;
     // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
     // and discs (the bench's tree-all row; bvh.h says why it is not the default).
     bool treeAll = false;
@@ -57,12 +63,15 @@ struct ShaderVariant {
     // bench compares the two).
     bool sphereStorage = false;
     // Switches on the levers of `raylab demo` and of the window showing the
-    // solution: the weight cut (kDemoWeightCut) and shared work. Only for
+    // solution: the weight cut (kDemoWeightCut), shared work, the light
+    // buffer and the eye's cells. Only for
     // the solution: their variant files replace files students write.
     void useDemoLevers();
     std::vector<std::string> defines() const;  // the defines for the switches above
     // Whether a program for SCENE gets RAYLAB_LIGHT_BUFFER (see lightBuffer).
     bool usesLightBuffer(const Scene& scene) const;
+    // Whether a program for SCENE gets RAYLAB_EYE_CELLS (see eyeCells).
+    bool usesEyeCells(const Scene& scene) const;
     std::vector<std::string> extensions() const;  // the GLSL extensions they need
 
     // The fastest correct choice for SCENE on llvmpipe (`raylab bench`): the

@@ -50,6 +50,7 @@ constexpr int kMeshCornerUnit = 4;
 constexpr int kMeshMaterialUnit = 5;
 constexpr int kLightCellUnit = 6;
 constexpr int kLightItemUnit = 7;
+constexpr int kEyeCellUnit = 8;
 
 void setIntArray(const ShaderProgram& p, const char* name, const std::vector<GLint>& values) {
     if (!values.empty())
@@ -179,6 +180,8 @@ void StageRenderer::uploadSceneConstants() {
     if (lightBuffer_) lightBuffer_->setUniforms(p.id());
     glUniform1i(p.uniform("uLightCells"), kLightCellUnit);
     glUniform1i(p.uniform("uLightItems"), kLightItemUnit);
+    // The eye's cells: built in render(), for the eye of the frame.
+    programUsesEyeCells_ = bvh_ && p.uniform("uEyeCells") >= 0;
     // Mesh triangles: uploaded once, for every program of a scene with meshes.
     if (!scene_.meshes.empty() && !meshes_) meshes_ = std::make_unique<SceneMeshBuffers>(scene_);
     glUniform1i(p.uniform("uMeshCorners"), kMeshCornerUnit);
@@ -283,6 +286,11 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     glUniform1i(p.uniform("uColorMode"), settings.colorMode);
     if (textures_) textures_->bind(kTextureUnit);
     if (sky_) sky_->bind(kSkyUnit);
+    if (programUsesEyeCells_) {
+        if (!eyeCells_) eyeCells_ = std::make_unique<EyeCellBuffers>();
+        eyeCells_->update(scene_, eye, *bvh_);  // when the eye has moved: its lists go into bvh_
+        eyeCells_->bind(p.id(), kEyeCellUnit);
+    }
     if (bvh_) bvh_->bind(kBvhNodeUnit, kBvhItemUnit);
     if (meshes_) meshes_->bind(kMeshCornerUnit, kMeshMaterialUnit);
     if (lightBuffer_) lightBuffer_->bind(kLightCellUnit, kLightItemUnit);

@@ -16,6 +16,7 @@
 #include "texture.h"
 
 #include "bvh_buffers.h"
+#include "eye_cell_buffers.h"
 #include "light_buffer_buffers.h"
 #include "scene_mesh_buffers.h"
 #include "sphere_blocks.h"
@@ -70,7 +71,9 @@ private:
     std::unique_ptr<BvhBuffers> bvh_;                  // made when the program walks a BVH
     std::unique_ptr<SceneMeshBuffers> meshes_;         // made when the scene has meshes
     std::unique_ptr<LightBufferBuffers> lightBuffer_;  // made when shadow rays use one
-    std::unique_ptr<SphereBlocks> spheres_;            // the spheres' uniform blocks
+    std::unique_ptr<EyeCellBuffers> eyeCells_;         // made when primary rays use them
+    bool programUsesEyeCells_ = false;
+    std::unique_ptr<SphereBlocks> spheres_;  // the spheres' uniform blocks
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
     std::string fragmentEntry_;

@@ -5,7 +5,8 @@
 // scene file's triangles seen from the light through it. A shadow ray toward
 // the light tests only the objects of the cell its direction falls in,
 // instead of walking the whole BVH and every group of triangles
-// (framework/shaders/variants/light-buffer/08-full/light_buffer.glsl).
+// (framework/shaders/variants/light-buffer/08-full/light_buffer.glsl). The
+// cubes and the test of an object against their cells are cell_cube.h's.
 //
 // Why: shadow rays were about half of a pro frame on llvmpipe, and a BVH
 // walk is many steps of reads whose addresses differ between the 8 lock-step
@@ -44,7 +45,7 @@ struct LightBuffer {
 
 // Cells along a face's edge: 64 (1.4 degrees at a face's centre). On pro
 // (tools/bench/instructions_per_frame.sh) 64 costs 2% less than 32: shorter
-// lists; the CPU builds pro's 3 x 6 x 64^2 cells in about 40 ms, once.
+// lists; the CPU builds pro's 3 x 6 x 64^2 cells once.
 inline constexpr int kLightBufferResolution = 64;
 
 // Scenes with more spheres keep the BVH for shadow rays: the brute-force
@@ -56,7 +57,8 @@ inline constexpr std::size_t kLightBufferMaxSpheres = 1024;
 bool lightBufferSuits(const Scene& scene);
 
 // The cell of light LIGHT's cube that DIRECTION (from the light, any length
-// > 0) falls in: the same float arithmetic as light_buffer.glsl's lightCell.
+// > 0) falls in: light_buffer.glsl's lightCell (cubeCell, cell_cube.h, on
+// the light's cube).
 int lightBufferCell(int resolution, int light, glm::vec3 direction);
 
 // Builds the lists for every light of SCENE (in the shaders' units).

@@ -16,18 +16,12 @@ uniform int uLightBufferSize;        // cells along a cube face's edge
 uniform int uLightBufferEveryCell;   // the cell listing every sphere and triangle
 uniform float uLightBufferReach;     // shading points farther out use that cell
 
-// The cell of light `light`'s cube that direction d (from the light) falls
-// in: the face of d's largest component, then a square grid on that face.
-// Selects, not branches: llvmpipe would run every branch for all 8 pixels.
+#include "cube_cell.glsl"
+
+// The cell of light `light`'s cube that direction d (from the light) falls in.
 int lightCell(int light, vec3 d)
 {
-    vec3 a = abs(d);
-    bool xMajor = a.x >= a.y && a.x >= a.z, yMajor = !xMajor && a.y >= a.z;
-    float major = xMajor ? d.x : yMajor ? d.y : d.z;
-    vec2 uv = (xMajor ? d.yz : yMajor ? d.xz : d.xy) / abs(major);
-    int face = 2 * (xMajor ? 0 : yMajor ? 1 : 2) + (major < 0.0 ? 1 : 0);
-    ivec2 c = clamp(ivec2(floor((uv * 0.5 + 0.5) * float(uLightBufferSize))), ivec2(0), ivec2(uLightBufferSize - 1));
-    return ((light * 6 + face) * uLightBufferSize + c.y) * uLightBufferSize + c.x;
+    return light * 6 * uLightBufferSize * uLightBufferSize + cubeCell(d, uLightBufferSize);
 }
 
 // findBlocker (find_closest.glsl) for a ray toward light `light`: the same

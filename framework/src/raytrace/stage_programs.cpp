@@ -1,6 +1,7 @@
 #include "stage_programs.h"
 
 #include "eye_cells.h"
+#include "hidden_tori.h"
 #include "light_buffer.h"
 #include "scene_baking.h"
 #include "sphere_blocks.h"
@@ -91,7 +92,12 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     // The mesh code (scene_meshes.glsl) only where there are meshes: the
     // other scenes' programs stay short.
     if (!scene.meshes.empty()) defines.push_back("RAYLAB_MESHES");
-    if (variant.usesLightBuffer(scene)) defines.push_back("RAYLAB_LIGHT_BUFFER");
+    if (variant.usesLightBuffer(scene)) {
+        defines.push_back("RAYLAB_LIGHT_BUFFER");
+        // Shadow rays through the light buffer leave out tori that every
+        // shadow ray meets only behind a shell of triangles (hidden_tori.h).
+        if (toriHiddenFromLights(scene)) defines.push_back("RAYLAB_TORI_HIDDEN_FROM_LIGHTS");
+    }
     if (variant.usesEyeCells(scene)) defines.push_back("RAYLAB_EYE_CELLS");
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();

@@ -28,7 +28,8 @@ int lightCell(int light, vec3 d)
 // objects in the same order of kinds, the spheres and triangles from the
 // ray's cell, the planes, discs and tori one by one (testOthers, less its
 // triangles: a loop over few cheap objects, or a torus whose test costs the
-// same skipped or not, since llvmpipe runs a loop's body at least once).
+// same skipped or not, since llvmpipe runs a loop's body at least once;
+// hence the torus loop is compiled only where a torus can block a light).
 bool findLightBlocker(Ray ray, float maxT, int light)
 {
     Hit hit = Hit(maxT, -1);
@@ -49,7 +50,11 @@ bool findLightBlocker(Ray ray, float maxT, int light)
         keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
                    KIND_TRIANGLE, i);
     }
+#ifndef RAYLAB_TORI_HIDDEN_FROM_LIGHTS
+    // (Left out where every torus sits in a closed shell of triangles that
+    // every shadow ray meeting it must cross: scene/hidden_tori.h.)
     for (int i = 0; i < uTorusCount && hit.id < 0; ++i)
         keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
+#endif
     return hit.id >= 0;
 }

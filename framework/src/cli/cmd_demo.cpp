@@ -15,6 +15,7 @@
 
 #include <cstdio>
 #include <ctime>
+#include <string>
 
 namespace raylab {
 
@@ -102,13 +103,16 @@ int cmdDemo(const DemoOptions& demo) {
         writePngAtomic(renderer.read(), outDir / frameName(i));  // read back outside the timed part
     }
     FrameTiming timing = summarizeFrameTimes(ms);
+    // The levers this scene's program got (each keeps the picture or bounds its error).
+    std::string levers = "rays under 1/255 of the pixel not traced, shared work (glow and lights)";
+    if (variant.usesLightBuffer(setup.scene)) levers += ", shadow rays through a light buffer";
+    if (variant.usesEyeCells(setup.scene)) levers += ", primary rays through the eye's cells";
     std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised "
-                "shader, rays under 1/255 of the pixel not traced, shared work (glow and lights), "
-                "%s backend, %s\n",
+                "shader, %s, %s backend, %s\n",
                 stage.id.c_str(), setup.scene.file.c_str(), setup.size.width, setup.size.height,
                 setup.settings.maxDepth, setup.settings.shadows ? "on" : "off",
-                variant.bvh ? "BVH" : "linear search", context->backendName().c_str(),
-                glDescription().c_str());
+                variant.bvh ? "BVH" : "linear search", levers.c_str(),
+                context->backendName().c_str(), glDescription().c_str());
     std::printf("  frame time: %s\n", timing.summary().c_str());
     std::printf("  %d frame%s written to %s\n", demo.frames, demo.frames == 1 ? "" : "s",
                 std::filesystem::absolute(outDir).lexically_normal().c_str());

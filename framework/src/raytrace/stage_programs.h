@@ -43,6 +43,8 @@ struct ShaderVariant {
     // in a light buffer (scene/light_buffer.h) instead of walking the BVH;
     // the same picture. Where the scene suits it (lightBufferSuits) and not
     // with oldPath, treeAll or naiveNumerics. On with the demo's levers.
+    // Its shadow rays also skip tori no light can see (hidden_tori.h:
+    // RAYLAB_TORI_HIDDEN_FROM_LIGHTS).
     bool lightBuffer = false;
     // RAYLAB_EYE_CELLS: primary rays find the spheres they may meet in the
     // eye's cells (scene/eye_cells.h) instead of walking the BVH from its

@@ -68,7 +68,9 @@ bool asShell(const Scene& scene, const std::vector<int>& group, Shell& shell) {
         centre += c / double(corners.size());
     }
     shell.size = glm::length(hi - lo);
-    const double flat = 1e-9 * shell.size;  // rounding of corners that lie on a face plane
+    // Corners on a face plane (a box's face is two triangles) sit off it by
+    // the rounding of their float coordinates: that much is still flat.
+    const double flat = 1e-6 * (shell.size + std::max(glm::length(lo), glm::length(hi)));
     for (int i : group) {
         const auto& v = scene.triangles[std::size_t(i)].vertices;
         const glm::dvec3 a(v[0]), b(v[1]), c(v[2]);

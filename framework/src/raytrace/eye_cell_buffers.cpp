@@ -15,13 +15,12 @@ void EyeCellBuffers::update(const Scene& scene, glm::vec3 eye, BvhBuffers& bvh) 
     cells_.fill(GL_RG32I, cells.data(), cells.size() * sizeof(GLint));
     built_ = true;
     eye_ = eye;
-    resolution_ = built.resolution;
 }
 
 void EyeCellBuffers::bind(GLuint program, int unit) const {
     cells_.bind(unit);
     glUniform1i(glGetUniformLocation(program, "uEyeCells"), unit);
-    glUniform1i(glGetUniformLocation(program, "uEyeCellsSize"), resolution_);
+    glUniform1i(glGetUniformLocation(program, "uEyeCellsSize"), cube_.resolution());
     glUniform3fv(glGetUniformLocation(program, "uEyeCellsCentre"), 1, glm::value_ptr(eye_));
 }
 

@@ -25,7 +25,6 @@ private:
     BufferTexture cells_;
     bool built_ = false;
     glm::vec3 eye_{0.0f};
-    int resolution_ = 0;
 };
 
 }  // namespace raylab

@@ -68,7 +68,10 @@ double sceneReach(const Scene& scene) {
     double r = 0.0;
     auto grow = [&](glm::dvec3 p, double radius) { r = std::max(r, glm::length(p) + radius); };
     for (const PointLight& l : scene.lights) grow(l.position, 0.0);
-    for (const Sphere& s : scene.spheres) grow(sweptBall(s).centre, sweptBall(s).radius);
+    for (const Sphere& s : scene.spheres) {
+        const CellBall ball = sweptBall(s);
+        grow(ball.centre, ball.radius);
+    }
     for (const Triangle& t : scene.triangles)
         for (glm::vec3 p : t.vertices) grow(p, 0.0);
     for (const Disc& d : scene.discs) grow(d.center, d.radius);

@@ -21,6 +21,7 @@ packages=(
   libglew-dev libglm-dev libgl1-mesa-dev           # OpenGL loading and maths
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL (surfaceless Mesa, llvmpipe)
   libosmesa6-dev                                   # headless OSMesa backend
+  libzip-dev                                       # zip uploads (PrairieLearn keeps a zip as a file)
   libcli11-dev nlohmann-json3-dev                  # command line, scene files
   libtinyobjloader-dev                             # OBJ meshes (fur track)
   libimgui-dev                                     # on-screen overlay (Dear ImGui + its SDL2/OpenGL3 backends)

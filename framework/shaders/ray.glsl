@@ -16,6 +16,7 @@ struct Hit {
 // as its C++ (framework/src/core/shader_constants.h):
 //   NO_HIT     -1: returned by intersection functions when the ray misses
 //   T_MIN      1e-4: hits closer than this are ignored, so a ray never hits
-//              its own origin
+//              its own origin (stage 03: 0, so that a shadow ray not moved
+//              off its surface shows the acne it causes)
 //   T_FAR      1e30: a very large distance, "nothing hit yet"
 //   MAX_DEPTH  8: rays per path (trace.glsl); MAX_RAYS = 2^MAX_DEPTH

@@ -35,6 +35,7 @@ packages=(
   libglew-dev libglm-dev libgl1-mesa-dev           # OpenGL loading and maths
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL on Mesa llvmpipe
   libosmesa6-dev                                   # the OSMesa fallback
+  libzip-dev                                       # zip uploads (PrairieLearn keeps a zip as a file)
   libcli11-dev nlohmann-json3-dev                  # command line, scene files (universe on Ubuntu)
   libtinyobjloader-dev                             # OBJ meshes (fur track; universe on Ubuntu)
 )

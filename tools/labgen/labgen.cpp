@@ -8,11 +8,14 @@
 // A lab for stage N holds every shader file stage N's program includes, except
 // the framework's: the files of solution/N/ in lab form (TODO stubs), the files
 // of earlier stages in solved form. Hand-written files (README.md, images) are
-// left alone.
+// left alone, except the guide's "How you are graded" (between its
+// <!-- grading --> markers), written from the stage's "grading" in
+// stage.json so that the points students read are the points they get.
 #include "error.h"
 #include "lab_files.h"
 #include "paths.h"
 #include "stage_catalog.h"
+#include "stage_grading.h"
 
 #include <CLI/CLI.hpp>
 
@@ -84,6 +87,19 @@ int main(int argc, char** argv) {
                     }
                 } else {
                     writeFile(dir / name, text);
+                }
+            }
+            // The guide's grading section (only in labs/: a solved copy has no guides).
+            if (!solved && fs::is_regular_file(dir / "README.md", ec)) {
+                const std::string guide = readTextFile(dir / "README.md");
+                const std::string text = withGradingSection(guide, stage, stage.grading);
+                if (check && text != guide) {
+                    std::printf("differs: %s's \"How you are graded\" (regenerate with "
+                                "raylab-labgen)\n",
+                                (dir / "README.md").c_str());
+                    ++drift;
+                } else if (!check && text != guide) {
+                    writeFile(dir / "README.md", text);
                 }
             }
             for (const std::string& name : stale) {

@@ -85,9 +85,10 @@ std::string lastLine(const fs::path& log) {
 int cmdAutograder(const BundleOptions& o) {
     // Everything that can be wrong with the request fails before anything is written.
     if (o.outDir.empty()) throw Error("--out is required");
-    std::vector<std::string> ids = stageList(o.stages);
-    if (ids.empty())
+    std::vector<std::string> ids;
+    if (o.stages.empty())
         for (const StageInfo& s : allStages()) ids.push_back(s.id);
+    else ids = stageList(o.stages);
     for (const auto& [option, value] :
          {std::pair<const char*, std::string>{"--visibility", o.visibility},
           {"--test-visibility", o.testVisibility},

@@ -18,9 +18,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     // The work runs in a child, as grading runs it: a crash or an endless
     // compile becomes a one-line cause (check_sandbox.h).
     if (!insideCheckSandbox())
-        return runCheckInSandbox(stage,
-                                 setup.sources.lab ? setup.sources.search.front().parent_path()
-                                                   : std::filesystem::path(),
+        return runCheckInSandbox(stage, setup.sources.labRoot,
                                  {check.timeoutSeconds, check.memoryMb, check.backend});
     const std::filesystem::path against = check.againstDir;
     std::error_code ec;

@@ -12,6 +12,7 @@
 #include "grade_shards.h"
 #include "grade_stage.h"
 #include "paths.h"
+#include "stage_list.h"
 
 #include <unistd.h>
 
@@ -42,17 +43,12 @@ struct Item {
 };
 
 std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
-    std::vector<const StageInfo*> stages;
     if (list.empty()) {
+        std::vector<const StageInfo*> stages;
         for (const StageInfo& s : allStages()) stages.push_back(&s);
         return stages;
     }
-    std::stringstream in(list);
-    for (std::string id; std::getline(in, id, ',');) {
-        const StageInfo* s = &findStage(id);
-        if (std::find(stages.begin(), stages.end(), s) == stages.end()) stages.push_back(s);
-    }
-    return stages;
+    return parseStageList(list);
 }
 
 // The student folders, sorted. Symbolic links are skipped (a link could lead
@@ -441,7 +437,7 @@ Command gradeCommand() {
             cmd.add_option(
                 "--out", g->outDir,
                 "folder for report.html, summary.csv, junit.xml, <student>/results.json");
-            cmd.add_option("--stages", g->stages, "comma-separated stages to grade (default: all)");
+            cmd.add_option("--stages", g->stages, "the stages to grade, as handout takes them: 01-03, 01,02,f1 or all (default: all)");
             cmd.add_option("--jobs", g->jobs, "submissions graded at once")->capture_default_str();
             cmd.add_option("--timeout", g->timeoutSeconds, "seconds per stage of a submission")
                 ->capture_default_str();

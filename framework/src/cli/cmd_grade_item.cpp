@@ -30,7 +30,7 @@ int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const s
         studentFolder(outDir, student) / stage.id / "result.json";
     try {
         auto context = createHeadlessContext(Backend::Auto);
-        StageResult result = gradeStage(stage, labRoot, student, outDir, seed);
+        StageResult result = gradeStage(stage, stage.grading, labRoot, student, outDir, seed);
         writeTextFileAtomic(resultFile, stageResultToJson(result));
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "raylab grade-item: out of memory\n");

@@ -2,6 +2,8 @@
 
 #include "stage_catalog.h"
 #include "stage_sources.h"
+#include "zip_unpack.h"
+#include "error.h"
 
 #include <algorithm>
 #include <set>
@@ -39,10 +41,34 @@ std::vector<fs::directory_entry> entries(const fs::path& dir) {
 }  // namespace
 
 SubmissionLayout layOutSubmission(const fs::path& uploaded, const std::vector<std::string>& stages,
-                                  const fs::path& labRoot) {
+                                  const fs::path& labRoot, const fs::path& scratch) {
     SubmissionLayout r;
     fs::path dir = uploaded;
     std::vector<fs::directory_entry> list = entries(dir);
+    // A zip is the submission: unpacked, it is read like an upload of its files.
+    std::vector<fs::directory_entry> zips;
+    for (const auto& e : list)
+        if (e.is_regular_file() && !e.is_symlink() && isZipFile(e.path())) zips.push_back(e);
+    if (zips.size() > 1) {
+        r.problem = "more than one zip file was submitted: upload one zip (of your labs folder, "
+                    "or of some stage folders)";
+        return r;
+    }
+    if (zips.size() == 1) {
+        for (const auto& e : list)
+            if (e.path() != zips[0].path())
+                r.notes.push_back(e.path().filename().string() +
+                                  ": beside a zip, only the zip is graded; left out");
+        try {
+            unpackZip(zips[0].path(), scratch);
+        } catch (const Error& e) {
+            r.problem = e.what();
+            return r;
+        }
+        r.notes.push_back(zips[0].path().filename().string() + ": unpacked");
+        dir = scratch;
+        list = entries(dir);
+    }
     // One folder that is not a stage: a zip's top folder around the real content.
     while (list.size() == 1 && list[0].is_directory() && !list[0].is_symlink() &&
            !isStageId(list[0].path().filename().string())) {
@@ -50,8 +76,8 @@ SubmissionLayout layOutSubmission(const fs::path& uploaded, const std::vector<st
         list = entries(dir);
     }
     if (list.empty()) {
-        r.empty = true;
-        r.problem = "nothing was submitted";
+        r.empty = zips.empty();
+        r.problem = zips.empty() ? "nothing was submitted" : "the zip file is empty";
         return r;
     }
     fs::create_directories(labRoot);

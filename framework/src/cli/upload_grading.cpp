@@ -3,20 +3,14 @@
 #include "commands.h"
 #include "error.h"
 #include "grade_shards.h"
-#include "stage_catalog.h"
+#include "stage_list.h"
 
-#include <sstream>
 
 namespace raylab {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> stageList(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream in(list);
-    for (std::string id; std::getline(in, id, ',');) out.push_back(findStage(id).id);
-    return out;
-}
+std::vector<std::string> stageList(const std::string& list) { return parseStageIds(list); }
 
 std::string UploadGrade::shown(std::string text) const {
     if (workPrefix.empty()) return text;
@@ -31,7 +25,8 @@ UploadGrade gradeUpload(const fs::path& uploaded, const fs::path& work,
     std::error_code ec;
     fs::remove_all(work, ec);
     try {
-        r.layout = layOutSubmission(uploaded, o.stages, work / "class" / "student");
+        r.layout = layOutSubmission(uploaded, o.stages, work / "class" / "student",
+                                    work / "unpacked");
     } catch (const fs::filesystem_error& e) {  // an upload that cannot be read or copied
         r.layout.problem = "the submission cannot be read: " + std::string(e.what());
     }

@@ -36,7 +36,8 @@ struct UploadGrade {
 UploadGrade gradeUpload(const std::filesystem::path& uploaded, const std::filesystem::path& work,
                         const UploadGradeOptions& options);
 
-// "01,03-shadows" -> {"01-raycast", "03-shadows"}. Throws Error on an unknown stage.
+// "01,03-shadows" -> {"01-raycast", "03-shadows"}; ranges as `handout` takes them
+// (stage_list.h). Throws Error on an unknown stage.
 std::vector<std::string> stageList(const std::string& list);
 
 }  // namespace raylab

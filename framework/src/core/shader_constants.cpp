@@ -22,7 +22,11 @@ std::string intConst(const char* name, int value) {
 }  // namespace
 
 std::string constantsGlsl() {
-    return floatConst("NO_HIT", kNoHit) + floatConst("T_MIN", kTMin) + floatConst("T_FAR", kTFar) +
+    // A stage may set its own T_MIN with a define (stage.json "defines":
+    // "RAYLAB_T_MIN 0.0"): stage 03 counts every hit in front of a ray, so
+    // that a shadow ray started on its own surface shows the acne it causes.
+    return floatConst("NO_HIT", kNoHit) + "#ifdef RAYLAB_T_MIN\nconst float T_MIN = RAYLAB_T_MIN;\n#else\n" +
+           floatConst("T_MIN", kTMin) + "#endif\n" + floatConst("T_FAR", kTFar) +
            intConst("MAX_DEPTH", kMaxDepth) + intConst("MAX_RAYS", kMaxRays) +
            intConst("KIND_SPHERE", kSphere) + intConst("KIND_PLANE", kPlane) +
            intConst("KIND_DISC", kDisc) + intConst("KIND_TRIANGLE", kTriangle) +

@@ -10,6 +10,8 @@ namespace raylab::shader {
 // Returned by intersection functions when the ray misses (NO_HIT).
 inline constexpr double kNoHit = -1.0;
 // Hits closer than this are ignored: a ray never hits its own origin (T_MIN).
+// A stage may set another with the define RAYLAB_T_MIN (stage 03: 0.0, every
+// hit in front counts, so that a shadow ray without its offset shows acne).
 inline constexpr double kTMin = 1e-4;
 // A very large distance: "nothing hit yet" (T_FAR).
 inline constexpr double kTFar = 1e30;

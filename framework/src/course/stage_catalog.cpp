@@ -233,7 +233,7 @@ StageInfo readStageFile(const fs::path& file) {
     r.allowOnly(doc, "",
                 {"id", "title", "track", "builds_on", "scene", "program", "programs", "limits",
                  "features", "function_checks", "count_checks", "mistakes", "check_views",
-                 "defines", "hints"});
+                 "defines", "hints", "grading"});
     StageInfo s;
     s.id = r.text(r.member(doc, "stage", "id"), "id");
     if (s.id != file.parent_path().filename().string())
@@ -293,7 +293,33 @@ StageInfo readStageFile(const fs::path& file) {
         if (h.contains("darker")) s.hintDarker = r.text(h["darker"], "hints.darker");
         if (h.contains("brighter")) s.hintBrighter = r.text(h["brighter"], "hints.brighter");
     }
+    if (doc.contains("grading")) s.grading = readGrading(r, doc["grading"], "grading", s.grading);
+    validateGrading(s.grading, s, shown + ": grading");
     return s;
+}
+
+StageGrading readGrading(const JsonReader& r, const json& v, const std::string& where,
+                         StageGrading grading) {
+    if (!v.is_object()) r.fail(where, "expected an object");
+    r.allowOnly(v, where, {"views", "weights"});
+    if (v.contains("views")) {
+        const json& views = v["views"];
+        if (!views.is_number() || views.get<double>() < 0.0 || views.get<double>() > 100.0)
+            r.fail(where + ".views", "expected the image checks' points, from 0 to 100");
+        grading.viewPoints = views.get<double>();
+    }
+    if (v.contains("weights")) {
+        const json& w = v["weights"];
+        if (!w.is_object())
+            r.fail(where + ".weights", "expected an object of check names and weights");
+        for (auto it = w.begin(); it != w.end(); ++it) {
+            if (it.key() == "comment") continue;
+            if (!it.value().is_number() || it.value().get<double>() < 0.0)
+                r.fail(where + ".weights." + it.key(), "expected a weight of 0 or more");
+            grading.weights[it.key()] = it.value().get<double>();
+        }
+    }
+    return grading;
 }
 
 std::vector<std::string> StageInfo::defines() const {

@@ -4,6 +4,9 @@
 // or number: what a stage has (scene, limits, features, check views, function
 // checks) is data, and the order of a track follows `builds_on`.
 #include "camera.h"
+#include "stage_grading.h"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
 #include <map>
@@ -17,6 +20,7 @@ namespace raylab {
 // One camera view used to check a stage (tests, `raylab check`, grading).
 struct CheckView {
     std::string name;
+    std::string base;  // a seeded view (grading): the check view it varies; else empty
     std::optional<CameraPose> pose;  // none: the scene's own camera
     float time = 0.0f;
     std::string why;  // what this view exercises
@@ -76,6 +80,13 @@ struct StageInfo {
     // bright, for hints ("hints": {"darker": ..., "brighter": ...}); empty:
     // hints state the fact alone.
     std::string hintDarker, hintBrighter;
+    // How its 100 points are shared and the credit curves' use
+    // ("grading" in stage.json; stage_grading.h).
+    StageGrading grading;
+    // The name a view's points are weighed by: a seeded view's base.
+    static const std::string& weightName(const CheckView& view) {
+        return view.base.empty() ? view.name : view.base;
+    }
 
     bool has(const std::string& feature) const { return features.count(feature) > 0; }
     // The part of the id before the first '-' ("01" of "01-raycast"): what
@@ -91,6 +102,13 @@ struct StageInfo {
 
 // Reads one stage.json. Throws Error("FILE: KEY: what is wrong").
 StageInfo readStageFile(const std::filesystem::path& file);
+
+struct JsonReader;
+// A "grading" object (stage_grading.h) over GRADING: what it sets replaces,
+// the rest stays. WHERE names it in errors. Not validated against a stage
+// (validateGrading does).
+StageGrading readGrading(const JsonReader& reader, const nlohmann::json& value,
+                         const std::string& where, StageGrading grading);
 
 // Every stage, track by track, each track in `builds_on` order.
 const std::vector<StageInfo>& allStages();

@@ -1,6 +1,7 @@
 #include "stage_sources.h"
 
 #include "error.h"
+#include "lab_files.h"
 #include "paths.h"
 
 namespace raylab {
@@ -22,7 +23,7 @@ StageSources solutionSources(const StageInfo& stage) {
     return s;
 }
 
-StageSources labSources(const StageInfo& stage, const fs::path& labRoot) {
+StageSources labSources(const StageInfo& stage, const fs::path& labRoot, MissingLabFiles missing) {
     std::error_code ec;
     if (!fs::is_directory(labRoot, ec))
         throw Error("lab folder " + labRoot.string() + " does not exist");
@@ -31,9 +32,35 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot) {
                     "/ (it should be laid out like labs/)");
     StageSources s;
     s.label = "lab " + displayPath(labRoot) + "/";
-    s.search = {labRoot / stage.id, projectRoot() / "framework" / "shaders"};
     s.chain = solutionSources(stage).chain;
     s.lab = true;
+    s.labRoot = labRoot;
+    // The stage's folder, then the lab's folders of the stages it builds on.
+    for (const std::string& id : s.chain)
+        if (fs::is_directory(labRoot / id, ec)) s.search.push_back(labRoot / id);
+    std::vector<std::string> absent;
+    for (const auto& [name, file] : labFileSources(stage)) {
+        bool found = false;
+        for (const fs::path& dir : s.search) found = found || fs::is_regular_file(dir / name, ec);
+        if (!found) absent.push_back(name);
+    }
+    if (!absent.empty() && missing == MissingLabFiles::FromHandedOutLab) {
+        s.filledIn = absent;
+        s.search.push_back(defaultLabRoot() / stage.id);
+    } else if (!absent.empty()) {
+        std::string names, folders;
+        for (const std::string& n : absent) names += (names.empty() ? "" : ", ") + n;
+        for (std::size_t i = 1; i < s.chain.size(); ++i)
+            if (!fs::is_directory(labRoot / s.chain[i], ec))
+                folders += (folders.empty() ? "" : ", ") + s.chain[i] + "/";
+        throw Error(displayPath(labRoot / stage.id) + ": " + names +
+                    (absent.size() == 1 ? " is" : " are") + " in none of its folders" +
+                    (folders.empty() ? " (was a file deleted?)"
+                                     : ": " + stage.id + " builds on your own " + folders +
+                                           ", which " + displayPath(labRoot) +
+                                           " lacks (copy them in beside " + stage.id + "/)"));
+    }
+    s.search.push_back(projectRoot() / "framework" / "shaders");
     return s;
 }
 
@@ -81,6 +108,8 @@ std::vector<fs::path> searchWithVariants(const StageSources& sources,
                 out.push_back(variants / folder / stageId);
     };
     std::vector<fs::path> search;
+    // A lab's folders hold the files of its whole chain: every variant of the
+    // chain goes in front of the first.
     for (std::size_t i = 0; i < sources.search.size(); ++i) {
         if (sources.lab && i == 0) {
             for (const std::string& id : sources.chain) variantDirsFor(id, search);

@@ -153,6 +153,15 @@ FunctionSpec discSpec() {
         rayCase("on the rim", {2.0, 3, 0}, {0, -1, 0}, disc, up, true),
         rayCase("parallel", {0, 1, -5}, {0, 0, 1}, disc, up),
         rayCase("from below", {0.5, -1, 0.5}, {0, 1, 0}, disc, up),
+        // Radius 2: between sqrt(2) and 2 from the centre is inside; radius
+        // 0.5: between 0.5 and sqrt(0.5) is outside (a distance squared
+        // compared with the radius, not its square, gets these wrong).
+        rayCase("radius 2, 1.6 from the centre", {1.6, 3, 0}, {0, -1, 0}, disc, up),
+        rayCase("radius 2, 1.5 from the centre, diagonal", {1.06, 3, -1.06}, {0, -1, 0}, disc, up),
+        rayCase("radius 0.5, 0.6 from the centre", {0.6, 3, 0}, {0, -1, 0},
+                dvec4(0, 1, 0, 0.5), up),
+        rayCase("radius 0.5, 0.65 from the centre, diagonal", {-0.46, 3, 0.46}, {0, -1, 0},
+                dvec4(0, 1, 0, 0.5), up),
         rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5),
                 dvec4(glm::normalize(dvec3(0.2, 0.1, 1)), 0)),
     };

@@ -23,21 +23,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kImagePoints = 70.0, kFunctionPoints = 30.0;
 // Beside a stage's reference pictures: the handed-out lab's, from the same views.
 constexpr const char* kUntouchedFolder = "untouched";
-constexpr double kZeroCreditShare = 0.10;
 
 std::string relativeTo(const fs::path& p, const fs::path& base) {
     return p.lexically_relative(base).generic_string();
 }
 
 }  // namespace
-
-double imageCredit(double badShare, bool passed) {
-    if (passed) return 1.0;
-    return 0.5 * std::clamp(1.0 - badShare / kZeroCreditShare, 0.0, 1.0);
-}
 
 void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::path& outDir) {
     const fs::path dir = outDir / "reference" / stage.id;
@@ -63,19 +56,36 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::pa
     }
 }
 
-StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const std::string& student,
-                       const fs::path& outDir, unsigned seed) {
+StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, const fs::path& labRoot,
+                       const std::string& student, const fs::path& outDir, unsigned seed) {
     StageResult result;
     result.stage = stage.id;
     result.status = "graded";
     const fs::path refDir = outDir / "reference" / stage.id;
     const fs::path imageDir = studentFolder(outDir, student) / stage.id;
     fs::create_directories(imageDir);
-    StageSources sources = labSources(stage, labRoot);
+    // Files the submission lacks (a stage folder without the earlier stage
+    // folders it builds on) come from the lab as handed out: the stage is
+    // graded on its own work, and the report says so.
+    StageSources sources = labSources(stage, labRoot, MissingLabFiles::FromHandedOutLab);
+    if (!sources.filledIn.empty()) {
+        std::string names;
+        for (const std::string& n : sources.filledIn) names += (names.empty() ? "" : ", ") + n;
+        result.message = "not in the submission, taken from the lab as handed out: " + names;
+    }
     const std::vector<CheckView> views = gradingViews(stage, seed);
     const auto functions = functionSpecsFor(stage);
-    const std::size_t otherChecks = functions.size() + stage.countChecks.size();
-    const double imagePoints = otherChecks == 0 ? 100.0 : kImagePoints;
+    // Every check's points, from the stage's weights (stage_grading.h).
+    std::vector<std::string> viewWeights, otherNames;
+    for (const CheckView& v : views) viewWeights.push_back(StageInfo::weightName(v));
+    for (const FunctionSpec* f : functions) otherNames.push_back(f->name);
+    for (const std::string& c : stage.countChecks) otherNames.push_back(c);
+    const std::vector<double> points = checkPoints(grading, viewWeights, otherNames);
+    auto pointsOfOther = [&](const std::string& name) {
+        for (std::size_t i = 0; i < otherNames.size(); ++i)
+            if (otherNames[i] == name) return points[views.size() + i];
+        return 0.0;
+    };
 
     std::vector<CheckResult> countResults;  // after the function checks in the report
     try {
@@ -86,9 +96,10 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             CheckResult check;
             check.name = c.name;
             check.kind = "count";
-            check.maxScore = kFunctionPoints / double(otherChecks);
+            check.maxScore = pointsOfOther(name);
             check.passed = c.total > 0 && c.passed == c.total;
-            check.score = c.total ? check.maxScore * double(c.passed) / double(c.total) : 0.0;
+            check.difference = c.total ? 1.0 - double(c.passed) / double(c.total) : 1.0;
+            check.score = check.maxScore * caseCredit(check.difference);
             check.output = std::to_string(c.passed) + "/" + std::to_string(c.total) +
                            " views agree" +
                            (c.firstFailure.empty() ? "" : "; first failure: " + c.firstFailure);
@@ -118,19 +129,20 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
             check.name = view.name;
             check.kind = "image";
             check.seeded = i >= stage.checkViews.size();  // gradingViews() appends them
-            check.maxScore = imagePoints / double(views.size());
+            check.maxScore = points[i];
             long nonFinite = 0, todoPixels = 0;
             Image mine = renderers.render(view, &nonFinite, &todoPixels);
             Image expected = loadPng(refDir / (view.name + ".png"));
             ImageDiff diff = compareImages(mine, expected, tolerance.channel);
             check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
+            check.difference = diff.badShare;
             // Still the handed-out lab's picture: nothing of this view's work is done.
             const bool asHandedOut =
                 !check.passed && untouched[i] &&
                 imagesAgree(compareImages(mine, *untouched[i], tolerance.channel), tolerance);
             check.score = nonFinite || asHandedOut
                               ? 0.0
-                              : check.maxScore * imageCredit(diff.badShare, check.passed);
+                              : check.maxScore * viewCredit(diff.badShare);
             check.output = describe(diff);
             if (asHandedOut) check.output += "; the same picture as the lab as handed out";
             if (nonFinite)
@@ -184,9 +196,10 @@ StageResult gradeStage(const StageInfo& stage, const fs::path& labRoot, const st
         CheckResult check;
         check.name = f.name;
         check.kind = "function";
-        check.maxScore = kFunctionPoints / double(otherChecks);
-        check.passed = f.passed == f.total;
-        check.score = f.total ? check.maxScore * double(f.passed) / double(f.total) : 0.0;
+        check.maxScore = pointsOfOther(f.name);
+        check.passed = f.total > 0 && f.passed == f.total;
+        check.difference = f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0;
+        check.score = check.maxScore * caseCredit(check.difference);
         check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
                        (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure);
         result.checks.push_back(check);
@@ -211,6 +224,7 @@ std::string stageResultToJson(const StageResult& r) {
                                {"score", c.score},
                                {"max_score", c.maxScore},
                                {"passed", c.passed},
+                               {"difference", c.difference},
                                {"seeded", c.seeded},
                                {"output", c.output},
                                {"student_image", c.studentImage},
@@ -237,6 +251,7 @@ StageResult stageResultFromJson(const std::string& text) {
             k.maxScore = c.at("max_score").get<double>();
             k.passed = c.at("passed").get<bool>();
             k.seeded = c.value("seeded", false);  // shard files written before it existed
+            k.difference = c.value("difference", 0.0);
             k.output = c.at("output").get<std::string>();
             k.studentImage = c.at("student_image").get<std::string>();
             k.referenceImage = c.at("reference_image").get<std::string>();

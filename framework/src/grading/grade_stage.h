@@ -4,21 +4,16 @@
 // solution's images that every submission is compared with.
 //
 // Points (documented for students in every labs/<stage>/README.md, "How you
-// are graded"):
-//   - a stage is worth 100 points: 70 for the image checks and 30 for the
-//     function and count checks, shared equally (100 for images where a
-//     stage has neither);
-//   - an image check that passes (at most 0.5% of pixels differ, the metric
-//     of `raylab check`) earns its points; one that fails earns half of them
-//     scaled down linearly to nothing at 10% of pixels differing; a view with
-//     NaN or Inf pixels earns nothing;
+// are graded", generated from the same data by raylab-labgen):
+//   - a stage is worth 100 points, shared among its checks by the weights of
+//     its grading (stage_grading.h: stage.json's "grading", or a course
+//     file's);
+//   - a check's credit falls continuously with what it measured
+//     (viewCredit, caseCredit); a view with NaN or Inf pixels earns nothing;
 //   - a picture still equal to the lab as handed out (labs/<stage>) earns
 //     nothing, and a view the handed-out lab already draws right (it never
 //     reaches the stage's code) earns at most the share of their points the
-//     other views earned, so an untouched lab scores 0;
-//   - a function check earns the share of its cases that agree, a count
-//     check (stage.json "count_checks") the share of views that agree; both
-//     share the 30 points.
+//     other views earned, so an untouched lab scores 0.
 #include "grade_result.h"
 #include "stage_catalog.h"
 
@@ -45,12 +40,9 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed,
 // Grades LABROOT/<stage>/ against OUT/reference/<stage>/; writes the
 // student's images and diff heat maps to OUT/students/<student>/<stage>/. A compile
 // error gives status "compile error" with the log mapped to file:line.
-StageResult gradeStage(const StageInfo& stage, const std::filesystem::path& labRoot,
-                       const std::string& student, const std::filesystem::path& outDir,
-                       unsigned seed);
-
-// The credit (0..1) of an image check with this share of differing pixels.
-double imageCredit(double badShare, bool passed);
+StageResult gradeStage(const StageInfo& stage, const StageGrading& grading,
+                       const std::filesystem::path& labRoot, const std::string& student,
+                       const std::filesystem::path& outDir, unsigned seed);
 
 // StageResult <-> JSON, for the child to hand its result to the parent.
 std::string stageResultToJson(const StageResult& result);

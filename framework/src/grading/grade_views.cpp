@@ -51,6 +51,7 @@ std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
         const CheckView& base = *posed[rng.next() % posed.size()];
         CheckView v = base;
         v.name = "seeded-" + std::to_string(i + 1);
+        v.base = base.name;  // it weighs as much as its base (stage_grading.h)
         CameraPose pose =
             base.pose ? *base.pose : sceneCamera(base.scene.empty() ? stage.scene : base.scene);
         pose.position +=

@@ -3,12 +3,11 @@
 // with `raylab check`) plus a few drawn from a seed the instructor can keep
 // secret, so that a submission cannot be tuned to a fixed set of images.
 #include "stage_catalog.h"
+#include "stage_grading.h"
 
 #include <vector>
 
 namespace raylab {
-
-inline constexpr int kSeededViewsPerStage = 3;
 
 // Same seed, same views, on every machine (no std:: distributions, whose
 // results differ between standard libraries).

@@ -200,6 +200,27 @@ FunctionSpec lightVisibilitySpec() {
                        "starts on the light's side, -normal",
                        o, 100, {0, 1, 0}, false, {20, 30, 10}),
     };
+    // The side the shadow ray starts on, at sizes where the offset is longer
+    // than T_MIN (a ray started on the wrong side then meets its own sphere):
+    // the eye inside a sphere with a light outside, and a light inside a
+    // sphere seen from outside.
+    const struct {
+        double radius;
+        dvec3 outward;
+    } sides[] = {{100.0, {0.3, 1.0, -0.2}},
+                 {1000.0, {-0.5, 0.4, 0.7}},
+                 {1e4, {0.8, -0.3, 0.4}},
+                 {1e5, {-0.2, 0.6, -0.9}}};
+    for (const auto& c : sides) {
+        const dvec3 out = glm::normalize(c.outward);
+        const std::string r = caseNumber(c.radius);
+        s.cases.push_back(visibilityCase("eye inside a sphere of radius " + r +
+                                             ", light outside in front of the point",
+                                         o, c.radius, out, true, c.radius * (out * 1.6)));
+        s.cases.push_back(visibilityCase(
+            "eye outside a sphere of radius " + r + ", light inside it, behind the point", o,
+            c.radius, out, false, c.radius * (0.3 * out + dvec3(0.1, -0.2, 0.15))));
+    }
     // Far from the origin float steps are large (1e-3 near 10^4, 8e-3 near
     // 10^5): a point computed there lies measurably above or below its
     // surface, and a shadow ray started on it, or a fixed 1e-3 off it, hits
@@ -209,7 +230,8 @@ FunctionSpec lightVisibilitySpec() {
         double radius;
         const char* name;
     } far[] = {{{12000.0, -3000.0, 8000.0}, 5000.0, "radius 5000, 10^4 from the origin"},
-               {{120000.0, -30000.0, 80000.0}, 50000.0, "radius 50000, 10^5 from the origin"}};
+               {{120000.0, -30000.0, 80000.0}, 50000.0, "radius 50000, 10^5 from the origin"},
+               {{1.2e6, -3e5, 8e5}, 5e5, "radius 500000, 10^6 from the origin"}};
     for (const Far& f : far)
         for (int i = 0; i < 8; ++i) {
             const double a = 0.7 + 0.61 * i, z = -0.6 + 0.17 * i, r = std::sqrt(1.0 - z * z);

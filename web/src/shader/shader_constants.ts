@@ -28,7 +28,10 @@ export function constantsGlsl(): string {
   const f = (name: string, v: number) => `const float ${name} = ${floatLiteral(v)};\n`;
   const i = (name: string, v: number) => `const int ${name} = ${v};\n`;
   return (
-    f('NO_HIT', NO_HIT) + f('T_MIN', T_MIN) + f('T_FAR', T_FAR) +
+    f('NO_HIT', NO_HIT) +
+    // A stage may set its own T_MIN (stage.json "defines": RAYLAB_T_MIN), as natively.
+    '#ifdef RAYLAB_T_MIN\nconst float T_MIN = RAYLAB_T_MIN;\n#else\n' + f('T_MIN', T_MIN) + '#endif\n' +
+    f('T_FAR', T_FAR) +
     i('MAX_DEPTH', MAX_DEPTH) + i('MAX_RAYS', MAX_RAYS) +
     KINDS.map((k, n) => i(`KIND_${k}`, n)).join('') +
     i('OBJECT_KIND_STRIDE', OBJECT_KIND_STRIDE)

@@ -14,6 +14,10 @@ struct CheckResult {
     double score = 0;  // 0..maxScore (partial credit)
     double maxScore = 0;
     bool passed = false;  // full marks
+    // What the check measured, 0..1: the share of pixels that differ (an
+    // image check) or of cases or views that disagree (a function or count
+    // check). The credit curves of stage_grading.h turn it into the score.
+    double difference = 0;
     // An image check from a view drawn from the seed (grade_views.h): the
     // views students never see in `raylab check`, which a course may keep
     // hidden until after the due date (Gradescope's visibility).

@@ -5,6 +5,11 @@
 #   clang-format -i FILE...          fix (or: git ls-files '*.cpp' '*.h' | xargs clang-format -i)
 # There are no third-party sources in the tree; add exclusions here if any come.
 set -uo pipefail
+case "${1:-}" in
+  -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
+  "") ;;
+  *) echo "check-format.sh: takes no arguments (try --help)" >&2; exit 2 ;;
+esac
 cd "$(dirname "$0")/.."
 cf=${CLANG_FORMAT:-clang-format}
 if ! command -v "$cf" >/dev/null 2>&1; then

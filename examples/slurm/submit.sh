@@ -7,7 +7,11 @@
 # nodes, as must SUBMISSIONS and OUT. Prints the two job ids.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-if [ $# -lt 3 ]; then sed -n '2,8p' "$0"; exit 2; fi
+case "${1:-}" in -h|--help) sed -n '2,8p' "$0"; exit 0 ;; esac
+if [ $# -lt 3 ] || [ $# -gt 5 ]; then sed -n '2,8p' "$0" >&2; exit 2; fi
+for arg in "$@"; do
+  case "$arg" in -*) echo "submit.sh: '$arg' looks like an option; it takes none but --help (paths may not start with '-')" >&2; exit 2 ;; esac
+done
 n=$1 submissions=$(realpath "$2") out=$3 seed=${4:-0} stages=${5:-}
 case "$n" in ''|*[!0-9]*) echo "submit.sh: N must be a whole number, not '$n'" >&2; exit 2 ;; esac
 [ "$n" -ge 1 ] || { echo "submit.sh: N must be at least 1" >&2; exit 2; }

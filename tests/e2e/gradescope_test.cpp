@@ -44,6 +44,10 @@ std::vector<std::string> gradescopeProblems(const json& j) {
         (!j["execution_time"].is_number_integer() || j["execution_time"].get<long>() < 0))
         bad("execution_time is not a whole number of seconds");
     if (j.contains("output") && !j["output"].is_string()) bad("output is not a string");
+    const std::set<std::string> formats = {"text", "html", "simple_format", "md", "ansi"};
+    for (const char* key : {"output_format", "test_output_format", "test_name_format"})
+        if (j.contains(key) && (!j[key].is_string() || !formats.count(j[key].get<std::string>())))
+            bad(std::string(key) + " is not one of Gradescope's output formats");
     for (const char* key : {"visibility", "stdout_visibility"})
         if (j.contains(key) &&
             (!j[key].is_string() || !visibilities.count(j[key].get<std::string>())))
@@ -127,6 +131,7 @@ TEST(Gradescope, TheValidatorRejectsWhatGradescopeDoesNotDocument) {
         {[](json& j) { j["points"] = 4; }, "unknown top-level field"},
         {[](json& j) { j["tests"][0]["points"] = 1; }, "unknown field"},
         {[](json& j) { j = json::object(); }, "neither"},
+        {[](json& j) { j["output_format"] = "plain"; }, "output formats"},
     };
     for (const auto& [spoil, expected] : wrongs) {
         json j = good;
@@ -231,6 +236,11 @@ TEST(Gradescope, TheBundleGradesSolvedUntouchedBrokenAndEmptySubmissions) {
     EXPECT_NE(shown.find("front: "), std::string::npos) << "failed views and how: " << shown;
     EXPECT_EQ(shown.find("seeded-"), std::string::npos) << "hidden views stay hidden: " << shown;
     EXPECT_EQ(shown.find("Total"), std::string::npos) << "no total while tests are hidden";
+    // Plain text, said so: nothing escaped for HTML.
+    EXPECT_EQ(untouched.value("output_format", ""), "text");
+    EXPECT_EQ(untouched.value("test_output_format", ""), "text");
+    for (const char* entity : {"&#39;", "&amp;", "&lt;", "&quot;"})
+        EXPECT_EQ(shown.find(entity), std::string::npos) << entity << " in " << shown;
 
     // A compile error in stage 01: its file and line, stage 02 still graded.
     const json broken = runAutograder(bundle, dir / "broken", [](const fs::path& s) {
@@ -243,6 +253,10 @@ TEST(Gradescope, TheBundleGradesSolvedUntouchedBrokenAndEmptySubmissions) {
     EXPECT_NE(text.find("01-raycast: compile error"), std::string::npos) << text;
     EXPECT_NE(text.find("01-raycast/intersect_sphere.glsl:"), std::string::npos) << text;
     EXPECT_EQ(text.find("raylab-work"), std::string::npos) << "the student's paths only";
+    const std::string brokenOutput = broken["output"];
+    EXPECT_EQ(brokenOutput.find("&#39;"), std::string::npos) << brokenOutput;
+    EXPECT_NE(brokenOutput.find("'"), std::string::npos)
+        << "the compiler's quotes, as they are: " << brokenOutput;
 
     // Nothing, and something that cannot be graded: score 0 and the cause.
     const json empty = runAutograder(bundle, dir / "empty", [](const fs::path&) {});

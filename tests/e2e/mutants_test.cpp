@@ -33,6 +33,13 @@ TEST(Mutants, AnUnlistedSurvivorFailsAndTheListedOnesAreTheSurvivors) {
          raylab::parseKnownSurvivors(readFile(sourceDir() / "tests/mutants/03-shadows.txt"), "03"))
         listed.insert(id);
     EXPECT_EQ(survivors, listed);
+
+    // Without --known the survivors are listed without reasons: the output
+    // says where the reasons are.
+    CommandResult bare = runRaylab("mutants --stage 03 --jobs 2 --seed 1 --out " +
+                                   quote((d / "bare").string()));
+    ASSERT_EQ(bare.exitCode, 0) << bare.all();
+    EXPECT_NE(bare.out.find("--known tests/mutants"), std::string::npos) << bare.out;
 }
 
 TEST(Mutants, BadInputIsOneLineAndLeavesNothing) {

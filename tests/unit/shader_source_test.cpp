@@ -146,7 +146,9 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
     Tree t;
     ShaderSource s = assembleShader("main.frag", t.search(), {});
     auto floatOf = [&](const std::string& name) {
-        const std::string key = "const float " + name + " = ";
+        // T_MIN's default stands in the #else of the stage's own RAYLAB_T_MIN.
+        const std::string key =
+            (name == "T_MIN" ? "#else\n" : "") + std::string("const float ") + name + " = ";
         auto at = s.text.find(key);
         EXPECT_NE(at, std::string::npos) << name;
         return at == std::string::npos ? 0.0f : std::stof(s.text.substr(at + key.size()));
@@ -159,6 +161,9 @@ TEST(ShaderSource, SharedConstantsComeFromTheCpp) {
     };
     using namespace raylab::shader;
     EXPECT_EQ(floatOf("T_MIN"), float(kTMin));
+    EXPECT_NE(s.text.find("#ifdef RAYLAB_T_MIN\nconst float T_MIN = RAYLAB_T_MIN;"),
+              std::string::npos)
+        << "a stage may set its own T_MIN (stage 03: 0.0)";
     EXPECT_EQ(floatOf("NO_HIT"), float(kNoHit));
     EXPECT_EQ(floatOf("T_FAR"), float(kTFar));
     EXPECT_EQ(intOf("MAX_DEPTH"), kMaxDepth);

@@ -15,6 +15,7 @@
 # llvmpipe's work on the counted thread. About 3 minutes at 200x150.
 # Used for docs/bench/README.md, "Where a pro frame's instructions go".
 set -euo pipefail
+case "${1:-}" in -h|--help) sed -n '2,16p' "$0"; exit 0 ;; esac
 here=$(cd "$(dirname "$0")/../.." && pwd)
 root=$here
 if [[ $# -gt 0 && -d $1 ]]; then root=$(cd "$1" && pwd); shift; fi

@@ -3,6 +3,7 @@
 // and for its test (tests/e2e/grade_class_test.cpp).
 //
 //   raylab-classgen OUTDIR    -> OUTDIR/submissions/<student>/, OUTDIR/expected.json
+//   raylab-classgen --help
 //
 // The class: 4 pristine solutions, 3 untouched labs, one that submitted
 // stages 01-03 only, one that did 01-04, the broken submissions of
@@ -14,6 +15,7 @@
 #include "paths.h"
 #include "stage_catalog.h"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -69,9 +71,18 @@ void copyTree(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app{"Writes a generated class of 30 submissions (OUTDIR/submissions/<student>/, each a "
+                 "copy of labs/ with some stages done, mistakes made or broken) and what grading "
+                 "them must give (OUTDIR/expected.json), to try `raylab grade` on."};
+    std::string outDir;
+    app.add_option("OUTDIR", outDir, "a new folder (or one without submissions/ in it)")
+        ->required()
+        ->check([](const std::string& v) {
+            return !v.empty() && v[0] == '-' ? "OUTDIR may not start with '-' (an option?)" : "";
+        });
+    CLI11_PARSE(app, argc, argv);
     try {
-        if (argc != 2) throw Error("usage: raylab-classgen OUTDIR");
-        const fs::path out = argv[1];
+        const fs::path out = outDir;
         const fs::path subs = out / "submissions";
         if (fs::exists(subs)) throw Error(subs.string() + " exists already");
         fs::create_directories(subs);

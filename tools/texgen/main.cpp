@@ -5,8 +5,11 @@
 // committed files in assets/textures/ can be checked by regenerating them.
 //
 //   raylab-texgen OUTDIR     e.g. build/raylab-texgen assets/textures
+//   raylab-texgen --help
 #include "error.h"
 #include "texture_set.h"
+
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -17,13 +20,16 @@ using namespace raylab;
 namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
-    if (argc != 2 || std::string(argv[1]).empty() || argv[1][0] == '-') {
-        std::fprintf(
-            stderr,
-            "usage: raylab-texgen OUTDIR  (writes the textures of assets/textures/ into OUTDIR)\n");
-        return 2;
-    }
-    const fs::path outDir = argv[1];
+    CLI::App app{"Writes the procedural textures of assets/textures/ (planets, sky, tiles, "
+                 "normal maps, fur) into OUTDIR."};
+    std::string out;
+    app.add_option("OUTDIR", out, "the folder to write (made when missing)")
+        ->required()
+        ->check([](const std::string& v) {
+            return !v.empty() && v[0] == '-' ? "OUTDIR may not start with '-' (an option?)" : "";
+        });
+    CLI11_PARSE(app, argc, argv);
+    const fs::path outDir = out;
     try {
         // Checked before the (slower) generation, so a bad OUTDIR fails fast.
         std::error_code ec;

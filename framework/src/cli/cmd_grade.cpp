@@ -5,12 +5,16 @@
 // junit.xml. One bad submission never stops the run or touches another's
 // score.
 #include "child_process.h"
+#include "class_finish.h"
+#include "class_roster.h"
+#include "course_file.h"
 #include "command.h"
 #include "commands.h"
 #include "error.h"
 #include "grade_report.h"
 #include "grade_shards.h"
 #include "grade_stage.h"
+#include "atomic_file.h"
 #include "paths.h"
 #include "stage_list.h"
 
@@ -209,6 +213,34 @@ private:
     bool tty_;
 };
 
+// TEXT with the student's folder (as given, absolute, canonical) and name
+// replaced by the pseudonym: compiler messages name the student's files.
+std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
+                        const fs::path& submissions) {
+    std::error_code ec;
+    const fs::path folder = submissions / name;
+    std::vector<std::string> forms = {fs::weakly_canonical(folder, ec).string(),
+                                      fs::absolute(folder, ec).string(), folder.string(),
+                                      displayPath(folder)};
+    // The bare name too, where it is long enough not to hit ordinary words.
+    if (name.size() >= 4) forms.push_back(name);
+    for (const std::string& form : forms) {
+        if (form.empty()) continue;
+        for (std::size_t at; (at = text.find(form)) != std::string::npos;)
+            text.replace(at, form.size(), pseudonym);
+    }
+    return text;
+}
+
+void scrubNames(const fs::path& log, const std::string& name, const std::string& pseudonym,
+                const fs::path& submissions) {
+    std::error_code ec;
+    if (!fs::is_regular_file(log, ec)) return;
+    const std::string text = readTextFile(log);
+    const std::string clean = withoutName(text, name, pseudonym, submissions);
+    if (clean != text) writeTextFileAtomic(log, clean);
+}
+
 void printSummary(const ClassResult& result) {
     std::printf("\n%-24s", "student");
     for (const std::string& s : result.stages) std::printf(" %6.2s", s.c_str());
@@ -241,7 +273,20 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     const std::vector<const StageInfo*> stages = stagesToGrade(g.stages);
     const fs::path submissions = g.submissions;
     const Shard shard = g.shard.empty() ? Shard{} : parseShard(g.shard);
+    // The course file is read here once, so that a mistake in it stops the
+    // run before any work; the children read it again for the weights.
+    std::string courseFile;
+    if (!g.course.empty()) {
+        readCourseFile(g.course);
+        courseFile = fs::absolute(g.course).string();
+    }
     std::vector<std::string> students = studentFolders(submissions);
+    if (!g.only.empty()) {
+        if (std::find(students.begin(), students.end(), g.only) == students.end())
+            throw Error("--only " + g.only + ": no folder " + g.only + "/ in " +
+                        submissions.string());
+        students = {g.only};
+    }
     if (shard.count > 1) {
         std::vector<std::string> mine;
         for (std::size_t i = 0; i < students.size(); ++i)
@@ -253,12 +298,25 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     }
     const fs::path out = g.outDir;
     checkFoldersApart(submissions, out);
+    // What the reports call each student: the folder's name, or its pseudonym.
+    std::vector<std::string> shown;
+    for (const std::string& name : students)
+        shown.push_back(g.anonymise ? pseudonym(name, g.seed) : name);
     std::error_code ec;
     // Only what grading writes is cleared: no stale result of an earlier run
-    // may be mixed into this one.
-    for (const char* own :
-         {"students", "reference", "report.html", "summary.csv", "junit.xml", "shard.json"})
-        fs::remove_all(out / own, ec);
+    // may be mixed into this one. A regrade of one student (--only) clears
+    // that student's results and keeps the rest, the references included.
+    bool referencesReady = false;
+    if (!g.only.empty()) {
+        fs::remove_all(studentFolder(out, shown.front()), ec);
+        referencesReady = true;
+        for (const StageInfo* s : stages)
+            referencesReady = referencesReady && fs::is_directory(out / "reference" / s->id, ec);
+    } else {
+        for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml",
+                                "shard.json", "class.json", "canvas.csv"})
+            fs::remove_all(out / own, ec);
+    }
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
     const std::string exe = executablePath().string();
@@ -275,9 +333,10 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
         return true;
     };
 
-    std::printf("raylab grade: %zu students x %zu stages%s, %d jobs, timeout %.0f s, memory %ld "
+    std::printf("raylab grade: %zu student%s x %zu stage%s%s, %d jobs, timeout %.0f s, memory %ld "
                 "MB%s\n",
-                students.size(), stages.size(),
+                students.size(), students.size() == 1 ? "" : "s", stages.size(),
+                stages.size() == 1 ? "" : "s",
                 shard.count > 1 ? (" (share " + std::to_string(shard.index) + "/" +
                                    std::to_string(shard.count) + ")")
                                       .c_str()
@@ -289,7 +348,7 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     // 1. The solution's images for every stage (trusted code, but in children
     //    too: they run in parallel and share nothing).
     const bool referencesDone = runPool(
-        stages.size(), g.jobs,
+        referencesReady ? 0 : stages.size(), g.jobs,
         [&](std::size_t i) {
             return std::make_unique<Child>(
                 std::vector<std::string>{exe, "grade-reference", "--stage", stages[i]->id, "--out",
@@ -315,9 +374,10 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     result.students.resize(students.size());
     std::map<std::pair<std::size_t, std::string>, StageResult> graded;
     std::deque<Item> queue;
+    result.anonymised = g.anonymise;
     for (std::size_t i = 0; i < students.size(); ++i) {
-        result.students[i].name = students[i];
-        fs::create_directories(studentFolder(out, students[i]), ec);
+        result.students[i].name = shown[i];
+        fs::create_directories(studentFolder(out, shown[i]), ec);
         for (const StageInfo* s : stages) queue.push_back({i, s});
     }
     Progress progress(queue.size());
@@ -339,19 +399,22 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
                 finish(item, r);
                 return nullptr;
             }
-            const fs::path itemDir = studentFolder(out, name) / item.stage->id;
+            const fs::path itemDir = studentFolder(out, shown[item.student]) / item.stage->id;
             fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
             fs::create_directories(itemDir, ec);
             progress.working(name, item.stage->id);
-            return std::make_unique<Child>(
-                std::vector<std::string>{exe, "grade-item", "--stage", item.stage->id, "--lab",
-                                         (submissions / name).string(), "--student", name, "--out",
-                                         out.string(), "--seed", seed},
-                itemDir / "log.txt", limits);
+            std::vector<std::string> args{exe,      "grade-item",
+                                          "--stage", item.stage->id,
+                                          "--lab",   (submissions / name).string(),
+                                          "--student", shown[item.student],
+                                          "--out",   out.string(),
+                                          "--seed",  seed};
+            if (!courseFile.empty()) args.insert(args.end(), {"--course", courseFile});
+            return std::make_unique<Child>(args, itemDir / "log.txt", limits);
         };
         auto itemDone = [&](std::size_t i, const ChildOutcome& o) {
             const Item& item = items[i];
-            const fs::path itemDir = studentFolder(out, students[item.student]) / item.stage->id;
+            const fs::path itemDir = studentFolder(out, shown[item.student]) / item.stage->id;
             StageResult r;
             bool haveResult = false;
             if (!o.timedOut && o.exitCode == 0 && fs::exists(itemDir / "result.json", ec)) {
@@ -360,8 +423,18 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
                     haveResult = true;
                 } catch (const Error&) {}
             }
+            if (g.anonymise) scrubNames(itemDir / "log.txt", students[item.student],
+                                        shown[item.student], submissions);
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
+            if (g.anonymise) {
+                r.message = withoutName(r.message, students[item.student], shown[item.student],
+                                        submissions);
+                for (CheckResult& c : r.checks)
+                    c.output = withoutName(c.output, students[item.student], shown[item.student],
+                                           submissions);
+                if (haveResult) writeTextFileAtomic(itemDir / "result.json", stageResultToJson(r));
+            }
             finish(item, r);
         };
         return runPool(items.size(), jobs, startItem, itemDone, interrupted);
@@ -392,11 +465,52 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     return result;
 }
 
+namespace {
+
+// The options only a whole class's reports use, checked before any work.
+void checkReportOptions(const GradeOptions& g) {
+    if (!g.lms.empty() && g.lms != "canvas")
+        throw Error("--lms must be canvas (the one LMS import written so far), not '" + g.lms + "'");
+    if (!g.lms.empty() && g.roster.empty())
+        throw Error("--lms canvas needs --roster FILE (Canvas matches students by their ids)");
+    if (g.anonymise && (!g.roster.empty() || !g.lms.empty()))
+        throw Error("--anonymise cannot go with --roster or --lms: their ids name the students");
+    if (!g.roster.empty()) readRoster(g.roster);
+    if (!g.course.empty()) readCourseFile(g.course);
+    if (!g.submitted.empty() && g.submitted != "mtime")
+        SubmissionTimes::read(g.submitted, g.submissions);
+}
+
+}  // namespace
+
 int cmdGrade(const GradeOptions& g) {
-    const std::optional<ClassResult> graded = gradeClass(g);
-    if (!graded) return 130;  // interrupted: no report
-    const ClassResult& result = *graded;
+    checkReportOptions(g);
     const fs::path out = g.outDir;
+    if (!g.shard.empty() && !g.only.empty()) throw Error("--only and --shard exclude each other");
+    // --only: the earlier run's results, checked to be of the same grading.
+    std::optional<ClassResult> earlier;
+    if (!g.only.empty()) {
+        earlier = readClassFile(out);
+        if (earlier->seed != g.seed)
+            throw Error("--only: " + out.string() + " was graded with --seed " +
+                        std::to_string(earlier->seed) + ", not " + std::to_string(g.seed) +
+                        " (its views would differ from the other students')");
+        if (earlier->anonymised != g.anonymise)
+            throw Error(std::string("--only: ") + out.string() + " was graded " +
+                        (earlier->anonymised ? "with" : "without") + " --anonymise");
+        std::vector<std::string> ids;
+        for (const StageInfo* s : stagesToGrade(g.stages)) ids.push_back(s->id);
+        if (!g.stages.empty() && ids != earlier->stages)
+            throw Error("--only: " + out.string() + " graded other stages; give its --stages or none");
+    }
+    GradeOptions run = g;
+    if (earlier) {
+        run.stages.clear();
+        for (const std::string& id : earlier->stages) run.stages += (run.stages.empty() ? "" : ",") + id;
+    }
+    const std::optional<ClassResult> graded = gradeClass(run);
+    if (!graded) return 130;  // interrupted: no report
+    ClassResult result = *graded;
     // The reports; a share writes its results for --merge instead.
     if (!g.shard.empty()) {
         const Shard shard = parseShard(g.shard);
@@ -406,14 +520,34 @@ int cmdGrade(const GradeOptions& g) {
                     shard.index, shard.count, result.students.size(), result.seconds);
         return 0;
     }
-    writeClassReports(result, out);
+    if (earlier) {
+        // The one student's new results in place of the old, or added.
+        const StudentResult fresh = result.students.front();
+        ClassResult merged = *earlier;
+        auto it = std::find_if(merged.students.begin(), merged.students.end(),
+                               [&](const StudentResult& s) { return s.name == fresh.name; });
+        if (it == merged.students.end()) merged.students.push_back(fresh);
+        else *it = fresh;
+        std::sort(merged.students.begin(), merged.students.end(),
+                  [](const StudentResult& a, const StudentResult& b) { return a.name < b.name; });
+        std::printf("raylab grade --only %s: regraded in %.1f s; the other %zu students' results "
+                    "are as they were\n",
+                    g.only.c_str(), result.seconds, merged.students.size() - 1);
+        result = merged;
+    }
+    writeClassFile(result, out);
+    finishAndReport(result, g, out);
     std::printf("graded in %.1f s; report: %s\n", result.seconds,
                 fs::absolute(out / "report.html").lexically_normal().c_str());
     return 0;
 }
 
+namespace {
+
+// The class reports in OUT and the summary table on stdout.
 void writeClassReports(const ClassResult& result, const fs::path& out) {
     for (const StudentResult& st : result.students) {
+        if (!st.hasFolder) continue;  // only in the roster: nothing graded, no folder
         try {
             writeGradescopeResults(st, studentFolder(out, st.name) / "results.json");
         } catch (const Error& e) {  // one student's file must not cost the class its report
@@ -424,6 +558,38 @@ void writeClassReports(const ClassResult& result, const fs::path& out) {
     writeJunitXml(result, out / "junit.xml");
     writeHtmlReport(result, out);
     printSummary(result);
+}
+
+}  // namespace
+
+void finishAndReport(ClassResult result, const GradeOptions& g, const fs::path& out) {
+    if (!g.course.empty()) {
+        const CourseSettings course = readCourseFile(g.course);
+        if (course.late) {
+            const std::string source = g.submitted.empty() ? "mtime" : g.submitted;
+            if (g.submitted.empty())
+                std::printf("late policy: submission times from the stage folders' modification "
+                            "times (--submitted mtime)\n");
+            const SubmissionTimes times = SubmissionTimes::read(source, g.submissions);
+            std::map<std::string, std::string> folderOf;  // result name -> the times' name
+            if (result.anonymised)
+                for (const std::string& name : times.students())
+                    folderOf[pseudonym(name, result.seed)] = name;
+            applyLatePolicy(result, *course.late, times, folderOf);
+        }
+    }
+    if (!g.roster.empty()) {
+        const std::vector<std::string> unlisted = attachRoster(result, readRoster(g.roster));
+        for (const std::string& name : unlisted)
+            std::fprintf(stderr, "raylab grade: %s is not in the roster (no id in summary.csv%s)\n",
+                         name.c_str(), g.lms.empty() ? "" : ", left out of canvas.csv");
+    }
+    matchMistakes(result);
+    writeClassReports(result, out);
+    if (g.lms == "canvas") {
+        writeCanvasCsv(result, out / "canvas.csv", "RayLab ");
+        std::printf("canvas.csv: import it in Canvas under Grades > Import\n");
+    }
 }
 
 Command gradeCommand() {
@@ -451,13 +617,35 @@ Command gradeCommand() {
                            "write shard.json for --merge");
             cmd.add_option("--merge", *merge,
                            "OUT SHARD_DIR...: put the shares of a --shard run together into one "
-                           "report in OUT (then no other option)")
+                           "report in OUT (with --course, --roster, --submitted CSV, --lms only)")
                 ->expected(2, 100000);
+            cmd.add_option("--course", g->course,
+                           "a course file: weights over stage.json's, a late policy "
+                           "(docs/grading.md)");
+            cmd.add_option("--submitted", g->submitted,
+                           "when each student submitted, for a late policy: a CSV "
+                           "(student,submitted[,stage]) or mtime (the folders' times; the "
+                           "default)");
+            cmd.add_option("--roster", g->roster,
+                           "a CSV with a student column (the folder names) and id, name, "
+                           "canvas_id, login_id, section: ids in summary.csv, and for --lms");
+            cmd.add_option("--lms", g->lms, "also write OUT/canvas.csv, Canvas's gradebook import")
+                ->check(CLI::IsMember({"canvas"}));
+            cmd.add_flag("--anonymise,--anonymize", g->anonymise,
+                         "pseudonyms (stable for the same --seed) instead of folder names in "
+                         "every report file, for TAs");
+            cmd.add_option("--only", g->only,
+                           "regrade this one student into the existing report in --out (the "
+                           "report is rewritten; nothing else changes)");
             return std::function<int()>([=] {
                 if (!merge->empty()) {
-                    if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty())
-                        throw Error("--merge takes no --submissions, --out or --shard");
-                    return cmdGradeMerge(*merge);
+                    if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty() ||
+                        !g->only.empty() || g->anonymise)
+                        throw Error("--merge takes no --submissions, --out, --shard, --only or "
+                                    "--anonymise");
+                    if (g->submitted == "mtime")
+                        throw Error("--merge: --submitted mtime needs the class folder; give a CSV");
+                    return cmdGradeMerge(*merge, *g);
                 }
                 if (g->submissions.empty()) throw Error("--submissions is required");
                 if (g->outDir.empty()) throw Error("--out is required");

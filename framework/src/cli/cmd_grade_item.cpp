@@ -6,6 +6,7 @@
 #include "command.h"
 #include "commands.h"
 #include "error.h"
+#include "course_file.h"
 #include "gl_loader.h"
 #include "grade_stage.h"
 
@@ -24,13 +25,17 @@ int cmdGradeReference(const std::string& stageId, const std::string& outDir, uns
 }
 
 int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const std::string& student,
-                 const std::string& outDir, unsigned seed) {
+                 const std::string& outDir, unsigned seed, const std::string& courseFile) {
     const StageInfo& stage = findStage(stageId);
     const std::filesystem::path resultFile =
         studentFolder(outDir, student) / stage.id / "result.json";
     try {
         auto context = createHeadlessContext(Backend::Auto);
-        StageResult result = gradeStage(stage, stage.grading, labRoot, student, outDir, seed);
+        // The course's weights where it sets them (checked by the parent already).
+        const CourseSettings course =
+            courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
+        StageResult result =
+            gradeStage(stage, course.gradingOf(stage), labRoot, student, outDir, seed);
         writeTextFileAtomic(resultFile, stageResultToJson(result));
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "raylab grade-item: out of memory\n");
@@ -49,7 +54,7 @@ int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const s
 
 namespace {
 struct ItemOptions {
-    std::string stage, lab, student, out;
+    std::string stage, lab, student, out, course;
     unsigned seed = 0;
 };
 }  // namespace
@@ -62,8 +67,10 @@ Command gradeItemCommand() {
                 cmd.add_option("--student", o->student)->required();
                 cmd.add_option("--out", o->out)->required();
                 cmd.add_option("--seed", o->seed);
-                return std::function<int()>(
-                    [=] { return cmdGradeItem(o->stage, o->lab, o->student, o->out, o->seed); });
+                cmd.add_option("--course", o->course);
+                return std::function<int()>([=] {
+                    return cmdGradeItem(o->stage, o->lab, o->student, o->out, o->seed, o->course);
+                });
             }};
 }
 

@@ -262,7 +262,15 @@ int runStage(const StagePlan& p, const fs::path& out, const MutantsOptions& o,
         s.byError ? (", " + std::to_string(s.byError) + " by other errors").c_str() : "",
         s.survivors.size(), (out / "mutants.md").c_str());
 
-    if (p.knownFile.empty()) return 0;
+    if (p.knownFile.empty()) {
+        // Survivors listed without reasons: say where the reasons are.
+        if (!s.survivors.empty())
+            std::printf("  %zu survivor%s listed without a reason: many are equivalent mutants "
+                        "(no picture can tell them from the solution); --known tests/mutants "
+                        "explains the known ones and fails only on new ones\n",
+                        s.survivors.size(), s.survivors.size() == 1 ? "" : "s");
+        return 0;
+    }
     for (std::size_t i = 0; i < n; ++i)
         if (verdicts[i].caught && p.known.count(mutantId(p.mutants[i])))
             std::printf("  caught now, remove it from %s: %s\n", p.knownFile.c_str(),

@@ -70,13 +70,20 @@ struct GradeOptions {
         2048;  // per stage of a submission (address space); the pro scene needs well under 1 GB
     unsigned seed = 0;  // of the seeded views; keep it secret to prevent tuning
     std::string shard;  // "K/N": grade that share of the class only (grade_shards.h)
+    // The course's workflow (class_finish.h):
+    std::string course;     // --course FILE: weights over stage.json's, a late policy
+    std::string submitted;  // --submitted CSV|mtime: when each student submitted
+    std::string roster;     // --roster CSV: ids (summary.csv) and what an LMS needs
+    std::string lms;        // --lms canvas: also OUT/canvas.csv
+    bool anonymise = false;  // pseudonyms instead of folder names in every report file
+    std::string only;        // --only NAME: regrade one student into OUT's report
 };
 int cmdGrade(const GradeOptions& grade);
 
 // The child-process halves of `raylab grade` (not for direct use).
 int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);
 int cmdGradeItem(const std::string& stage, const std::string& labRoot, const std::string& student,
-                 const std::string& outDir, unsigned seed);
+                 const std::string& outDir, unsigned seed, const std::string& courseFile);
 
 struct BenchOptions {
     std::string outDir;               // bench.csv, bench.md, bench.png go here (made when missing)

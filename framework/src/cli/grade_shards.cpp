@@ -2,6 +2,7 @@
 
 #include "atomic_file.h"
 #include "error.h"
+#include "commands.h"
 #include "grade_stage.h"
 #include "json_reader.h"
 #include "paths.h"
@@ -45,17 +46,66 @@ Shard parseShard(const std::string& text) {
     return s;
 }
 
-void writeShardFile(const ClassResult& result, const Shard& shard, const fs::path& outDir) {
-    json doc = {{"shard", shard.index},      {"of", shard.count},
-                {"seed", result.seed},       {"stages", result.stages},
-                {"machine", result.machine}, {"seconds", result.seconds},
+namespace {
+
+json classResultJson(const ClassResult& result) {
+    json doc = {{"seed", result.seed},
+                {"stages", result.stages},
+                {"machine", result.machine},
+                {"seconds", result.seconds},
+                {"anonymised", result.anonymised},
                 {"students", json::array()}};
     for (const StudentResult& st : result.students) {
         json stages = json::array();
         for (const StageResult& r : st.stages) stages.push_back(json::parse(stageResultToJson(r)));
         doc["students"].push_back({{"name", st.name}, {"stages", stages}});
     }
+    return doc;
+}
+
+ClassResult classResultFrom(const json& doc) {
+    ClassResult result;
+    result.seed = doc.at("seed").get<unsigned>();
+    result.stages = doc.at("stages").get<std::vector<std::string>>();
+    result.machine = doc.at("machine").get<std::string>();
+    result.seconds = doc.at("seconds").get<double>();
+    result.anonymised = doc.value("anonymised", false);
+    for (const json& st : doc.at("students")) {
+        StudentResult student;
+        student.name = st.at("name").get<std::string>();
+        for (const json& r : st.at("stages"))
+            student.stages.push_back(stageResultFromJson(r.dump()));
+        result.students.push_back(std::move(student));
+    }
+    return result;
+}
+
+constexpr const char* kClassFile = "class.json";
+
+}  // namespace
+
+void writeShardFile(const ClassResult& result, const Shard& shard, const fs::path& outDir) {
+    json doc = classResultJson(result);
+    doc["shard"] = shard.index;
+    doc["of"] = shard.count;
     writeTextFileAtomic(outDir / kShardFile, doc.dump(1) + "\n");
+}
+
+void writeClassFile(const ClassResult& result, const fs::path& outDir) {
+    writeTextFileAtomic(outDir / kClassFile, classResultJson(result).dump(1) + "\n");
+}
+
+ClassResult readClassFile(const fs::path& outDir) {
+    const fs::path file = outDir / kClassFile;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+        throw Error(outDir.string() + ": no " + kClassFile +
+                    " (not the output of a finished `raylab grade` run)");
+    try {
+        return classResultFrom(json::parse(readTextFile(file)));
+    } catch (const json::exception& e) {
+        throw Error(file.string() + ": not a class file this raylab wrote (" + e.what() + ")");
+    }
 }
 
 namespace {
@@ -78,17 +128,7 @@ ShardFile readShardFile(const fs::path& dir) {
         const json doc = json::parse(readTextFile(file));
         s.index = doc.at("shard").get<int>();
         s.count = doc.at("of").get<int>();
-        s.result.seed = doc.at("seed").get<unsigned>();
-        s.result.stages = doc.at("stages").get<std::vector<std::string>>();
-        s.result.machine = doc.at("machine").get<std::string>();
-        s.result.seconds = doc.at("seconds").get<double>();
-        for (const json& st : doc.at("students")) {
-            StudentResult student;
-            student.name = st.at("name").get<std::string>();
-            for (const json& r : st.at("stages"))
-                student.stages.push_back(stageResultFromJson(r.dump()));
-            s.result.students.push_back(std::move(student));
-        }
+        s.result = classResultFrom(doc);
     } catch (const json::exception& e) {
         throw Error(file.string() + ": not a shard file this raylab wrote (" + e.what() + ")");
     }
@@ -97,7 +137,7 @@ ShardFile readShardFile(const fs::path& dir) {
 
 }  // namespace
 
-int cmdGradeMerge(const std::vector<std::string>& args) {
+int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& options) {
     if (args.size() < 2)
         throw Error(
             "--merge OUT SHARD_DIR...: give the output folder and at least one shard folder");
@@ -110,7 +150,7 @@ int cmdGradeMerge(const std::vector<std::string>& args) {
     std::set<int> seen;
     for (const ShardFile& s : shards) {
         if (s.count != first.count || s.result.seed != first.result.seed ||
-            s.result.stages != first.result.stages)
+            s.result.stages != first.result.stages || s.result.anonymised != first.result.anonymised)
             throw Error(s.dir.string() + " is from another run than " + first.dir.string() +
                         " (shares, seed or stages differ)");
         if (!seen.insert(s.index).second)
@@ -129,6 +169,7 @@ int cmdGradeMerge(const std::vector<std::string>& args) {
     merged.seed = first.result.seed;
     merged.stages = first.result.stages;
     merged.machine = first.result.machine;
+    merged.anonymised = first.result.anonymised;
     std::map<std::string, const ShardFile*> owner;
     for (const ShardFile& s : shards) {
         merged.seconds = std::max(merged.seconds, s.result.seconds);  // the shares ran side by side
@@ -144,7 +185,8 @@ int cmdGradeMerge(const std::vector<std::string>& args) {
 
     // The files: the reference pictures once, every student's folder from its share.
     std::error_code ec;
-    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml"})
+    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml",
+                            "class.json", "canvas.csv"})
         fs::remove_all(out / own, ec);
     fs::create_directories(out, ec);
     if (ec) throw Error("--merge " + out.string() + ": cannot create the folder");
@@ -161,7 +203,8 @@ int cmdGradeMerge(const std::vector<std::string>& args) {
     }
     std::printf("raylab grade --merge: %zu shares, %zu students x %zu stages\n", shards.size(),
                 merged.students.size(), merged.stages.size());
-    writeClassReports(merged, out);
+    writeClassFile(merged, out);
+    finishAndReport(merged, options, out);
     std::printf("merged; report: %s\n",
                 fs::absolute(out / "report.html").lexically_normal().c_str());
     return 0;

@@ -30,18 +30,27 @@ inline bool inShard(std::size_t index, const Shard& shard) {
 void writeShardFile(const ClassResult& result, const Shard& shard,
                     const std::filesystem::path& outDir);
 
+// OUT/class.json: every result of a whole run as graded (before a late
+// policy or a roster): what `raylab grade --only NAME` regrades one student into.
+void writeClassFile(const ClassResult& result, const std::filesystem::path& outDir);
+ClassResult readClassFile(const std::filesystem::path& outDir);  // throws Error
+
 // The class reports in OUT: <student>/results.json, summary.csv, junit.xml,
-// report.html, and the summary table on stdout (cmd_grade.cpp).
-void writeClassReports(const ClassResult& result, const std::filesystem::path& outDir);
+// report.html (canvas.csv with --lms canvas), and the summary table on
+// stdout, after the course's workflow (late policy, roster, the catalogued
+// mistakes) is applied to RESULT (cmd_grade.cpp).
+struct GradeOptions;
+void finishAndReport(ClassResult result, const GradeOptions& options,
+                     const std::filesystem::path& outDir);
 
 // Grades the class G describes (its --shard share, if any) into G.outDir's
 // students/ and reference/ folders; nullopt when interrupted (Ctrl-C).
 // cmdGrade writes the reports; the single-submission graders
 // (cmd_prairielearn.cpp) their own results.
-struct GradeOptions;
 std::optional<ClassResult> gradeClass(const GradeOptions& g);
 
-// `raylab grade --merge OUT SHARD_DIR...`. Returns the exit code.
-int cmdGradeMerge(const std::vector<std::string>& args);
+// `raylab grade --merge OUT SHARD_DIR...` (OPTIONS: the course's workflow
+// options only). Returns the exit code.
+int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& options);
 
 }  // namespace raylab

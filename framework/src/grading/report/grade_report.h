@@ -15,7 +15,9 @@
 
 namespace raylab {
 
-// Gradescope's results.json: {"score", "execution_time", "output", "tests": [
+// Gradescope's results.json: {"score", "execution_time", "output", the
+// formats of the output, the tests' outputs and names (all "text": plain
+// text, shown as it is), "tests": [
 // {"name": "STAGE / CHECK", "score", "max_score", "status": "passed"|"failed",
 // "output"}]}. One test per check of a graded stage, one per stage that was
 // not graded ("04-recursion: compile error", output = the message), so the
@@ -42,12 +44,25 @@ struct GradescopeOptions {
 std::string gradescopeJson(const StudentResult& student, const GradescopeOptions& options);
 bool isGradescopeVisibility(const std::string& value);
 
-// student,<stage ids...>,total,max,notes - one row per student in ClassResult
-// order. Stage columns hold the score (numeric, empty when the student has no
-// result for the stage); notes lists the stages that were not graded
-// ("04-recursion: compile error; 05-x: not submitted"). CRLF line ends.
+// student,id,<stage ids...>,total,max,notes - one row per student in
+// ClassResult order. id: the roster's (empty without one). Stage columns
+// hold the score after any late penalty (empty when the student did not
+// submit the stage); notes lists the stages that were not graded
+// ("04-recursion: compile error") and the late ones ("03-shadows: submitted
+// ..., 2 days late: -20% (72 of 90)"). CRLF line ends.
 std::string summaryCsv(const ClassResult& result);
 void writeSummaryCsv(const ClassResult& result, const std::filesystem::path& file);
+
+// Canvas's gradebook import (Grades > Import): Student, ID, SIS User ID,
+// SIS Login ID, Section, then one column per stage named "PREFIX<stage id>"
+// (Canvas makes a new assignment of each name it does not know), a "Points
+// Possible" row, then one row per roster student with an id Canvas can match
+// (ID, SIS User ID or SIS Login ID). Scores after late penalties; a stage not
+// submitted is left empty, which Canvas leaves as it is. Throws Error when
+// no student has an id.
+std::string canvasCsv(const ClassResult& result, const std::string& prefix);
+void writeCanvasCsv(const ClassResult& result, const std::filesystem::path& file,
+                    const std::string& prefix);
 
 // <testsuites> with one <testsuite name=STUDENT> per student and one
 // <testcase classname="STUDENT.STAGE" name=CHECK> per check (<failure> when

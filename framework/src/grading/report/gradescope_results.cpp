@@ -91,6 +91,9 @@ std::string gradescopeJson(const StudentResult& student) {
     Json j{{"score", round2(student.score())},
            {"execution_time", std::lround(stageSeconds(student))},
            {"output", summary},
+           {"output_format", "text"},
+           {"test_output_format", "text"},
+           {"test_name_format", "text"},
            {"tests", testsOf(student, [](Json&, std::size_t, std::size_t, const StageResult&,
                                          const CheckResult*) {})}};
     return dump(j);
@@ -161,9 +164,12 @@ std::string gradescopeJson(const StudentResult& student, const GradescopeOptions
 
     Json j{{"score", round2(student.score())},
            {"execution_time", std::lround(o.seconds >= 0 ? o.seconds : stageSeconds(student))},
-           // The top-level output is Gradescope's "simple_format" (HTML with
-           // newlines kept): compiler messages hold '<' and '&'.
-           {"output", escapeMarkup(cleanText(out))},
+           // Said explicitly, and plain text everywhere: compiler messages hold
+           // '<' and '&', shown as they are (no markup to escape).
+           {"output", cleanText(out)},
+           {"output_format", "text"},
+           {"test_output_format", "text"},
+           {"test_name_format", "text"},
            {"visibility", o.visibility},
            {"stdout_visibility", o.stdoutVisibility},
            {"tests", std::move(tests)}};

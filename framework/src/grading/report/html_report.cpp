@@ -79,6 +79,11 @@ figure img{display:block;width:180px;height:auto;border:1px solid var(--border);
 figure .noimg{display:flex;align-items:center;justify-content:center;width:180px;height:135px;border:1px dashed var(--border);border-radius:4px;color:var(--muted);font-size:12px;background:var(--soft)}
 figcaption{font-size:11px;color:var(--muted);text-align:center;margin-top:3px;text-transform:uppercase;letter-spacing:.04em}
 footer{max-width:1240px;margin:0 auto;padding:0 32px 32px;color:var(--muted);font-size:12px}
+.overview{display:grid;grid-template-columns:repeat(auto-fit,minmax(420px,1fr));gap:18px;margin:0 0 24px}
+.overview h2{margin:0 0 8px}
+.overview td.num{text-align:right;white-space:nowrap}
+.overview td.checks-list{font-family:ui-monospace,SFMono-Regular,Menlo,Consolas,monospace;font-size:12px;overflow-wrap:anywhere}
+.late{color:var(--warn);font-size:12px}
 )css";
 
 const char* tone(double score, double maxScore) {
@@ -134,10 +139,14 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
             stageMax[j] += s->maxScore;
             ++stageCount[j];
             if (isGraded(*s)) {
+                const std::string title =
+                    s->latePenalty > 0 ? num(s->rawScore()) + " before the late penalty: " +
+                                             escapeMarkup(s->lateNote, true)
+                                       : num(s->score) + " / " + num(s->maxScore);
                 h += "<td class=\"cell num\"><a class=\"" +
                      std::string(tone(s->score, s->maxScore)) + "\" href=\"#" + anchor(i, k) +
-                     "\" title=\"" + num(s->score) + " / " + num(s->maxScore) + "\">" +
-                     num(s->score) + "</a></td>";
+                     "\" title=\"" + title + "\">" + num(s->score) +
+                     (s->latePenalty > 0 ? "<span class=\"late\"> late</span>" : "") + "</a></td>";
             } else {
                 h += "<td class=\"cell num\"><a class=\"status " + std::string(statusTone(*s)) +
                      "\" href=\"#" + anchor(i, k) + "\">" + escapeMarkup(statusWord(*s)) +
@@ -173,6 +182,81 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
          "<span>Click a cell for the details.</span></p>\n";
 }
 
+// The class at a glance: the checks that fail most, and the catalogued
+// mistakes whose failed checks the class's failures repeat exactly.
+void htmlClassSummary(std::string& h, const ClassResult& r) {
+    struct Count {
+        std::string stage, check, kind;
+        int failed = 0, graded = 0;
+    };
+    std::vector<Count> counts;
+    int gradedStages = 0, failingStages = 0;
+    for (const StudentResult& st : r.students)
+        for (const StageResult& s : st.stages) {
+            if (!isGraded(s)) continue;
+            ++gradedStages;
+            bool anyFailed = false;
+            for (const CheckResult& c : s.checks) {
+                if (c.seeded) continue;  // each seeded view is its own camera: not comparable
+                auto it = std::find_if(counts.begin(), counts.end(), [&](const Count& x) {
+                    return x.stage == s.stage && x.check == c.name;
+                });
+                if (it == counts.end()) {
+                    counts.push_back({s.stage, c.name, c.kind, 0, 0});
+                    it = counts.end() - 1;
+                }
+                ++it->graded;
+                it->failed += c.passed ? 0 : 1;
+                anyFailed = anyFailed || !c.passed;
+            }
+            failingStages += anyFailed ? 1 : 0;
+        }
+    std::stable_sort(counts.begin(), counts.end(),
+                     [](const Count& a, const Count& b) { return a.failed > b.failed; });
+    h += "<div class=\"overview\">\n<div><h2>Checks that fail most</h2>\n";
+    if (counts.empty() || counts.front().failed == 0) {
+        h += "<p class=\"muted\">No check failed.</p>\n";
+    } else {
+        h += "<div class=\"scroll\"><table class=\"summary\"><thead><tr><th>Stage</th><th>Check</th>"
+             "<th>Kind</th><th class=\"num\">Failed</th></tr></thead><tbody>\n";
+        for (const Count& c : counts) {
+            if (c.failed == 0) break;
+            h += "<tr><td>" + escapeMarkup(c.stage) + "</td><td>" + escapeMarkup(c.check) +
+                 "</td><td class=\"muted\">" + escapeMarkup(c.kind) + "</td><td class=\"num\">" +
+                 std::to_string(c.failed) + " of " + std::to_string(c.graded) + "</td></tr>\n";
+        }
+        h += "</tbody></table></div>\n";
+    }
+    h += "<p class=\"legend\">" + std::to_string(failingStages) + " of " +
+         std::to_string(gradedStages) +
+         " graded stages fail at least one check (seeded views aside).</p></div>\n";
+    h += "<div><h2>Known mistakes the failures look like</h2>\n";
+    int matched = 0;
+    for (const MistakeMatch& m : r.mistakes) matched += m.matches;
+    if (r.mistakes.empty()) {
+        h += "<p class=\"muted\">No mistakes catalogue for these stages.</p>\n";
+    } else if (matched == 0) {
+        h += "<p class=\"muted\">No failure repeats a catalogued mistake's checks exactly.</p>\n";
+    } else {
+        h += "<div class=\"scroll\"><table class=\"summary\"><thead><tr><th>Stage</th><th>Mistake</th>"
+             "<th>Fails exactly</th><th class=\"num\">Stages</th></tr></thead><tbody>\n";
+        for (const MistakeMatch& m : r.mistakes) {
+            if (m.matches == 0) continue;
+            std::string checks;
+            for (const std::string& c : m.checks) checks += (checks.empty() ? "" : ", ") + c;
+            h += "<tr><td>" + escapeMarkup(m.stage) + "</td><td>" + escapeMarkup(m.description) +
+                 (m.central ? " <span class=\"pill bad\">the stage's skill</span>" : "") +
+                 "</td><td class=\"checks-list\">" + escapeMarkup(checks) +
+                 "</td><td class=\"num\">" + std::to_string(m.matches) + "</td></tr>\n";
+        }
+        h += "</tbody></table></div>\n";
+    }
+    h += "<p class=\"legend\">A graded stage counts for a mistake of the catalogue (the "
+         "course's tests/mistakes) when the checks it fails are exactly the ones that mistake "
+         "fails; mistakes that fail the same checks count the same stages. A likeness, not a "
+         "diagnosis: other code can fail the same checks.</p></div>\n</div>\n";
+}
+
 void htmlStage(std::string& h, const StageResult& s, const std::string& id) {
     h += "<div class=\"stage\" id=\"" + id + "\">\n<div class=\"stage-head\"><h3>" +
          escapeMarkup(s.stage) + "</h3>";
@@ -183,6 +267,7 @@ void htmlStage(std::string& h, const StageResult& s, const std::string& id) {
         h += "<span class=\"pill " + std::string(statusTone(s)) + "\">" +
              escapeMarkup(statusWord(s)) + "</span>";
     if (s.seconds > 0) h += "<span class=\"muted\">" + duration(s.seconds) + "</span>";
+    if (!s.lateNote.empty()) h += "<span class=\"late\">" + escapeMarkup(s.lateNote) + "</span>";
     h += "</div>\n";
     if (!s.message.empty()) h += "<pre class=\"log\">" + escapeMarkup(s.message) + "</pre>\n";
     if (s.checks.empty()) {
@@ -231,8 +316,12 @@ std::string htmlReport(const ClassResult& r) {
     h += "<span>wall time <b>" + duration(r.seconds) + "</b></span>";
     h += "</p>\n</header>\n<main>\n";
 
-    if (r.students.empty()) h += "<p class=\"muted\">No submissions were found.</p>\n";
-    else htmlSummaryTable(h, r);
+    if (r.students.empty()) {
+        h += "<p class=\"muted\">No submissions were found.</p>\n";
+    } else {
+        htmlClassSummary(h, r);
+        htmlSummaryTable(h, r);
+    }
 
     for (std::size_t i = 0; i < r.students.size(); ++i) {
         const StudentResult& st = r.students[i];

@@ -17,13 +17,14 @@ namespace fs = std::filesystem;
 
 std::string summaryCsv(const ClassResult& r) {
     const std::string eol = "\r\n";
-    std::string out = "student";
+    std::string out = "student,id";
     for (const std::string& id : r.stages) out += "," + csvField(id);
     out += ",total,max,notes" + eol;
     for (const StudentResult& st : r.students) {
-        out += csvField(st.name);
+        out += csvField(st.name) + "," + csvField(st.roster.id);
         std::string notes;
         auto note = [&notes](const std::string& n) { notes += (notes.empty() ? "" : "; ") + n; };
+        if (!st.hasFolder) note("no submission folder");
         for (const std::string& id : r.stages) {
             const StageResult* s = findStage(st, id);
             out += ",";
@@ -31,8 +32,10 @@ std::string summaryCsv(const ClassResult& r) {
                 note(id + ": no result");
                 continue;
             }
-            out += num(s->score);
-            if (!isGraded(*s)) note(id + ": " + statusWord(*s));
+            // Not submitted is no score at all (an LMS tells it from a 0).
+            if (s->status != "not submitted") out += num(s->score);
+            if (!isGraded(*s) && st.hasFolder) note(id + ": " + statusWord(*s));
+            if (!s->lateNote.empty()) note(id + ": " + s->lateNote);
         }
         out += "," + num(st.score()) + "," + num(st.maxScore()) + "," + csvField(notes) + eol;
     }

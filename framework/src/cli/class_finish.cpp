@@ -1,0 +1,108 @@
+#include "class_finish.h"
+
+#include "mistake_catalog.h"
+#include "stage_catalog.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace raylab {
+
+void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const SubmissionTimes& times,
+                     const std::map<std::string, std::string>& folderOf) {
+    for (StudentResult& st : result.students) {
+        auto folder = folderOf.find(st.name);
+        const std::string name = folder == folderOf.end() ? st.name : folder->second;
+        for (StageResult& s : st.stages) {
+            s.latePenalty = 0;
+            s.lateNote.clear();
+            if (s.status == "not submitted" || !policy.deadlineOf(s.stage)) continue;
+            const std::optional<std::int64_t> when = times.of(name, s.stage);
+            if (!when) {
+                s.lateNote = "no submission time in " + times.source() + ": taken as on time";
+                continue;
+            }
+            const int days = policy.daysLate(s.stage, *when);
+            if (days == 0) continue;
+            const double percent = policy.penaltyPercent(s.stage, *when);
+            const double raw = s.score;
+            s.latePenalty = std::round(raw * percent) / 100.0;
+            s.score = std::round((raw - s.latePenalty) * 100.0) / 100.0;
+            char note[160];
+            std::snprintf(note, sizeof note, "submitted %s, %d day%s late: -%g%%, %g instead of %g",
+                          formatUtc(*when).c_str(), days, days == 1 ? "" : "s", percent,
+                          s.score, raw);
+            s.lateNote = note;
+        }
+    }
+}
+
+std::vector<std::string> attachRoster(ClassResult& result,
+                                      const std::map<std::string, RosterEntry>& roster) {
+    std::vector<std::string> unlisted;
+    std::set<std::string> seen;
+    for (StudentResult& st : result.students) {
+        seen.insert(st.name);
+        auto it = roster.find(st.name);
+        if (it == roster.end()) unlisted.push_back(st.name);
+        else st.roster = it->second;
+    }
+    for (const auto& [name, entry] : roster) {
+        if (seen.count(name)) continue;
+        StudentResult st;
+        st.name = name;
+        st.roster = entry;
+        st.hasFolder = false;
+        for (const std::string& id : result.stages) {
+            StageResult s;
+            s.stage = id;
+            s.status = "not submitted";
+            s.message = "in the roster, but no submission folder";
+            st.stages.push_back(s);
+        }
+        result.students.push_back(std::move(st));
+    }
+    std::sort(result.students.begin(), result.students.end(),
+              [](const StudentResult& a, const StudentResult& b) { return a.name < b.name; });
+    return unlisted;
+}
+
+void matchMistakes(ClassResult& result) {
+    result.mistakes.clear();
+    for (const std::string& id : result.stages) {
+        const StageInfo& stage = findStage(id);
+        for (const CatalogMistake& m : stageMistakes(stage)) {
+            MistakeMatch match{m.stage, m.name, m.description, m.central, m.caughtBy, 0};
+            for (const StudentResult& st : result.students)
+                for (const StageResult& s : st.stages) {
+                    if (s.stage != id || s.status != "graded") continue;
+                    std::vector<std::string> failed;
+                    for (const CheckResult& c : s.checks)
+                        if (!c.passed && !c.seeded) failed.push_back(c.name);
+                    std::sort(failed.begin(), failed.end());
+                    if (failed == m.caughtBy) ++match.matches;
+                }
+            result.mistakes.push_back(std::move(match));
+        }
+    }
+}
+
+std::string pseudonym(const std::string& name, unsigned seed) {
+    // FNV-1a over the seed and the name: stable, and without the seed (kept
+    // secret) not worked back from a list of names.
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](unsigned char c) { h = (h ^ c) * 1099511628211ull; };
+    for (int i = 0; i < 4; ++i) mix((unsigned char)(seed >> (8 * i)));
+    for (char c : name) mix((unsigned char)c);
+    // splitmix64's finaliser: names that differ in one letter differ everywhere.
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    h ^= h >> 31;
+    char out[32];
+    std::snprintf(out, sizeof out, "student-%08x", unsigned(h >> 32));
+    return out;
+}
+
+}  // namespace raylab

@@ -1,0 +1,35 @@
+#pragma once
+// What `raylab grade` does with a graded class before it writes the reports:
+// the course's late policy, the roster, the class summary's catalogued
+// mistakes, pseudonyms. Each step works on the ClassResult only, so a
+// --merge of shares and a --only regrade finish the class the same way.
+#include "course_file.h"
+#include "grade_result.h"
+#include "submission_times.h"
+
+#include <map>
+#include <string>
+
+namespace raylab {
+
+// Takes each late stage's penalty from its score (StageResult::latePenalty,
+// lateNote). NAMEOF maps a result's name back to the folder the times are
+// kept under (the same unless the names are pseudonyms). Stages not graded
+// or without a time are left alone; a graded stage without a time is noted.
+void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const SubmissionTimes& times,
+                     const std::map<std::string, std::string>& folderOf);
+
+// Every student's roster entry; roster students without a folder are added
+// as not submitted. Returns the folders the roster does not list.
+std::vector<std::string> attachRoster(ClassResult& result,
+                                      const std::map<std::string, RosterEntry>& roster);
+
+// result.mistakes: per catalogued mistake of the graded stages, how many
+// graded stages failed exactly the checks it fails (seeded views aside).
+void matchMistakes(ClassResult& result);
+
+// A stable pseudonym for folder NAME under SEED ("student-3f9a2c1e"): the
+// same student gets the same one in every run with the same seed.
+std::string pseudonym(const std::string& name, unsigned seed);
+
+}  // namespace raylab

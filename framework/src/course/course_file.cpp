@@ -1,0 +1,178 @@
+#include "course_file.h"
+
+#include "error.h"
+#include "json_reader.h"
+#include "paths.h"
+
+#include <cmath>
+#include <ctime>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+std::optional<std::int64_t> LatePolicy::deadlineOf(const std::string& stage) const {
+    auto it = deadlines.find(stage);
+    if (it != deadlines.end()) return it->second;
+    return deadline;
+}
+
+int LatePolicy::daysLate(const std::string& stage, std::int64_t submitted) const {
+    const std::optional<std::int64_t> due = deadlineOf(stage);
+    if (!due) return 0;
+    const double late = double(submitted - *due) - graceMinutes * 60.0;
+    return late > 0.0 ? int(std::ceil(late / 86400.0)) : 0;
+}
+
+double LatePolicy::penaltyPercent(const std::string& stage, std::int64_t submitted) const {
+    return std::min(maxPenalty, penaltyPerDay * double(daysLate(stage, submitted)));
+}
+
+const StageGrading& CourseSettings::gradingOf(const StageInfo& stage) const {
+    auto it = grading.find(stage.id);
+    return it == grading.end() ? stage.grading : it->second;
+}
+
+namespace {
+
+int digits(const std::string& s, std::size_t at, std::size_t count, const std::string& what) {
+    if (at + count > s.size()) throw Error(what);
+    int v = 0;
+    for (std::size_t i = at; i < at + count; ++i) {
+        if (s[i] < '0' || s[i] > '9') throw Error(what);
+        v = v * 10 + (s[i] - '0');
+    }
+    return v;
+}
+
+}  // namespace
+
+std::int64_t parseIsoTime(const std::string& text, const std::string& where) {
+    const std::string what = where + ": '" + text +
+                             "' is not a time like 2026-12-10T23:59:00+01:00 (ISO 8601, with a "
+                             "zone: Z or +HH:MM)";
+    // YYYY-MM-DDTHH:MM[:SS](Z|+HH:MM|-HH:MM); a space may stand for the T.
+    if (text.size() < 17 || text[4] != '-' || text[7] != '-' || (text[10] != 'T' && text[10] != ' ') ||
+        text[13] != ':')
+        throw Error(what);
+    std::tm tm{};
+    tm.tm_year = digits(text, 0, 4, what) - 1900;
+    tm.tm_mon = digits(text, 5, 2, what) - 1;
+    tm.tm_mday = digits(text, 8, 2, what);
+    tm.tm_hour = digits(text, 11, 2, what);
+    tm.tm_min = digits(text, 14, 2, what);
+    std::size_t at = 16;
+    if (at < text.size() && text[at] == ':') {
+        tm.tm_sec = digits(text, at + 1, 2, what);
+        at += 3;
+        if (at < text.size() && text[at] == '.') {  // fractions of a second: ignored
+            ++at;
+            while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+        }
+    }
+    if (tm.tm_mon < 0 || tm.tm_mon > 11 || tm.tm_mday < 1 || tm.tm_mday > 31 || tm.tm_hour > 23 ||
+        tm.tm_min > 59 || tm.tm_sec > 60)
+        throw Error(what);
+    long offset = 0;
+    if (at < text.size() && (text[at] == 'Z' || text[at] == 'z') && at + 1 == text.size()) {
+        offset = 0;
+    } else if (at + 6 == text.size() && (text[at] == '+' || text[at] == '-') &&
+               text[at + 3] == ':') {
+        const long minutes = digits(text, at + 1, 2, what) * 60L + digits(text, at + 4, 2, what);
+        offset = (text[at] == '+' ? 1 : -1) * minutes * 60L;
+    } else {
+        throw Error(what);
+    }
+    const std::time_t utc = timegm(&tm);
+    // timegm normalises 31 February to 3 March: refuse dates that moved.
+    std::tm back{};
+    gmtime_r(&utc, &back);
+    if (back.tm_mday != tm.tm_mday || back.tm_mon != tm.tm_mon) throw Error(what);
+    return std::int64_t(utc) - offset;
+}
+
+std::string formatUtc(std::int64_t seconds) {
+    const std::time_t t = std::time_t(seconds);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[40];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &tm);
+    return buf;
+}
+
+CourseSettings readCourseFile(const fs::path& file) {
+    const std::string shown = displayPath(file);
+    const JsonReader r{shown};
+    const json doc = parseJsonFile(file, shown);
+    if (!doc.is_object()) r.fail("(top level)", "expected an object");
+    r.allowOnly(doc, "", {"stages", "late"});
+    CourseSettings c;
+    c.file = file;
+    if (doc.contains("stages")) {
+        const json& stages = doc["stages"];
+        if (!stages.is_object()) r.fail("stages", "expected an object of stage ids");
+        for (auto it = stages.begin(); it != stages.end(); ++it) {
+            if (it.key() == "comment") continue;
+            const std::string where = "stages." + it.key();
+            const StageInfo* stage = nullptr;
+            try {
+                stage = &findStage(it.key());
+            } catch (const Error& e) {
+                r.fail(where, e.what());
+            }
+            r.allowOnly(it.value(), where, {"grading"});
+            if (!it.value().contains("grading")) continue;
+            StageGrading g = readGrading(r, it.value()["grading"], where + ".grading",
+                                         stage->grading);
+            validateGrading(g, *stage, shown + ": " + where + ".grading");
+            c.grading[stage->id] = g;
+        }
+    }
+    if (doc.contains("late")) {
+        const json& late = doc["late"];
+        if (!late.is_object()) r.fail("late", "expected an object");
+        r.allowOnly(late, "late",
+                    {"deadline", "deadlines", "grace_minutes", "penalty_per_day", "max_penalty"});
+        LatePolicy p;
+        auto time = [&](const json& v, const std::string& where) {
+            return parseIsoTime(r.string(v, where), shown + ": " + where);
+        };
+        if (late.contains("deadline")) p.deadline = time(late["deadline"], "late.deadline");
+        if (late.contains("deadlines")) {
+            const json& d = late["deadlines"];
+            if (!d.is_object()) r.fail("late.deadlines", "expected an object of stage ids");
+            for (auto it = d.begin(); it != d.end(); ++it) {
+                if (it.key() == "comment") continue;
+                const std::string where = "late.deadlines." + it.key();
+                std::string id;
+                try {
+                    id = findStage(it.key()).id;
+                } catch (const Error& e) {
+                    r.fail(where, e.what());
+                }
+                p.deadlines[id] = time(it.value(), where);
+            }
+        }
+        auto percent = [&](const char* key, double fallback) {
+            if (!late.contains(key)) return fallback;
+            const json& v = late[key];
+            if (!v.is_number() || v.get<double>() < 0.0 || v.get<double>() > 100.0)
+                r.fail(std::string("late.") + key, "expected a percentage from 0 to 100");
+            return v.get<double>();
+        };
+        p.penaltyPerDay = percent("penalty_per_day", 0.0);
+        p.maxPenalty = percent("max_penalty", 100.0);
+        if (late.contains("grace_minutes")) {
+            const json& v = late["grace_minutes"];
+            if (!v.is_number() || v.get<double>() < 0.0 || v.get<double>() > 100000.0)
+                r.fail("late.grace_minutes", "expected minutes from 0 to 100000");
+            p.graceMinutes = v.get<double>();
+        }
+        if (!p.deadline && p.deadlines.empty())
+            r.fail("late", "a late policy needs a deadline (\"deadline\" or \"deadlines\")");
+        c.late = p;
+    }
+    return c;
+}
+
+}  // namespace raylab

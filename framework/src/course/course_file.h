@@ -1,0 +1,66 @@
+#pragma once
+// A course's own settings for grading (`raylab grade --course FILE`): the
+// stages' weights where the course wants others than stage.json's, and a late
+// policy. JSON, every key optional; unknown keys are errors (a typo must not
+// fall back to a default):
+//
+//   {
+//     "stages": {
+//       "03-shadows": {"grading": {"views": 40, "weights": {"lightVisible": 2}}}
+//     },
+//     "late": {
+//       "deadline": "2026-12-10T23:59:00+01:00",
+//       "deadlines": {"03-shadows": "2026-12-17T23:59:00+01:00"},
+//       "grace_minutes": 15,
+//       "penalty_per_day": 10,
+//       "max_penalty": 50
+//     }
+//   }
+//
+// "grading" is stage.json's (stage_grading.h), over the stage's own: what it
+// sets replaces, the rest stays. The late policy takes penalty_per_day percent
+// of a stage's points for every day or part of a day past its deadline (after
+// the grace minutes), at most max_penalty percent; a stage without a deadline
+// is never late. Times are ISO 8601 with a zone: "2026-12-10T23:59:00Z",
+// "2026-12-10T23:59+01:00".
+#include "stage_catalog.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace raylab {
+
+struct LatePolicy {
+    std::optional<std::int64_t> deadline;          // Unix seconds, every stage
+    std::map<std::string, std::int64_t> deadlines;  // stage id -> its own
+    double graceMinutes = 0;
+    double penaltyPerDay = 0;  // percent of the stage's points
+    double maxPenalty = 100;   // percent
+    std::optional<std::int64_t> deadlineOf(const std::string& stage) const;
+    // Whole days (or parts) past the deadline; 0 when on time or no deadline.
+    int daysLate(const std::string& stage, std::int64_t submitted) const;
+    // The percent of the points taken.
+    double penaltyPercent(const std::string& stage, std::int64_t submitted) const;
+};
+
+struct CourseSettings {
+    std::filesystem::path file;  // empty: no course file
+    std::map<std::string, StageGrading> grading;  // stage id -> the course's
+    std::optional<LatePolicy> late;
+    // The stage's grading: the course's where it sets one, else stage.json's.
+    const StageGrading& gradingOf(const StageInfo& stage) const;
+};
+
+// Throws Error("FILE: KEY: why").
+CourseSettings readCourseFile(const std::filesystem::path& file);
+
+// "2026-12-10T23:59:00+01:00" (seconds optional, "Z" or +-HH:MM required) ->
+// Unix seconds. Throws Error("WHERE: ...").
+std::int64_t parseIsoTime(const std::string& text, const std::string& where);
+// Unix seconds -> "2026-12-10 22:59 UTC".
+std::string formatUtc(std::int64_t seconds);
+
+}  // namespace raylab

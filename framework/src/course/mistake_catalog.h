@@ -1,0 +1,39 @@
+#pragma once
+// The mistakes catalogue of a stage (stage.json "mistakes": a folder of JSON
+// files, one typical mistake each, written as text replacements in a solved
+// lab). The tests grade every one of them; grading's class summary counts the
+// submissions whose failed checks are exactly a catalogued mistake's.
+//
+//   {"stage": "03-shadows", "mistake": "the shadow ray starts a fixed 1e-3 off
+//    the surface", "central": false, "file": "light_visibility.glsl",
+//    "replace": [["from", "to"]], "caught_by": ["lightVisible"]}
+//
+// "central": the mistake is the stage's skill (docs/grading.md: it must cost
+// at least 30 of the stage's 100 points; any other at least 5). "caught_by":
+// every check it fails, and only those (the check views and function and
+// count checks; seeded views are left out).
+#include "stage_catalog.h"
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace raylab {
+
+struct CatalogMistake {
+    std::filesystem::path file;  // the JSON file
+    std::string stage;
+    std::string name;  // the file's stem: "fixed-offset"
+    std::string description;
+    bool central = false;
+    std::string shaderFile;                                     // the lab file it changes
+    std::vector<std::pair<std::string, std::string>> replace;  // text replacements, in order
+    std::vector<std::string> caughtBy;                          // sorted
+};
+
+// The stage's catalogue, sorted by name; empty when its folder is missing.
+// Throws Error("FILE: KEY: why") on a malformed file.
+std::vector<CatalogMistake> stageMistakes(const StageInfo& stage);
+
+}  // namespace raylab

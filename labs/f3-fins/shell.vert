@@ -3,6 +3,7 @@
 #include "fur_uniforms.glsl"
 #include "lab_todo.glsl"
 #include "normal_matrix.glsl"
+#include "transform.glsl"
 #include "shell_layer.glsl"
 #include "shell_offset.glsl"
 
@@ -22,10 +23,10 @@ void main()
     // The offset is taken in world space, so that the fur keeps its length
     // however the model is scaled.
     vec3 normal = normalize(normalMatrix(uModel) * aNormal);
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vec4 world = toWorld(aPosition);
     world.xyz += shellOffset(normal, layer, uFurLength);
     vWorldPos = world.xyz;
-    gl_Position = uProjection * uView * world;
+    gl_Position = toClip(world);
     vNormal = normal;
     vUv = aUv;
     vLayer = layer;

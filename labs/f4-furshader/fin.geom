@@ -7,6 +7,7 @@ layout(lines_adjacency) in;
 layout(triangle_strip, max_vertices = 4) out;
 
 #include "fur_uniforms.glsl"
+#include "transform.glsl"
 #include "lab_todo.glsl"
 #include "silhouette.glsl"
 
@@ -23,7 +24,7 @@ flat out int gLabTodo;
 
 void corner(vec3 p, vec2 finUv, int vertex, float fade)
 {
-    gl_Position = uProjection * uView * vec4(p, 1.0);
+    gl_Position = toClip(vec4(p, 1.0));
     gFinUv = finUv;
     gSkinUv = vUv[vertex];
     gNormal = vNormal[vertex];

@@ -4,6 +4,7 @@
 #include "fur_uniforms.glsl"
 #include "lab_todo.glsl"
 #include "normal_matrix.glsl"
+#include "transform.glsl"
 
 layout(location = 0) in vec3 aPosition;  // object space
 layout(location = 1) in vec3 aNormal;    // object space, unit length
@@ -16,7 +17,7 @@ flat out int vLabTodo;
 
 void main()
 {
-    vWorldPos = (uModel * vec4(aPosition, 1.0)).xyz;
+    vWorldPos = toWorld(aPosition).xyz;
     vNormal = normalize(normalMatrix(uModel) * aNormal);
     vUv = aUv;
     vLabTodo = gLabTodoReached ? 1 : 0;

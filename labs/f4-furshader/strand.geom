@@ -11,6 +11,7 @@ layout(triangles) in;
 layout(line_strip, max_vertices = STRAND_MAX_VERTICES) out;
 
 #include "fur_uniforms.glsl"
+#include "transform.glsl"
 #include "lab_todo.glsl"
 #include "strand_point.glsl"
 
@@ -71,7 +72,7 @@ void main()
                                     uFurLength, uGravity);
             if (k < STRAND_SEGMENTS) tangent = next - p;
             gTangent = tangent;
-            gl_Position = uProjection * uView * vec4(p, 1.0);
+            gl_Position = toClip(vec4(p, 1.0));
             gWorldPos = p;
             gNormal = normal;
             gUv = uv;

@@ -3,6 +3,7 @@
 #include "fur_uniforms.glsl"
 #include "lab_todo.glsl"
 #include "normal_matrix.glsl"
+#include "transform.glsl"
 
 layout(location = 0) in vec3 aPosition;  // object space
 layout(location = 1) in vec3 aNormal;    // object space, unit length
@@ -15,19 +16,8 @@ flat out int vLabTodo;  // 1 when this vertex went through an unfinished TODO
 
 void main()
 {
-    // TODO(f1.a): place the vertex. uModel takes a point from object space
-    // to world space, uView from world space to the camera's, uProjection
-    // from the camera's to clip space. Set world (the point in world space)
-    // and gl_Position (clip space); a point is vec4(p, 1.0).
-    // Checked by: raylab check --stage f1 (all views).
-    //@solution
-    vec4 world = uModel * vec4(aPosition, 1.0);
-    gl_Position = uProjection * uView * world;
-    //@stub
-    //@ labTodo();
-    //@ vec4 world = vec4(aPosition, 1.0);
-    //@ gl_Position = vec4(0.5 * aPosition.xy, 0.0, 1.0);
-    //@end
+    vec4 world = toWorld(aPosition);
+    gl_Position = toClip(world);
     vWorldPos = world.xyz;
     vNormal = normalMatrix(uModel) * aNormal;
     vUv = aUv;

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdlib>
+#include <map>
 #include <fstream>
 #include <regex>
 
@@ -102,6 +104,54 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
         }
     }
     EXPECT_EQ(checked, 30 * int(raylab::allStages().size()));
+
+    // Fair scores (docs/grading.md): every catalogued mistake costs at least
+    // 5 of its stage's 100 points, one of the stage's skill ("central") at
+    // least 30; the table of what each costs is the one in docs/grading.md.
+    std::map<std::string, std::pair<double, bool>> lost;  // "stage | mistake" -> (points, central)
+    for (const auto& [student, stages] : expected.items()) {
+        if (!stages.contains("_mistakes")) continue;
+        for (const auto& file : stages["_mistakes"]) {
+            const json spec = json::parse(readFile(sourceDir() / file.get<std::string>()));
+            const std::string stage = spec["stage"];
+            const json result = json::parse(
+                readFile(dir / "out" / "students" / student / stage / "result.json"));
+            const double points = 100.0 - result["score"].get<double>();
+            const bool central = spec.value("central", false);
+            const std::string name = fs::path(file.get<std::string>()).stem().string();
+            lost[stage + " | " + name] = {points, central};
+            EXPECT_GE(points, central ? 30.0 : 5.0)
+                << student << " " << stage << " " << name << (central ? " (central)" : "");
+        }
+    }
+    std::size_t catalogued = 0;
+    for (const raylab::StageInfo& s : raylab::allStages())
+        for (const auto& e : fs::directory_iterator(sourceDir() / s.mistakes))
+            catalogued += e.path().extension() == ".json";
+    EXPECT_EQ(lost.size(), catalogued) << "every catalogued mistake is graded";
+    std::string table = "| stage | mistake | the stage's skill | points lost |\n| --- | --- | --- | --- |\n";
+    for (const auto& [key, value] : lost) {
+        char points[32];
+        std::snprintf(points, sizeof points, "%.1f", value.first);
+        table += "| " + key.substr(0, key.find(" | ")) + " | " + key.substr(key.find(" | ") + 3) +
+                 " | " + (value.second ? "yes" : "") + " | " + points + " |\n";
+    }
+    const fs::path doc = sourceDir() / "docs" / "grading.md";
+    const std::string text = readFile(doc);
+    const std::string open = "<!-- mistakes-table: GradeClass.ThirtySubmissionsScoreAsExpected -->\n",
+                      close = "<!-- /mistakes-table -->";
+    const std::size_t a = text.find(open), b = text.find(close);
+    ASSERT_TRUE(a != std::string::npos && b != std::string::npos) << doc;
+    const std::string documented = text.substr(a + open.size(), b - a - open.size());
+    if (std::getenv("RAYLAB_UPDATE_DOCS")) {
+        writeFile(doc, text.substr(0, a + open.size()) + table + text.substr(b));
+    } else {
+        EXPECT_EQ(documented, table)
+            << "docs/grading.md's table differs from what grading gives now; rerun this test "
+               "with RAYLAB_UPDATE_DOCS=1 to write it";
+    }
+    std::printf("[ figure   ] %zu catalogued mistakes graded, the table of docs/grading.md\n",
+                lost.size());
 
     // The broken submissions are explained in the report.
     const std::string html = readFile(dir / "out" / "report.html");

@@ -3,6 +3,10 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <zip.h>
+
+#include <cstdlib>
+#include <cstring>
 
 #include <algorithm>
 #include <functional>
@@ -58,62 +62,6 @@ TEST(ShaderCommand, RefusesAFurStage) {
     CommandResult r = runRaylab("shader --stage f2 --solution");
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("raylab shader"), std::string::npos) << r.err;
-}
-
-TEST(HandoutCommand, WritesTheReleasedStagesOnlyAndTheyRun) {
-    ScratchDir dir;
-    const fs::path out = dir / "week3";
-    CommandResult r = runRaylab("handout --stages 01-03 --out " + quote(out));
-    ASSERT_EQ(r.exitCode, 0) << r.all();
-    std::vector<std::string> top;
-    for (const auto& e : fs::directory_iterator(out)) top.push_back(e.path().filename().string());
-    std::sort(top.begin(), top.end());
-    EXPECT_EQ(top,
-              (std::vector<std::string>{"01-raycast", "02-shading", "03-shadows", "README.md"}));
-    // The same files as labs/, byte for byte.
-    for (const char* stage : {"01-raycast", "02-shading", "03-shadows"}) {
-        const fs::path lab = sourceDir() / "labs" / stage;
-        ASSERT_EQ(filesUnder(out / stage), filesUnder(lab)) << stage;
-        for (const std::string& f : filesUnder(lab))
-            EXPECT_EQ(readFile(out / stage / f), readFile(lab / f)) << stage << "/" << f;
-    }
-    EXPECT_NE(readFile(out / "README.md").find("03-shadows"), std::string::npos);
-    EXPECT_EQ(readFile(out / "README.md").find("04-recursion"), std::string::npos);
-    // A student can work in it as in labs/.
-    CommandResult render = runRaylab("render --stage 02 --lab " + quote(out) +
-                                     " --size 32x24 --out " + quote(dir / "a.png"));
-    EXPECT_EQ(render.exitCode, 0) << render.all();
-
-    CommandResult fur = runRaylab("handout --stages f1,f2 --out " + quote(dir / "fur"));
-    ASSERT_EQ(fur.exitCode, 0) << fur.all();
-    EXPECT_TRUE(fs::is_directory(dir / "fur" / "f2-shells"));
-    EXPECT_FALSE(fs::exists(dir / "fur" / "f3-fins"));
-}
-
-TEST(HandoutCommand, BadRequestsWriteNothing) {
-    ScratchDir dir;
-    writeFile(dir / "taken" / "notes.txt", "mine");
-    const struct {
-        std::string args;
-        const char* expected;
-    } cases[] = {
-        {"--stages 01-f2 --out " + quote(dir / "a"), "different tracks"},
-        {"--stages 03-01 --out " + quote(dir / "b"), "comes after"},
-        {"--stages 42 --out " + quote(dir / "c"), "unknown stage"},
-        {"--stages 01 --out " + quote(dir / "taken"), "not an empty folder"},
-        {"--stages 01 --out " + quote(dir / "d") + " --labs " + quote(dir / "nolabs"),
-         "does not exist"},
-    };
-    for (const auto& c : cases) {
-        CommandResult r = runRaylab("handout " + c.args);
-        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.all();
-        EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
-    }
-    std::vector<std::string> left;
-    for (const auto& e : fs::directory_iterator(dir.path()))
-        left.push_back(e.path().filename().string());
-    EXPECT_EQ(left, std::vector<std::string>{"taken"});
-    EXPECT_EQ(readFile(dir / "taken" / "notes.txt"), "mine");
 }
 
 namespace {
@@ -189,8 +137,75 @@ TEST(PrairieLearn, GradesSolvedUntouchedBrokenAndEmptySubmissions) {
     EXPECT_FALSE(empty["gradable"].get<bool>()) << "no attempt is used up";
     EXPECT_EQ(empty["format_errors"][0].get<std::string>(), "nothing was submitted");
 
-    // A zip of the labs folder: one extra top folder around the stage folders.
-    nlohmann::json zipped = gradeForPrairieLearn(
-        dir, "zipped", [&](const fs::path& s) { writeSolvedLabs(s / "my-labs"); });
-    EXPECT_DOUBLE_EQ(zipped["score"].get<double>(), 1.0);
+    // The labs folder as uploaded folders: one extra top folder around the stage folders.
+    nlohmann::json folders = gradeForPrairieLearn(
+        dir, "folders", [&](const fs::path& s) { writeSolvedLabs(s / "my-labs"); });
+    EXPECT_DOUBLE_EQ(folders["score"].get<double>(), 1.0);
+}
+
+namespace {
+
+// A zip of ENTRIES (name -> content) written with libzip, names as given
+// (so that a hostile one such as "../x" can be made).
+void writeZip(const fs::path& file, const std::vector<std::pair<std::string, std::string>>& entries) {
+    int err = 0;
+    zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
+    ASSERT_NE(z, nullptr);
+    for (const auto& [name, text] : entries) {
+        char* copy = static_cast<char*>(malloc(text.size() + 1));
+        memcpy(copy, text.data(), text.size());
+        zip_source_t* src = zip_source_buffer(z, copy, text.size(), 1);
+        ASSERT_GE(zip_file_add(z, name.c_str(), src, ZIP_FL_ENC_UTF_8), 0) << name;
+    }
+    ASSERT_EQ(zip_close(z), 0);
+}
+
+}  // namespace
+
+// PrairieLearn keeps an uploaded zip as a file: it is unpacked and graded like
+// the folders in it; a zip that would write outside the upload is refused.
+TEST(PrairieLearn, AZipUploadIsUnpackedAndAHostileOneRefused) {
+    ScratchDir dir;
+    ScratchDir labs;
+    writeSolvedLabs(labs / "my-labs");
+    nlohmann::json zipped = gradeForPrairieLearn(dir, "zipped", [&](const fs::path& s) {
+        CommandResult z = runCommand("cd " + quote(labs.path()) + " && zip -qr " +
+                                     quote(s / "labs.zip") + " my-labs");
+        ASSERT_EQ(z.exitCode, 0) << z.all();
+    });
+    EXPECT_TRUE(zipped["gradable"].get<bool>()) << zipped.dump();
+    EXPECT_DOUBLE_EQ(zipped["score"].get<double>(), 1.0) << zipped.dump();
+    EXPECT_NE(zipped["output"].get<std::string>().find("labs.zip: unpacked"), std::string::npos);
+
+    // Loose shader files in a zip: one stage's, over the lab's own files.
+    nlohmann::json loose = gradeForPrairieLearn(dir, "loose-zip", [&](const fs::path& s) {
+        std::vector<std::pair<std::string, std::string>> files;
+        for (const char* f : {"intersect_sphere.glsl", "find_closest.glsl"})
+            files.emplace_back(f, readFile(labs / "my-labs" / "01-raycast" / f));
+        writeZip(s / "mine.zip", files);
+    });
+    EXPECT_DOUBLE_EQ(loose["score"].get<double>(), 1.0) << loose.dump();
+
+    nlohmann::json hostile = gradeForPrairieLearn(dir, "hostile", [&](const fs::path& s) {
+        writeZip(s / "evil.zip", {{"01-raycast/intersect_sphere.glsl", "x"},
+                                  {"../../escaped.glsl", "x"}});
+    });
+    EXPECT_FALSE(hostile["gradable"].get<bool>());
+    EXPECT_NE(hostile["message"].get<std::string>().find("outside the upload"), std::string::npos)
+        << hostile.dump();
+    EXPECT_FALSE(fs::exists(dir / "escaped.glsl"));
+    EXPECT_FALSE(fs::exists(dir / "hostile" / "escaped.glsl"));
+
+    nlohmann::json damaged = gradeForPrairieLearn(dir, "damaged", [&](const fs::path& s) {
+        writeFile(s / "labs.zip", "PK\x03\x04 not really a zip");
+    });
+    EXPECT_FALSE(damaged["gradable"].get<bool>());
+    EXPECT_NE(damaged["message"].get<std::string>().find("labs.zip: not a readable zip"),
+              std::string::npos)
+        << damaged.dump();
+
+    // The question's upload element takes any number of the patterns (none required).
+    const std::string question = readFile(sourceDir() / "examples/prairielearn/question.html");
+    EXPECT_NE(question.find("optional-file-patterns=\""), std::string::npos);
+    EXPECT_EQ(question.find(" file-patterns="), std::string::npos);
 }

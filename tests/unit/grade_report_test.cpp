@@ -203,9 +203,63 @@ TEST(GradeReport, WriteGradescopeResultsWritesTheJson) {
 
 TEST(GradeReport, SummaryCsvHasHeaderNumbersNotesAndRfc4180Quoting) {
     std::string csv = summaryCsv(sampleClass());
-    EXPECT_EQ(csv, "student,01-raycast,04-recursion,total,max,notes\r\n"
-                   "\"Doe, \"\"Jo\"\"\",70,0,70,200,04-recursion: compile error\r\n"
-                   "<script>x</script>,0,83.33,83.33,200,01-raycast: not submitted\r\n");
+    EXPECT_EQ(csv, "student,id,01-raycast,04-recursion,total,max,notes\r\n"
+                   "\"Doe, \"\"Jo\"\"\",,70,0,70,200,04-recursion: compile error\r\n"
+                   "<script>x</script>,,,83.33,83.33,200,01-raycast: not submitted\r\n");
+}
+
+// An LMS tells "not submitted" from 0 by an empty cell; the roster's id and a
+// late penalty's note go with it.
+TEST(GradeReport, SummaryCsvHasIdsLeavesNotSubmittedEmptyAndNotesLateness) {
+    ClassResult r = sampleClass();
+    r.students[0].roster.id = "s0042";
+    r.students[0].stages[0].latePenalty = 7;
+    r.students[0].stages[0].score = 63;
+    r.students[0].stages[0].lateNote = "submitted 2026-12-12 09:10 UTC, 1 day late: -10%";
+    StudentResult ghost;
+    ghost.name = "ghost";
+    ghost.hasFolder = false;
+    ghost.roster.id = "s0099";
+    for (const std::string& id : r.stages) ghost.stages.push_back(stage(id, "not submitted", 0));
+    r.students.push_back(ghost);
+    const std::string csv = summaryCsv(r);
+    EXPECT_NE(csv.find("\"Doe, \"\"Jo\"\"\",s0042,63,0,63,200,\"01-raycast: submitted 2026-12-12 "
+                       "09:10 UTC, 1 day late: -10%; 04-recursion: compile error\"\r\n"),
+              std::string::npos)
+        << csv;
+    EXPECT_NE(csv.find("ghost,s0099,,,0,200,no submission folder\r\n"), std::string::npos) << csv;
+}
+
+TEST(GradeReport, CanvasCsvHasCanvasColumnsPointsPossibleAndOnlyMatchableStudents) {
+    ClassResult r = sampleClass();
+    r.students[0].roster = {"s0042", "Doe, Jo", "1234", "jdoe", "Mon 10:00"};
+    const std::string csv = canvasCsv(r, "RayLab ");
+    EXPECT_EQ(csv, "Student,ID,SIS User ID,SIS Login ID,Section,RayLab 01-raycast,RayLab "
+                   "04-recursion\r\n"
+                   "Points Possible,,,,,100,100\r\n"
+                   "\"Doe, Jo\",1234,s0042,jdoe,Mon 10:00,70,0\r\n")
+        << "the second student has no id Canvas can match: left out";
+    r.students[0].roster = {};
+    EXPECT_THROW(canvasCsv(r, "RayLab "), Error);
+}
+
+TEST(GradeReport, HtmlOpensWithTheClassSummary) {
+    ClassResult r = sampleClass();
+    r.mistakes.push_back({"04-recursion", "stack-never-popped", "the path ends without popping",
+                          true, {"bounce", "reflect"}, 1});
+    r.mistakes.push_back({"01-raycast", "far-root", "takes the far root", true, {"front"}, 0});
+    const std::string html = htmlReport(r);
+    const std::size_t summary = html.find("Checks that fail most");
+    ASSERT_NE(summary, std::string::npos);
+    EXPECT_LT(summary, html.find("class=\"summary\"><thead><tr><th>Student"))
+        << "the class summary comes before the class table";
+    EXPECT_NE(html.find("<td>04-recursion</td><td>reflect</td><td class=\"muted\">image</td>"
+                        "<td class=\"num\">1 of 1</td>"),
+              std::string::npos)
+        << html;
+    EXPECT_NE(html.find("the path ends without popping"), std::string::npos);
+    EXPECT_EQ(html.find("takes the far root"), std::string::npos) << "no stage matched it";
+    expectEscapedMarkup(html);
 }
 
 TEST(GradeReport, SummaryCsvDefusesFormulasAndMarksMissingStages) {
@@ -213,7 +267,7 @@ TEST(GradeReport, SummaryCsvDefusesFormulasAndMarksMissingStages) {
     r.students[1].name = "=HYPERLINK(\"http://x\",\"y\")";
     r.students[1].stages.pop_back();  // no result for 04-recursion
     std::string csv = summaryCsv(r);
-    EXPECT_NE(csv.find("\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\",0,,0,100,01-raycast: not "
+    EXPECT_NE(csv.find("\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\",,,,0,100,01-raycast: not "
                        "submitted; 04-recursion: no result\r\n"),
               std::string::npos)
         << csv;

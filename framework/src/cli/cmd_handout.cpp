@@ -7,6 +7,7 @@
 // at all (written beside it, then renamed).
 #include "atomic_file.h"
 #include "command.h"
+#include "course_file.h"
 #include "error.h"
 #include "handout.h"
 #include "paths.h"
@@ -58,9 +59,11 @@ fs::path outFolder(const std::string& outDir) {
 }
 
 int cmdHandout(const std::string& list, const std::string& outDir, const std::string& labDir,
-               const std::string& carryName) {
+               const std::string& carryName, const std::string& courseFile) {
     if (outDir.empty()) throw Error("--out DIR is required");
     const Carry carry = parseCarry(carryName);
+    // The guides' "How you are graded" with the course's weights.
+    const CourseSettings course = courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
     const std::vector<HandoutStage> plan = planHandout(parseStageList(list), carry);
     const fs::path labs = labDir.empty() ? defaultLabRoot() : fs::path(labDir);
     const fs::path out = outFolder(outDir);
@@ -93,8 +96,10 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
             }
             for (const std::string& name : h.files()) fs::copy_file(from / name, to / name);
             if (fs::is_regular_file(from / "README.md", ec))
-                writeTextFileAtomic(to / "README.md",
-                                    handoutGuide(readTextFile(from / "README.md"), h));
+                writeTextFileAtomic(
+                    to / "README.md",
+                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h),
+                                       *h.stage, course.gradingOf(*h.stage)));
         }
         writeTextFileAtomic(temp / "README.md", readme(plan));
         if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above
@@ -131,6 +136,7 @@ Command handoutCommand() {
                 auto out = std::make_shared<std::string>();
                 auto labs = std::make_shared<std::string>();
                 auto carry = std::make_shared<std::string>("own");
+                auto course = std::make_shared<std::string>();
                 cmd.add_option("--stages", *stages,
                                "the released stages: a range within a track (01-03, f1-f2), a "
                                "list (01,02,f1), both (01-03,f1) or all")
@@ -142,8 +148,10 @@ Command handoutCommand() {
                                "the student's own folders) or solved (put in, solved: for a "
                                "course that releases a stage's solution after its deadline)")
                     ->capture_default_str();
+                cmd.add_option("--course", *course,
+                               "a course file (docs/grading.md): the guides show its weights");
                 return std::function<int()>(
-                    [=] { return cmdHandout(*stages, *out, *labs, *carry); });
+                    [=] { return cmdHandout(*stages, *out, *labs, *carry, *course); });
             }};
 }
 

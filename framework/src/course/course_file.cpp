@@ -83,11 +83,10 @@ std::int64_t parseIsoTime(const std::string& text, const std::string& where) {
     } else {
         throw Error(what);
     }
+    // timegm normalises 30 February to 2 March (in TM too): refuse dates that move.
+    const int day = tm.tm_mday, month = tm.tm_mon;
     const std::time_t utc = timegm(&tm);
-    // timegm normalises 31 February to 3 March: refuse dates that moved.
-    std::tm back{};
-    gmtime_r(&utc, &back);
-    if (back.tm_mday != tm.tm_mday || back.tm_mon != tm.tm_mon) throw Error(what);
+    if (tm.tm_mday != day || tm.tm_mon != month) throw Error(what);
     return std::int64_t(utc) - offset;
 }
 

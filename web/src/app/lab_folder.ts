@@ -1,6 +1,7 @@
 // A student's lab opened from disk: their whole labs/ folder (one
-// sub-folder per stage) or one stage folder. Only shader files are read;
-// nothing is uploaded anywhere.
+// sub-folder per stage; a handout's stage folder holds only its own files and
+// reads the stages it builds on from the folders beside it, as natively) or
+// one stage folder. Only shader files are read; nothing is uploaded anywhere.
 //  - Where the browser offers the File System Access API (Chrome, Edge), the
 //    folder stays open and is watched: saving a file reloads the stage, as
 //    the native window does.
@@ -27,20 +28,25 @@ function stageFolder(root: string, subfolders: string[], stageId: string, stageI
   return 'root';
 }
 
-export async function labFromFiles(files: FileList | File[], stageId: string, stageIds: string[]): Promise<Sources> {
+// STAGEID's files; in a labs/ folder also those of the stages it builds on
+// (EARLIER, newest first) that its own folder lacks: a file of a later stage
+// replaces an earlier one of the same name.
+export async function labFromFiles(files: FileList | File[], stageId: string, stageIds: string[],
+                                   earlier: string[] = []): Promise<Sources> {
   const list = Array.from(files);
   if (list.length === 0) throw new Error('the folder is empty');
   const root = (list[0]!.webkitRelativePath || list[0]!.name).split('/')[0]!;
   const byPath = new Map(list.map((f) => [f.webkitRelativePath || f.name, f]));
   const subfolders = [...new Set([...byPath.keys()].map((p) => p.split('/')).filter((p) => p.length > 2).map((p) => p[1]!))];
   const nested = stageFolder(root, subfolders, stageId, stageIds) === 'nested';
-  const prefix = nested ? `${root}/${stageId}/` : `${root}/`;
+  const folders = nested ? [stageId, ...earlier.filter((id) => subfolders.includes(id))].map((id) => `${root}/${id}/`) : [`${root}/`];
   const texts = new Map<string, string>();
-  for (const [path, file] of byPath) {
-    if (!path.startsWith(prefix)) continue;
-    const name = path.slice(prefix.length);
-    if (!name.includes('/') && SHADER.test(name)) texts.set(name, await file.text());
-  }
+  for (const prefix of folders)
+    for (const [path, file] of byPath) {
+      if (!path.startsWith(prefix)) continue;
+      const name = path.slice(prefix.length);
+      if (!name.includes('/') && SHADER.test(name) && !texts.has(name)) texts.set(name, await file.text());
+    }
   if (texts.size === 0) throw noShaders(root, stageId);
   return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: texts };
 }
@@ -72,17 +78,33 @@ export class WatchedLab {
     return { dir: this.root, shown: this.root.name };
   }
 
-  private async shaderFiles(stageId: string): Promise<{ shown: string; files: [string, File][] }> {
+  // The stage's shader files; in a labs/ folder also the earlier stages'
+  // (EARLIER, newest first) its own folder lacks.
+  private async shaderFiles(stageId: string, earlier: string[] = []): Promise<{ shown: string; files: [string, File][] }> {
     const { dir, shown } = await this.folder(stageId);
+    const dirs = [dir];
+    if (dir !== this.root)
+      for (const id of earlier) {
+        try {
+          dirs.push(await this.root.getDirectoryHandle(id));
+        } catch {
+          // not there: the stage's own folder may hold the file
+        }
+      }
     const files: [string, File][] = [];
-    for await (const [name, handle] of (dir as unknown as AsyncIterable<[string, FileSystemHandle]>))
-      if (handle.kind === 'file' && SHADER.test(name)) files.push([name, await (handle as FileSystemFileHandle).getFile()]);
+    const seen = new Set<string>();
+    for (const d of dirs)
+      for await (const [name, handle] of (d as unknown as AsyncIterable<[string, FileSystemHandle]>))
+        if (handle.kind === 'file' && SHADER.test(name) && !seen.has(name)) {
+          seen.add(name);
+          files.push([name, await (handle as FileSystemFileHandle).getFile()]);
+        }
     files.sort(([a], [b]) => (a < b ? -1 : 1));
     return { shown, files };
   }
 
-  async read(stageId: string): Promise<Sources> {
-    const { shown, files } = await this.shaderFiles(stageId);
+  async read(stageId: string, earlier: string[] = []): Promise<Sources> {
+    const { shown, files } = await this.shaderFiles(stageId, earlier);
     if (files.length === 0) throw noShaders(this.root.name, stageId);
     this.stamps = files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|');
     this.readStage = stageId;
@@ -93,9 +115,9 @@ export class WatchedLab {
 
   // True when a shader file of STAGEID was added, removed or saved since
   // read() read that stage (false while another stage's files were read last).
-  async changed(stageId: string): Promise<boolean> {
+  async changed(stageId: string, earlier: string[] = []): Promise<boolean> {
     if (stageId !== this.readStage) return false;
-    const { files } = await this.shaderFiles(stageId);
+    const { files } = await this.shaderFiles(stageId, earlier);
     return files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|') !== this.stamps;
   }
 }

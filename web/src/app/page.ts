@@ -5,7 +5,7 @@
 import { Camera, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
 import { canWatchFolders, labFromFiles, WatchedLab } from './lab_folder.js';
-import { type Catalog, type Sources, type StageJson, stageById } from '../course/catalog.js';
+import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
 import { defaultSettings, type RenderSettings } from '../raytrace/render_settings.js';
 import { applySettingsKey, settingsRows } from './settings_keys.js';
 import { loadStage } from '../tracks/track_registry.js';
@@ -94,6 +94,11 @@ export class Page {
     this.schedule();
   }
 
+  // The stages STAGE builds on, newest first: a handout's stage folder reads their files.
+  private earlierStages(stage: StageJson): string[] {
+    return chain(this.catalog, stage).slice(1).map((s) => s.id);
+  }
+
   private stageIds(): string[] {
     return this.catalog.stages.map((s) => s.info.id);
   }
@@ -131,8 +136,8 @@ export class Page {
   private async sources(): Promise<Sources> {
     const kind = $<HTMLSelectElement>('source').value;
     if (kind !== 'disk') return { kind: kind === 'lab' ? 'lab' : 'solution' };
-    if (this.watched) return this.watched.read(this.stage().id);
-    if (this.picked) return labFromFiles(this.picked, this.stage().id, this.stageIds());
+    if (this.watched) return this.watched.read(this.stage().id, this.earlierStages(this.stage()));
+    if (this.picked) return labFromFiles(this.picked, this.stage().id, this.stageIds(), this.earlierStages(this.stage()));
     throw new Error('pick your lab folder (Code: my lab folder…)');
   }
 
@@ -141,7 +146,8 @@ export class Page {
     if (!this.watched || this.checking || this.busy || $<HTMLSelectElement>('source').value !== 'disk') return;
     this.checking = true;
     try {
-      if (await this.watched.changed((this.shown ?? this.stage()).id)) await this.load(true);
+      const stage = this.shown ?? this.stage();
+      if (await this.watched.changed(stage.id, this.earlierStages(stage))) await this.load(true);
     } catch (e) {
       // The folder went away or permission was withdrawn: stop watching it.
       // Anything else (a file caught mid-save) is tried again next second.

@@ -11,6 +11,31 @@
 
 using namespace raylab;
 
+namespace {
+
+// A path option's value that looks like an option ("--out --weird") is
+// refused: it is a forgotten value far more often than a file named so.
+void refuseOptionLookingPaths(const CLI::App& cmd) {
+    static const char* const kPathOptions[] = {
+        "--out",    "--submissions", "--lab",       "--labs",    "--scene",
+        "--course", "--roster",      "--submitted", "--against", "--save",
+        "--known",  "--root",        "--config",    "--merge",   "--heat-map"};
+    for (const char* name : kPathOptions) {
+        const CLI::Option* option = nullptr;
+        try {
+            option = cmd.get_option(name);
+        } catch (const CLI::OptionNotFound&) { continue; }
+        for (const std::string& value : option->results())
+            if (!value.empty() && value[0] == '-')
+                throw raylab::Error(std::string(name) + " '" + value +
+                                    "': looks like an option, not a path (a path may not start "
+                                    "with '-'; write ./" +
+                                    value + " for one that does)");
+    }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     rememberProgramArguments(argc, argv);
     CLI::App app{
@@ -40,7 +65,10 @@ int main(int argc, char** argv) {
             return 2;
         }
         for (const auto& [cmd, run] : runners)
-            if (cmd->parsed()) return run();
+            if (cmd->parsed()) {
+                refuseOptionLookingPaths(*cmd);
+                return run();
+            }
     } catch (const ShaderError& e) {
         std::fputs(e.log().c_str(), stderr);
         std::fprintf(stderr, "raylab: error: shader does not compile: %s\n", e.what());

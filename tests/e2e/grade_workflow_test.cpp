@@ -1,0 +1,185 @@
+// A course's everyday grading on a small class (stages 01 and 02): a roster
+// and Canvas's import, a late policy from a course file, a regrade of one
+// student into the existing report, anonymised reports for TAs, and the class
+// summary's catalogued mistakes. Each also fails on a wrong input.
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+using namespace raylab::test;
+using nlohmann::json;
+
+namespace {
+
+// alice solved 01 and 02; bob solved 01 and made a catalogued mistake in 02
+// (Phong's reflected vector); carol handed in 01 only, solved.
+void writeClass(const fs::path& solved, const fs::path& cls) {
+    for (const char* student : {"alice", "bob", "carol"})
+        for (const char* stage : {"01-raycast", "02-shading"}) {
+            if (std::string(student) == "carol" && std::string(stage) == "02-shading") continue;
+            fs::create_directories(cls / student);
+            fs::copy(solved / stage, cls / student / stage, fs::copy_options::recursive);
+        }
+    const json mistake = json::parse(
+        readFile(sourceDir() / "tests/mistakes/02-shading/phong-instead-of-blinn.json"));
+    for (const auto& pair : mistake["replace"])
+        replaceInFile(cls / "bob" / "02-shading" / mistake["file"].get<std::string>(), pair[0],
+                      pair[1]);
+}
+
+std::string grade(const fs::path& dir, const std::string& args) {
+    CommandResult r =
+        runCommand("cd " + quote(dir) + " && " + quote(raylabExe()) +
+                   " grade --submissions class --stages 01-02 --jobs 2 --seed 3 " + args);
+    EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.all();
+    return r.all();
+}
+
+std::string row(const std::string& csv, const std::string& student) {
+    const std::size_t at = csv.find("\n" + student + ",");
+    if (at == std::string::npos) return "";
+    return csv.substr(at + 1, csv.find("\r\n", at + 1) - at - 1);
+}
+
+}  // namespace
+
+TEST(GradeWorkflow, RosterLatePolicyCanvasAndTheClassSummary) {
+    ScratchDir dir, solved;
+    writeSolvedLabs(solved.path());
+    writeClass(solved.path(), dir / "class");
+    writeFile(dir / "roster.csv", "student,id,name,canvas_id,login_id,section\n"
+                                  "alice,s1,\"Liddell, Alice\",101,alice1,A\n"
+                                  "bob,s2,\"Builder, Bob\",102,bob2,A\n"
+                                  "dave,s4,\"Bowman, Dave\",104,dave4,B\n");
+    writeFile(dir / "course.json", R"({"late": {"deadline": "2026-12-01T12:00:00Z",
+        "penalty_per_day": 10, "max_penalty": 30}})");
+    writeFile(dir / "times.csv", "student,submitted,stage\n"
+                                 "alice,2026-12-01T11:00:00Z,\n"
+                                 "bob,2026-12-01T11:00:00Z,\n"
+                                 "bob,2026-12-03T09:00:00Z,02\n"
+                                 "carol,2026-12-30T09:00:00Z,\n");
+    grade(dir.path(), "--out graded --roster roster.csv --course course.json --submitted "
+                      "times.csv --lms canvas");
+    const std::string csv = readFile(dir / "graded/summary.csv");
+    EXPECT_EQ(csv.rfind("student,id,01-raycast,02-shading,total,max,notes\r\n", 0), 0u) << csv;
+    EXPECT_EQ(row(csv, "alice"), "alice,s1,100,100,200,200,") << csv;
+    // bob: 02 two days late (a part of a day counts), 20% of what it earned.
+    const std::string bob = row(csv, "bob");
+    EXPECT_NE(bob.find("02-shading: submitted 2026-12-03 09:00 UTC, 2 days late: -20%"),
+              std::string::npos)
+        << bob;
+    // carol: 29 days late, capped at 30%; 02 not submitted is an empty cell, not 0.
+    EXPECT_EQ(row(csv, "carol").rfind("carol,,70,,70,200,", 0), 0u) << csv;
+    EXPECT_EQ(row(csv, "dave").rfind("dave,s4,,,0,200,no submission folder", 0), 0u) << csv;
+
+    const std::string canvas = readFile(dir / "graded/canvas.csv");
+    EXPECT_EQ(canvas.rfind("Student,ID,SIS User ID,SIS Login ID,Section,RayLab 01-raycast,RayLab "
+                           "02-shading\r\nPoints Possible,,,,,100,100\r\n",
+                           0),
+              0u)
+        << canvas;
+    EXPECT_NE(canvas.find("\"Liddell, Alice\",101,s1,alice1,A,100,100\r\n"), std::string::npos);
+    EXPECT_NE(canvas.find("\"Bowman, Dave\",104,s4,dave4,B,,\r\n"), std::string::npos);
+    EXPECT_EQ(canvas.find("carol"), std::string::npos) << "no id Canvas could match";
+
+    // The class summary: the checks that fail most, bob's catalogued mistake.
+    const std::string html = readFile(dir / "graded/report.html");
+    EXPECT_NE(html.find("Checks that fail most"), std::string::npos);
+    EXPECT_NE(html.find("Phong&#39;s reflected vector instead of the half vector"),
+              std::string::npos)
+        << "bob's failures are exactly the catalogued mistake's";
+    EXPECT_NE(html.find("before the late penalty"), std::string::npos) << "raw and final shown";
+}
+
+TEST(GradeWorkflow, OnlyRegradesOneStudentIntoTheReport) {
+    ScratchDir dir, solved;
+    writeSolvedLabs(solved.path());
+    writeClass(solved.path(), dir / "class");
+    grade(dir.path(), "--out graded");
+    const std::string aliceBefore = readFile(dir / "graded/students/alice/01-raycast/result.json");
+    const std::string bobBefore = readFile(dir / "graded/students/bob/02-shading/result.json");
+    const std::string carolBefore = readFile(dir / "graded/students/carol/01-raycast/result.json");
+    EXPECT_EQ(row(readFile(dir / "graded/summary.csv"), "alice").substr(0, 19),
+              "alice,,100,100,200,");
+
+    // alice hands in a fix that breaks 01: regrade her alone.
+    replaceInFile(dir / "class/alice/01-raycast/find_closest.glsl", "t < hit.t", "t > hit.t");
+    const std::string out = grade(dir.path(), "--out graded --only alice");
+    EXPECT_NE(out.find("1 student x 2 stages"), std::string::npos) << out;
+    EXPECT_NE(readFile(dir / "graded/students/alice/01-raycast/result.json"), aliceBefore);
+    EXPECT_EQ(readFile(dir / "graded/students/bob/02-shading/result.json"), bobBefore);
+    EXPECT_EQ(readFile(dir / "graded/students/carol/01-raycast/result.json"), carolBefore);
+    const std::string csv = readFile(dir / "graded/summary.csv");
+    EXPECT_EQ(row(csv, "alice").find("alice,,100,"), std::string::npos) << csv;
+    EXPECT_FALSE(row(csv, "bob").empty() || row(csv, "carol").empty()) << csv;
+
+    // Refused: another seed, a student with no folder, a folder never graded.
+    for (const std::string& args :
+         {std::string("--out graded --only alice --seed 4"), std::string("--out graded --only zed"),
+          std::string("--out elsewhere --only alice")}) {
+        CommandResult r = runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
+                                     " grade --submissions class --jobs 2 --seed 3 " + args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.all();
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "elsewhere/report.html"));
+}
+
+TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
+    ScratchDir dir, solved;
+    writeSolvedLabs(solved.path());
+    writeClass(solved.path(), dir / "class");
+    // A compile error, so that a message names the student's file.
+    replaceInFile(dir / "class/carol/01-raycast/intersect_sphere.glsl", "    return",
+                  "    float = 1.0;\n    return");
+    grade(dir.path(), "--out tas --anonymise");
+    int files = 0;
+    for (const std::string& f : filesUnder(dir / "tas")) {
+        ++files;
+        const std::string text = readFile(dir / "tas" / f);
+        for (const char* name : {"alice", "bob/", "carol"}) {
+            EXPECT_EQ(f.find(name), std::string::npos) << f;
+            EXPECT_EQ(text.find(name), std::string::npos) << name << " in " << f;
+        }
+    }
+    EXPECT_GT(files, 20);
+    EXPECT_NE(readFile(dir / "tas/report.html").find("01-raycast/intersect_sphere.glsl:"),
+              std::string::npos)
+        << "the compile error still names the file";
+    EXPECT_NE(readFile(dir / "tas/summary.csv").find("student-"), std::string::npos);
+    // The same seed gives the same pseudonyms.
+    grade(dir.path(), "--out tas2 --anonymise");
+    EXPECT_EQ(readFile(dir / "tas/summary.csv"), readFile(dir / "tas2/summary.csv"));
+    // The control: without --anonymise the names are there, the message's too.
+    grade(dir.path(), "--out named");
+    EXPECT_NE(readFile(dir / "named/report.html").find("carol/01-raycast/intersect_sphere.glsl:"),
+              std::string::npos);
+}
+
+TEST(GradeWorkflow, BadCourseInputIsOneLineAndWritesNothing) {
+    ScratchDir dir;
+    fs::create_directories(dir / "class/alice/01-raycast");
+    writeFile(dir / "bad-course.json", R"({"late": {"deadline": "soon"}})");
+    writeFile(dir / "bad-roster.csv", "name,id\nx,1\n");
+    const struct {
+        std::string args;
+        const char* expected;
+    } cases[] = {
+        {"--lms canvas", "--lms canvas needs --roster"},
+        {"--course bad-course.json", "late.deadline: 'soon' is not a time"},
+        {"--roster bad-roster.csv", "no 'student' column"},
+        {"--anonymise --roster bad-roster.csv", "--anonymise cannot go with --roster"},
+        {"--submitted nowhere.csv --course bad-course.json", "not a time"},
+        {"--lms moodle --roster bad-roster.csv", "--lms"},
+    };
+    for (const auto& c : cases) {
+        CommandResult r = runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
+                                     " grade --submissions class --out out " + c.args);
+        EXPECT_NE(r.exitCode, 0) << c.args << "\n" << r.all();
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(dir / "out")) << c.args;
+    }
+}

@@ -14,8 +14,8 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <map>
 #include <fstream>
+#include <map>
 #include <regex>
 
 using namespace raylab::test;
@@ -114,8 +114,8 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
         for (const auto& file : stages["_mistakes"]) {
             const json spec = json::parse(readFile(sourceDir() / file.get<std::string>()));
             const std::string stage = spec["stage"];
-            const json result = json::parse(
-                readFile(dir / "out" / "students" / student / stage / "result.json"));
+            const json result =
+                json::parse(readFile(dir / "out" / "students" / student / stage / "result.json"));
             const double points = 100.0 - result["score"].get<double>();
             const bool central = spec.value("central", false);
             const std::string name = fs::path(file.get<std::string>()).stem().string();
@@ -129,7 +129,8 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
         for (const auto& e : fs::directory_iterator(sourceDir() / s.mistakes))
             catalogued += e.path().extension() == ".json";
     EXPECT_EQ(lost.size(), catalogued) << "every catalogued mistake is graded";
-    std::string table = "| stage | mistake | the stage's skill | points lost |\n| --- | --- | --- | --- |\n";
+    std::string table =
+        "| stage | mistake | the stage's skill | points lost |\n| --- | --- | --- | --- |\n";
     for (const auto& [key, value] : lost) {
         char points[32];
         std::snprintf(points, sizeof points, "%.1f", value.first);
@@ -138,7 +139,8 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     }
     const fs::path doc = sourceDir() / "docs" / "grading.md";
     const std::string text = readFile(doc);
-    const std::string open = "<!-- mistakes-table: GradeClass.ThirtySubmissionsScoreAsExpected -->\n",
+    const std::string open =
+                          "<!-- mistakes-table: GradeClass.ThirtySubmissionsScoreAsExpected -->\n",
                       close = "<!-- /mistakes-table -->";
     const std::size_t a = text.find(open), b = text.find(close);
     ASSERT_TRUE(a != std::string::npos && b != std::string::npos) << doc;

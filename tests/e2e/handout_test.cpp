@@ -49,9 +49,9 @@ std::vector<std::vector<std::string>> solutionRegions(const raylab::StageInfo& s
             }
         }
     }
-    regions.erase(std::remove_if(regions.begin(), regions.end(),
-                                 [](const auto& r) { return r.empty(); }),
-                  regions.end());
+    regions.erase(
+        std::remove_if(regions.begin(), regions.end(), [](const auto& r) { return r.empty(); }),
+        regions.end());
     return regions;
 }
 
@@ -154,8 +154,7 @@ TEST(Handout, WritesEachStagesOwnFilesAndTheyRunFromTheStudentsFolders) {
 // It finds them where they are (labs/ as a whole holds every earlier answer).
 TEST(Handout, NoHandoutHoldsASolutionOfAStageItHandsOut) {
     ScratchDir dir;
-    const std::vector<std::string> releases = {"01-03", "f1,f2", "01-08", "f1-f4", "03,05",
-                                               "04"};
+    const std::vector<std::string> releases = {"01-03", "f1,f2", "01-08", "f1-f4", "03,05", "04"};
     int n = 0;
     for (const std::string& release : releases)
         for (const char* carry : {"own", "solved"}) {
@@ -178,8 +177,7 @@ TEST(Handout, NoHandoutHoldsASolutionOfAStageItHandsOut) {
 // A course that hands out 03 after 01 and 02's deadlines, their solutions with it.
 TEST(Handout, CarrySolvedKeepsAStageFolderWhole) {
     ScratchDir dir;
-    CommandResult r =
-        runRaylab("handout --stages 03 --carry solved --out " + quote(dir / "week5"));
+    CommandResult r = runRaylab("handout --stages 03 --carry solved --out " + quote(dir / "week5"));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     EXPECT_TRUE(fs::exists(dir / "week5/03-shadows/blinn_phong.glsl"));
     EXPECT_NE(readFile(dir / "week5/03-shadows/README.md").find("provided, solved"),
@@ -225,8 +223,7 @@ TEST(Handout, BadRequestsWriteNothing) {
 // A course file's weights reach the guides the students read.
 TEST(Handout, TheGuidesShowTheCoursesWeights) {
     ScratchDir dir;
-    writeFile(dir / "course.json",
-              R"({"stages": {"03": {"grading": {"views": 20}}}})");
+    writeFile(dir / "course.json", R"({"stages": {"03": {"grading": {"views": 20}}}})");
     CommandResult r = runRaylab("handout --stages 03 --course " + quote(dir / "course.json") +
                                 " --out " + quote(dir / "out"));
     ASSERT_EQ(r.exitCode, 0) << r.all();

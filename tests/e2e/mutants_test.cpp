@@ -36,8 +36,8 @@ TEST(Mutants, AnUnlistedSurvivorFailsAndTheListedOnesAreTheSurvivors) {
 
     // Without --known the survivors are listed without reasons: the output
     // says where the reasons are.
-    CommandResult bare = runRaylab("mutants --stage 03 --jobs 2 --seed 1 --out " +
-                                   quote((d / "bare").string()));
+    CommandResult bare =
+        runRaylab("mutants --stage 03 --jobs 2 --seed 1 --out " + quote((d / "bare").string()));
     ASSERT_EQ(bare.exitCode, 0) << bare.all();
     EXPECT_NE(bare.out.find("--known tests/mutants"), std::string::npos) << bare.out;
 }

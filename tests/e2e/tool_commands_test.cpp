@@ -147,7 +147,8 @@ namespace {
 
 // A zip of ENTRIES (name -> content) written with libzip, names as given
 // (so that a hostile one such as "../x" can be made).
-void writeZip(const fs::path& file, const std::vector<std::pair<std::string, std::string>>& entries) {
+void writeZip(const fs::path& file,
+              const std::vector<std::pair<std::string, std::string>>& entries) {
     int err = 0;
     zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
     ASSERT_NE(z, nullptr);
@@ -187,8 +188,8 @@ TEST(PrairieLearn, AZipUploadIsUnpackedAndAHostileOneRefused) {
     EXPECT_DOUBLE_EQ(loose["score"].get<double>(), 1.0) << loose.dump();
 
     nlohmann::json hostile = gradeForPrairieLearn(dir, "hostile", [&](const fs::path& s) {
-        writeZip(s / "evil.zip", {{"01-raycast/intersect_sphere.glsl", "x"},
-                                  {"../../escaped.glsl", "x"}});
+        writeZip(s / "evil.zip",
+                 {{"01-raycast/intersect_sphere.glsl", "x"}, {"../../escaped.glsl", "x"}});
     });
     EXPECT_FALSE(hostile["gradable"].get<bool>());
     EXPECT_NE(hostile["message"].get<std::string>().find("outside the upload"), std::string::npos)

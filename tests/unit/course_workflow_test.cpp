@@ -27,9 +27,7 @@ template <typename F>
 std::string errorOf(F f) {
     try {
         f();
-    } catch (const Error& e) {
-        return e.what();
-    }
+    } catch (const Error& e) { return e.what(); }
     return "(no error)";
 }
 
@@ -82,7 +80,8 @@ TEST(StageGrading, PointsFollowTheWeightsAndAddUpTo100) {
     StageGrading g;
     g.viewPoints = 50;
     g.weights = {{"far", 2.0}, {"off", 0.0}, {"lightVisible", 3.0}};
-    const std::vector<double> p = checkPoints(g, {"front", "far", "off", "front"}, {"lightVisible", "other"});
+    const std::vector<double> p =
+        checkPoints(g, {"front", "far", "off", "front"}, {"lightVisible", "other"});
     ASSERT_EQ(p.size(), 6u);
     EXPECT_DOUBLE_EQ(p[0], 12.5);  // 50 * 1/4
     EXPECT_DOUBLE_EQ(p[1], 25.0);  // 50 * 2/4
@@ -109,8 +108,9 @@ TEST(StageGrading, WeightsForChecksTheStageDoesNotHaveAreRefused) {
     const StageInfo& stage = findStage("03");
     StageGrading g = stage.grading;
     g.weights["lightvisible"] = 2;  // a typo
-    EXPECT_NE(errorOf([&] { validateGrading(g, stage, "x.json: grading"); })
-                  .find("x.json: grading.weights.lightvisible: not a check of 03-shadows"),
+    EXPECT_NE(errorOf([&] {
+                  validateGrading(g, stage, "x.json: grading");
+              }).find("x.json: grading.weights.lightvisible: not a check of 03-shadows"),
               std::string::npos);
     g.weights = {{"lightVisible", -1}};
     EXPECT_NE(errorOf([&] { validateGrading(g, stage, "x"); }).find("expected a weight"),
@@ -150,7 +150,8 @@ TEST(CourseFile, OverridesWeightsAndReadsALatePolicy) {
     const StageGrading& g = c.gradingOf(findStage("03"));
     EXPECT_EQ(g.viewPoints, 40);
     EXPECT_EQ(g.weight("front"), 2);
-    EXPECT_EQ(&c.gradingOf(findStage("01")), &findStage("01").grading) << "others keep stage.json's";
+    EXPECT_EQ(&c.gradingOf(findStage("01")), &findStage("01").grading)
+        << "others keep stage.json's";
     ASSERT_TRUE(c.late);
     const std::int64_t due = parseIsoTime("2026-12-10T22:59:00Z", "t");
     EXPECT_EQ(c.late->daysLate("01-raycast", due + 14 * 60), 0) << "within the grace minutes";
@@ -197,9 +198,9 @@ TEST(CourseFile, IsoTimesNeedAZoneAndARealDate) {
 }
 
 TEST(Csv, QuotesLineEndsAndAByteOrderMark) {
-    const CsvTable t =
-        parseCsv("\xEF\xBB\xBFStudent ,Name\r\nalice,\"Doe, \"\"Al\"\"\"\r\n\r\nbob,\"two\nlines\"\n",
-                 "r.csv");
+    const CsvTable t = parseCsv(
+        "\xEF\xBB\xBFStudent ,Name\r\nalice,\"Doe, \"\"Al\"\"\"\r\n\r\nbob,\"two\nlines\"\n",
+        "r.csv");
     EXPECT_EQ(t.column("student"), 0) << "names ignore case and surrounding space";
     EXPECT_EQ(t.column("name"), 1);
     EXPECT_EQ(t.column("id"), -1);

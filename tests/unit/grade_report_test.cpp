@@ -245,8 +245,12 @@ TEST(GradeReport, CanvasCsvHasCanvasColumnsPointsPossibleAndOnlyMatchableStudent
 
 TEST(GradeReport, HtmlOpensWithTheClassSummary) {
     ClassResult r = sampleClass();
-    r.mistakes.push_back({"04-recursion", "stack-never-popped", "the path ends without popping",
-                          true, {"bounce", "reflect"}, 1});
+    r.mistakes.push_back({"04-recursion",
+                          "stack-never-popped",
+                          "the path ends without popping",
+                          true,
+                          {"bounce", "reflect"},
+                          1});
     r.mistakes.push_back({"01-raycast", "far-root", "takes the far root", true, {"front"}, 0});
     const std::string html = htmlReport(r);
     const std::size_t summary = html.find("Checks that fail most");

@@ -71,9 +71,10 @@ void copyTree(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Writes a generated class of 30 submissions (OUTDIR/submissions/<student>/, each a "
-                 "copy of labs/ with some stages done, mistakes made or broken) and what grading "
-                 "them must give (OUTDIR/expected.json), to try `raylab grade` on."};
+    CLI::App app{
+        "Writes a generated class of 30 submissions (OUTDIR/submissions/<student>/, each a "
+        "copy of labs/ with some stages done, mistakes made or broken) and what grading "
+        "them must give (OUTDIR/expected.json), to try `raylab grade` on."};
     std::string outDir;
     app.add_option("OUTDIR", outDir, "a new folder (or one without submissions/ in it)")
         ->required()

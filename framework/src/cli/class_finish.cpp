@@ -32,8 +32,8 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
             s.score = std::round((raw - s.latePenalty) * 100.0) / 100.0;
             char note[160];
             std::snprintf(note, sizeof note, "submitted %s, %d day%s late: -%g%%, %g instead of %g",
-                          formatUtc(*when).c_str(), days, days == 1 ? "" : "s", percent,
-                          s.score, raw);
+                          formatUtc(*when).c_str(), days, days == 1 ? "" : "s", percent, s.score,
+                          raw);
             s.lateNote = note;
         }
     }

@@ -4,17 +4,17 @@
 // report.html, <student>/results.json (Gradescope), summary.csv and
 // junit.xml. One bad submission never stops the run or touches another's
 // score.
+#include "atomic_file.h"
 #include "child_process.h"
 #include "class_finish.h"
 #include "class_roster.h"
-#include "course_file.h"
 #include "command.h"
 #include "commands.h"
+#include "course_file.h"
 #include "error.h"
 #include "grade_report.h"
 #include "grade_shards.h"
 #include "grade_stage.h"
-#include "atomic_file.h"
 #include "paths.h"
 #include "stage_list.h"
 
@@ -403,12 +403,12 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
             fs::remove_all(itemDir, ec);  // a rerun starts clean: no stale result counts
             fs::create_directories(itemDir, ec);
             progress.working(name, item.stage->id);
-            std::vector<std::string> args{exe,      "grade-item",
-                                          "--stage", item.stage->id,
-                                          "--lab",   (submissions / name).string(),
+            std::vector<std::string> args{exe,         "grade-item",
+                                          "--stage",   item.stage->id,
+                                          "--lab",     (submissions / name).string(),
                                           "--student", shown[item.student],
-                                          "--out",   out.string(),
-                                          "--seed",  seed};
+                                          "--out",     out.string(),
+                                          "--seed",    seed};
             if (!courseFile.empty()) args.insert(args.end(), {"--course", courseFile});
             return std::make_unique<Child>(args, itemDir / "log.txt", limits);
         };
@@ -423,8 +423,9 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
                     haveResult = true;
                 } catch (const Error&) {}
             }
-            if (g.anonymise) scrubNames(itemDir / "log.txt", students[item.student],
-                                        shown[item.student], submissions);
+            if (g.anonymise)
+                scrubNames(itemDir / "log.txt", students[item.student], shown[item.student],
+                           submissions);
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
             if (g.anonymise) {
@@ -470,7 +471,8 @@ namespace {
 // The options only a whole class's reports use, checked before any work.
 void checkReportOptions(const GradeOptions& g) {
     if (!g.lms.empty() && g.lms != "canvas")
-        throw Error("--lms must be canvas (the one LMS import written so far), not '" + g.lms + "'");
+        throw Error("--lms must be canvas (the one LMS import written so far), not '" + g.lms +
+                    "'");
     if (!g.lms.empty() && g.roster.empty())
         throw Error("--lms canvas needs --roster FILE (Canvas matches students by their ids)");
     if (g.anonymise && (!g.roster.empty() || !g.lms.empty()))
@@ -501,12 +503,14 @@ int cmdGrade(const GradeOptions& g) {
         std::vector<std::string> ids;
         for (const StageInfo* s : stagesToGrade(g.stages)) ids.push_back(s->id);
         if (!g.stages.empty() && ids != earlier->stages)
-            throw Error("--only: " + out.string() + " graded other stages; give its --stages or none");
+            throw Error("--only: " + out.string() +
+                        " graded other stages; give its --stages or none");
     }
     GradeOptions run = g;
     if (earlier) {
         run.stages.clear();
-        for (const std::string& id : earlier->stages) run.stages += (run.stages.empty() ? "" : ",") + id;
+        for (const std::string& id : earlier->stages)
+            run.stages += (run.stages.empty() ? "" : ",") + id;
     }
     const std::optional<ClassResult> graded = gradeClass(run);
     if (!graded) return 130;  // interrupted: no report
@@ -603,7 +607,9 @@ Command gradeCommand() {
             cmd.add_option(
                 "--out", g->outDir,
                 "folder for report.html, summary.csv, junit.xml, <student>/results.json");
-            cmd.add_option("--stages", g->stages, "the stages to grade, as handout takes them: 01-03, 01,02,f1 or all (default: all)");
+            cmd.add_option("--stages", g->stages,
+                           "the stages to grade, as handout takes them: 01-03, 01,02,f1 or all "
+                           "(default: all)");
             cmd.add_option("--jobs", g->jobs, "submissions graded at once")->capture_default_str();
             cmd.add_option("--timeout", g->timeoutSeconds, "seconds per stage of a submission")
                 ->capture_default_str();
@@ -644,7 +650,8 @@ Command gradeCommand() {
                         throw Error("--merge takes no --submissions, --out, --shard, --only or "
                                     "--anonymise");
                     if (g->submitted == "mtime")
-                        throw Error("--merge: --submitted mtime needs the class folder; give a CSV");
+                        throw Error(
+                            "--merge: --submitted mtime needs the class folder; give a CSV");
                     return cmdGradeMerge(*merge, *g);
                 }
                 if (g->submissions.empty()) throw Error("--submissions is required");

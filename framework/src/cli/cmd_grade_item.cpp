@@ -5,8 +5,8 @@
 #include "atomic_file.h"
 #include "command.h"
 #include "commands.h"
-#include "error.h"
 #include "course_file.h"
+#include "error.h"
 #include "gl_loader.h"
 #include "grade_stage.h"
 

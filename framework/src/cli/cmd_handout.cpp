@@ -63,7 +63,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     if (outDir.empty()) throw Error("--out DIR is required");
     const Carry carry = parseCarry(carryName);
     // The guides' "How you are graded" with the course's weights.
-    const CourseSettings course = courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
+    const CourseSettings course =
+        courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
     const std::vector<HandoutStage> plan = planHandout(parseStageList(list), carry);
     const fs::path labs = labDir.empty() ? defaultLabRoot() : fs::path(labDir);
     const fs::path out = outFolder(outDir);
@@ -81,8 +82,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     if (!fs::is_directory(parent, ec))
         throw Error("--out " + outDir + ": folder " + parent.string() + " does not exist");
 
-    const fs::path temp = parent / ("." + out.filename().string() + ".tmp-" +
-                                    std::to_string(getpid()));
+    const fs::path temp =
+        parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
     try {
         fs::create_directories(temp);
         for (const HandoutStage& h : plan) {
@@ -98,8 +99,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
             if (fs::is_regular_file(from / "README.md", ec))
                 writeTextFileAtomic(
                     to / "README.md",
-                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h),
-                                       *h.stage, course.gradingOf(*h.stage)));
+                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h), *h.stage,
+                                       course.gradingOf(*h.stage)));
         }
         writeTextFileAtomic(temp / "README.md", readme(plan));
         if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above

@@ -1,8 +1,8 @@
 #include "grade_shards.h"
 
 #include "atomic_file.h"
-#include "error.h"
 #include "commands.h"
+#include "error.h"
 #include "grade_stage.h"
 #include "json_reader.h"
 #include "paths.h"
@@ -150,7 +150,8 @@ int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& opti
     std::set<int> seen;
     for (const ShardFile& s : shards) {
         if (s.count != first.count || s.result.seed != first.result.seed ||
-            s.result.stages != first.result.stages || s.result.anonymised != first.result.anonymised)
+            s.result.stages != first.result.stages ||
+            s.result.anonymised != first.result.anonymised)
             throw Error(s.dir.string() + " is from another run than " + first.dir.string() +
                         " (shares, seed or stages differ)");
         if (!seen.insert(s.index).second)

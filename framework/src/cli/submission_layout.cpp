@@ -1,9 +1,9 @@
 #include "submission_layout.h"
 
+#include "error.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 #include "zip_unpack.h"
-#include "error.h"
 
 #include <algorithm>
 #include <set>

@@ -37,9 +37,7 @@ SubmissionTimes SubmissionTimes::read(const std::string& source, const fs::path&
         if (stage >= 0 && !row[std::size_t(stage)].empty()) {
             try {
                 id = findStage(row[std::size_t(stage)]).id;
-            } catch (const Error& e) {
-                throw Error(at + ": " + e.what());
-            }
+            } catch (const Error& e) { throw Error(at + ": " + e.what()); }
         }
         const std::int64_t when = parseIsoTime(row[std::size_t(submitted)], at);
         if (!t.times_.emplace(std::make_pair(row[std::size_t(student)], id), when).second)

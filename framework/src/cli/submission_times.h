@@ -19,7 +19,8 @@ class SubmissionTimes {
 public:
     // SOURCE: a CSV file or "mtime" (then SUBMISSIONS is the class folder).
     // Throws Error naming the file and line.
-    static SubmissionTimes read(const std::string& source, const std::filesystem::path& submissions);
+    static SubmissionTimes read(const std::string& source,
+                                const std::filesystem::path& submissions);
     std::optional<std::int64_t> of(const std::string& student, const std::string& stage) const;
     std::string source() const { return source_; }
     // The students it has times for (a CSV's; mtime: the class's folders).
@@ -27,7 +28,7 @@ public:
 
 private:
     std::string source_;
-    std::filesystem::path submissions_;  // mtime
+    std::filesystem::path submissions_;                                  // mtime
     std::map<std::pair<std::string, std::string>, std::int64_t> times_;  // (student, stage or "")
 };
 

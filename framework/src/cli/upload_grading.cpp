@@ -5,7 +5,6 @@
 #include "grade_shards.h"
 #include "stage_list.h"
 
-
 namespace raylab {
 
 namespace fs = std::filesystem;
@@ -25,8 +24,8 @@ UploadGrade gradeUpload(const fs::path& uploaded, const fs::path& work,
     std::error_code ec;
     fs::remove_all(work, ec);
     try {
-        r.layout = layOutSubmission(uploaded, o.stages, work / "class" / "student",
-                                    work / "unpacked");
+        r.layout =
+            layOutSubmission(uploaded, o.stages, work / "class" / "student", work / "unpacked");
     } catch (const fs::filesystem_error& e) {  // an upload that cannot be read or copied
         r.layout.problem = "the submission cannot be read: " + std::string(e.what());
     }

@@ -29,7 +29,7 @@ fs::path safeRelative(const std::string& name) {
     fs::path out;
     for (const fs::path& part : fs::path(name)) {
         const std::string p = part.string();
-        if (p == ".." ) return {};
+        if (p == "..") return {};
         if (p.empty() || p == ".") continue;
         out /= part;
     }
@@ -57,7 +57,8 @@ bool isZipFile(const fs::path& file) {
 void unpackZip(const fs::path& zipFile, const fs::path& into, const ZipLimits& limits) {
     const std::string label = zipFile.filename().string();
     int err = 0;
-    std::unique_ptr<zip_t, ZipCloser> z(zip_open(zipFile.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &err));
+    std::unique_ptr<zip_t, ZipCloser> z(
+        zip_open(zipFile.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &err));
     if (!z) {
         zip_error_t e;
         zip_error_init_with_code(&e, err);
@@ -101,8 +102,9 @@ void unpackZip(const fs::path& zipFile, const fs::path& into, const ZipLimits& l
         std::vector<char> buffer(1 << 16);
         for (const auto& [index, rel] : files) {
             std::unique_ptr<zip_file_t, FileCloser> in(zip_fopen_index(z.get(), index, 0));
-            if (!in) throw Error(label + ": " + rel.string() + " cannot be read (" +
-                                 zip_strerror(z.get()) + ")");
+            if (!in)
+                throw Error(label + ": " + rel.string() + " cannot be read (" +
+                            zip_strerror(z.get()) + ")");
             fs::create_directories((into / rel).parent_path());
             std::ofstream out(into / rel, std::ios::binary | std::ios::trunc);
             std::uint64_t written = 0;

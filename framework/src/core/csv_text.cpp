@@ -89,7 +89,8 @@ CsvTable parseCsv(const std::string& input, const std::string& where) {
             fieldStarted = true;
         }
     }
-    if (quoted) throw Error(where + ": line " + std::to_string(recordLine) + ": a quote is not closed");
+    if (quoted)
+        throw Error(where + ": line " + std::to_string(recordLine) + ": a quote is not closed");
     if (!field.empty() || !record.empty()) endRecord();
     CsvTable t;
     if (records.empty()) throw Error(where + ": empty (expected a header row naming the columns)");

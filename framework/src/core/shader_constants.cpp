@@ -25,7 +25,8 @@ std::string constantsGlsl() {
     // A stage may set its own T_MIN with a define (stage.json "defines":
     // "RAYLAB_T_MIN 0.0"): stage 03 counts every hit in front of a ray, so
     // that a shadow ray started on its own surface shows the acne it causes.
-    return floatConst("NO_HIT", kNoHit) + "#ifdef RAYLAB_T_MIN\nconst float T_MIN = RAYLAB_T_MIN;\n#else\n" +
+    return floatConst("NO_HIT", kNoHit) +
+           "#ifdef RAYLAB_T_MIN\nconst float T_MIN = RAYLAB_T_MIN;\n#else\n" +
            floatConst("T_MIN", kTMin) + "#endif\n" + floatConst("T_FAR", kTFar) +
            intConst("MAX_DEPTH", kMaxDepth) + intConst("MAX_RAYS", kMaxRays) +
            intConst("KIND_SPHERE", kSphere) + intConst("KIND_PLANE", kPlane) +

@@ -52,8 +52,8 @@ std::int64_t parseIsoTime(const std::string& text, const std::string& where) {
                              "' is not a time like 2026-12-10T23:59:00+01:00 (ISO 8601, with a "
                              "zone: Z or +HH:MM)";
     // YYYY-MM-DDTHH:MM[:SS](Z|+HH:MM|-HH:MM); a space may stand for the T.
-    if (text.size() < 17 || text[4] != '-' || text[7] != '-' || (text[10] != 'T' && text[10] != ' ') ||
-        text[13] != ':')
+    if (text.size() < 17 || text[4] != '-' || text[7] != '-' ||
+        (text[10] != 'T' && text[10] != ' ') || text[13] != ':')
         throw Error(what);
     std::tm tm{};
     tm.tm_year = digits(text, 0, 4, what) - 1900;
@@ -116,13 +116,11 @@ CourseSettings readCourseFile(const fs::path& file) {
             const StageInfo* stage = nullptr;
             try {
                 stage = &findStage(it.key());
-            } catch (const Error& e) {
-                r.fail(where, e.what());
-            }
+            } catch (const Error& e) { r.fail(where, e.what()); }
             r.allowOnly(it.value(), where, {"grading"});
             if (!it.value().contains("grading")) continue;
-            StageGrading g = readGrading(r, it.value()["grading"], where + ".grading",
-                                         stage->grading);
+            StageGrading g =
+                readGrading(r, it.value()["grading"], where + ".grading", stage->grading);
             validateGrading(g, *stage, shown + ": " + where + ".grading");
             c.grading[stage->id] = g;
         }
@@ -146,9 +144,7 @@ CourseSettings readCourseFile(const fs::path& file) {
                 std::string id;
                 try {
                     id = findStage(it.key()).id;
-                } catch (const Error& e) {
-                    r.fail(where, e.what());
-                }
+                } catch (const Error& e) { r.fail(where, e.what()); }
                 p.deadlines[id] = time(it.value(), where);
             }
         }

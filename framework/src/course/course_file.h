@@ -34,7 +34,7 @@
 namespace raylab {
 
 struct LatePolicy {
-    std::optional<std::int64_t> deadline;          // Unix seconds, every stage
+    std::optional<std::int64_t> deadline;           // Unix seconds, every stage
     std::map<std::string, std::int64_t> deadlines;  // stage id -> its own
     double graceMinutes = 0;
     double penaltyPerDay = 0;  // percent of the stage's points
@@ -47,7 +47,7 @@ struct LatePolicy {
 };
 
 struct CourseSettings {
-    std::filesystem::path file;  // empty: no course file
+    std::filesystem::path file;                   // empty: no course file
     std::map<std::string, StageGrading> grading;  // stage id -> the course's
     std::optional<LatePolicy> late;
     // The stage's grading: the course's where it sets one, else stage.json's.

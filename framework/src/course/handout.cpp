@@ -53,8 +53,10 @@ constexpr const char* kClose = "<!-- /provided -->";
 std::string codeList(const std::vector<std::string>& names) {
     std::string out;
     for (std::size_t i = 0; i < names.size(); ++i)
-        out += std::string(i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + "`" +
-               names[i] + "`";
+        out += std::string(i == 0                  ? ""
+                           : i + 1 == names.size() ? " and "
+                                                   : ", ") +
+               "`" + names[i] + "`";
     return out;
 }
 
@@ -69,8 +71,8 @@ std::vector<std::string> newestFirst(const std::map<std::string, std::vector<std
 }
 
 std::string providedText(const HandoutStage& h) {
-    std::string text = "This folder holds the files stage " + h.stage->number() + " adds: " +
-                       codeList(h.ownFiles) + ".";
+    std::string text = "This folder holds the files stage " + h.stage->number() +
+                       " adds: " + codeList(h.ownFiles) + ".";
     if (!h.carried.empty()) {
         text += " Provided, solved:";
         bool first = true;
@@ -104,8 +106,8 @@ std::string handoutGuide(const std::string& guide, const HandoutStage& plan) {
     const std::size_t close = guide.find(kClose, open);
     if (close == std::string::npos)
         throw Error(plan.stage->id + "/README.md: " + kOpen + " without " + kClose);
-    std::string inside = guide.substr(open + std::string(kOpen).size(),
-                                      close - open - std::string(kOpen).size());
+    std::string inside =
+        guide.substr(open + std::string(kOpen).size(), close - open - std::string(kOpen).size());
     // The guide's own text says "every earlier file is here, solved"; when
     // some are the student's own, say what is where instead.
     if (!plan.fromStudent.empty()) inside = providedText(plan);

@@ -28,7 +28,8 @@ std::vector<CatalogMistake> stageMistakes(const StageInfo& stage) {
         m.file = f;
         m.name = f.stem().string();
         m.stage = r.string(r.member(doc, "mistake", "stage"), "stage");
-        if (m.stage != stage.id) r.fail("stage", "'" + m.stage + "' in the catalogue of " + stage.id);
+        if (m.stage != stage.id)
+            r.fail("stage", "'" + m.stage + "' in the catalogue of " + stage.id);
         m.description = r.string(r.member(doc, "mistake", "mistake"), "mistake");
         if (doc.contains("central")) {
             if (!doc["central"].is_boolean()) r.fail("central", "expected true or false");
@@ -39,8 +40,7 @@ std::vector<CatalogMistake> stageMistakes(const StageInfo& stage) {
         if (!replace.is_array() || replace.empty()) r.fail("replace", "expected [[from, to], ...]");
         for (std::size_t i = 0; i < replace.size(); ++i) {
             const std::string at = "replace[" + std::to_string(i) + "]";
-            if (!replace[i].is_array() || replace[i].size() != 2)
-                r.fail(at, "expected [from, to]");
+            if (!replace[i].is_array() || replace[i].size() != 2) r.fail(at, "expected [from, to]");
             m.replace.emplace_back(r.string(replace[i][0], at), r.string(replace[i][1], at));
         }
         const json& caught = r.member(doc, "mistake", "caught_by");

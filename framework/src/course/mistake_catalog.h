@@ -27,9 +27,9 @@ struct CatalogMistake {
     std::string name;  // the file's stem: "fixed-offset"
     std::string description;
     bool central = false;
-    std::string shaderFile;                                     // the lab file it changes
+    std::string shaderFile;                                    // the lab file it changes
     std::vector<std::pair<std::string, std::string>> replace;  // text replacements, in order
-    std::vector<std::string> caughtBy;                          // sorted
+    std::vector<std::string> caughtBy;                         // sorted
 };
 
 // The stage's catalogue, sorted by name; empty when its folder is missing.

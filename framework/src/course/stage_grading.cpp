@@ -37,8 +37,7 @@ std::vector<double> checkPoints(const StageGrading& g, const std::vector<std::st
     for (const std::string& v : views)
         points.push_back(viewWeights > 0 ? viewShare * g.weight(v) / viewWeights : 0.0);
     for (const std::string& o : others)
-        points.push_back(otherWeights > 0 ? (100.0 - viewShare) * g.weight(o) / otherWeights
-                                          : 0.0);
+        points.push_back(otherWeights > 0 ? (100.0 - viewShare) * g.weight(o) / otherWeights : 0.0);
     return points;
 }
 
@@ -122,13 +121,14 @@ std::string gradingGuideSection(const StageInfo& stage, const StageGrading& g) {
          "  the solution's (the rule of `raylab check`), and less the more differ, with\n"
          "  no jump: 1% of pixels earns " +
          percent(viewCredit(0.01)) + "%, 2% earns " + percent(viewCredit(0.02)) + "%, 5% earns " +
-         percent(viewCredit(0.05)) + "%, " + percent(kViewZeroShare) + "% or more\n  nothing. A picture still equal to the lab as handed out earns nothing; a\n"
+         percent(viewCredit(0.05)) + "%, " + percent(kViewZeroShare) +
+         "% or more\n  nothing. A picture still equal to the lab as handed out earns nothing; a\n"
          "  view the handed-out lab already draws right (one with this stage's feature\n"
          "  switched off) earns only the share the other views earned, so an untouched\n"
          "  lab scores 0; a view with NaN or Inf pixels earns nothing.\n";
     if (nOthers > 0) {
-        t += "* **Functions" + std::string(stage.countChecks.empty() ? "" : " and counts") +
-             ", " + points(100.0 - viewShare) + " points**";
+        t += "* **Functions" + std::string(stage.countChecks.empty() ? "" : " and counts") + ", " +
+             points(100.0 - viewShare) + " points**";
         double others = 0;
         for (const std::string& f : stage.functionChecks) others += g.weight(f);
         for (const std::string& c : stage.countChecks) others += g.weight(c);
@@ -167,8 +167,7 @@ std::string withGradingSection(const std::string& guide, const StageInfo& stage,
     const std::size_t end = guide.find(close, at);
     if (bodyStart == std::string::npos || end == std::string::npos || end < bodyStart)
         throw Error(stage.id + "/README.md: " + open + " without " + close);
-    return guide.substr(0, bodyStart + 1) + gradingGuideSection(stage, grading) +
-           guide.substr(end);
+    return guide.substr(0, bodyStart + 1) + gradingGuideSection(stage, grading) + guide.substr(end);
 }
 
 }  // namespace raylab

@@ -49,8 +49,7 @@ std::vector<double> checkPoints(const StageGrading& grading, const std::vector<s
 // Checks GRADING against STAGE: weights only for the stage's checks, views
 // in 0..100, no share whose weights add up to zero. Throws Error("WHERE:
 // why") naming WHERE (the file and key that set it).
-void validateGrading(const StageGrading& grading, const StageInfo& stage,
-                     const std::string& where);
+void validateGrading(const StageGrading& grading, const StageInfo& stage, const std::string& where);
 
 // "How you are graded" of a stage's guide, from its effective grading.
 std::string gradingGuideSection(const StageInfo& stage, const StageGrading& grading);

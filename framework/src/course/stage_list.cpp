@@ -52,9 +52,7 @@ std::vector<const StageInfo*> parseStageList(const std::string& list, const std:
         try {
             from = &findStage(item.substr(0, dash));
             to = &findStage(item.substr(dash + 1));
-        } catch (const Error& e) {
-            throw Error(option + " " + item + ": " + e.what());
-        }
+        } catch (const Error& e) { throw Error(option + " " + item + ": " + e.what()); }
         if (from->track != to->track)
             throw Error(option + " " + item + ": " + from->id + " and " + to->id +
                         " are on different tracks (give two ranges: 01-03,f1-f2)");

@@ -158,8 +158,8 @@ FunctionSpec discSpec() {
         // compared with the radius, not its square, gets these wrong).
         rayCase("radius 2, 1.6 from the centre", {1.6, 3, 0}, {0, -1, 0}, disc, up),
         rayCase("radius 2, 1.5 from the centre, diagonal", {1.06, 3, -1.06}, {0, -1, 0}, disc, up),
-        rayCase("radius 0.5, 0.6 from the centre", {0.6, 3, 0}, {0, -1, 0},
-                dvec4(0, 1, 0, 0.5), up),
+        rayCase("radius 0.5, 0.6 from the centre", {0.6, 3, 0}, {0, -1, 0}, dvec4(0, 1, 0, 0.5),
+                up),
         rayCase("radius 0.5, 0.65 from the centre, diagonal", {-0.46, 3, 0.46}, {0, -1, 0},
                 dvec4(0, 1, 0, 0.5), up),
         rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5),

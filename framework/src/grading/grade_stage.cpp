@@ -140,9 +140,8 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             const bool asHandedOut =
                 !check.passed && untouched[i] &&
                 imagesAgree(compareImages(mine, *untouched[i], tolerance.channel), tolerance);
-            check.score = nonFinite || asHandedOut
-                              ? 0.0
-                              : check.maxScore * viewCredit(diff.badShare);
+            check.score =
+                nonFinite || asHandedOut ? 0.0 : check.maxScore * viewCredit(diff.badShare);
             check.output = describe(diff);
             if (asHandedOut) check.output += "; the same picture as the lab as handed out";
             if (nonFinite)

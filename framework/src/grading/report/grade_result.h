@@ -51,18 +51,18 @@ struct StageResult {
 // One row of the roster an instructor gives (`raylab grade --roster`): the
 // student's id and what an LMS import needs. Empty fields: not given.
 struct RosterEntry {
-    std::string id;          // the student's id (SIS User ID in Canvas)
-    std::string fullName;    // as the LMS shows it ("Last, First")
-    std::string canvasId;    // Canvas's own user id ("ID")
-    std::string loginId;     // SIS Login ID
+    std::string id;        // the student's id (SIS User ID in Canvas)
+    std::string fullName;  // as the LMS shows it ("Last, First")
+    std::string canvasId;  // Canvas's own user id ("ID")
+    std::string loginId;   // SIS Login ID
     std::string section;
 };
 
 struct StudentResult {
     std::string name;  // the submission folder's name (a pseudonym with --anonymise)
     std::vector<StageResult> stages;
-    RosterEntry roster;      // empty without a roster (or with --anonymise)
-    bool hasFolder = true;   // false: in the roster, but no submission folder
+    RosterEntry roster;     // empty without a roster (or with --anonymise)
+    bool hasFolder = true;  // false: in the roster, but no submission folder
     double score() const;
     double maxScore() const;
 };
@@ -70,9 +70,9 @@ struct StudentResult {
 // A catalogued mistake (tests/mistakes/<stage>/*.json) and how many graded
 // stages failed exactly the checks it fails (report.html's class summary).
 struct MistakeMatch {
-    std::string stage, name;  // "03-shadows", "fixed-offset"
-    std::string description;  // the catalogue's "mistake"
-    bool central = false;     // the stage's skill
+    std::string stage, name;          // "03-shadows", "fixed-offset"
+    std::string description;          // the catalogue's "mistake"
+    bool central = false;             // the stage's skill
     std::vector<std::string> checks;  // the checks it fails (its "caught_by")
     int matches = 0;
 };
@@ -81,10 +81,10 @@ struct ClassResult {
     std::vector<std::string> stages;  // graded stage ids, in order
     std::vector<StudentResult> students;
     std::vector<MistakeMatch> mistakes;  // of the graded stages; empty: no catalogue
-    unsigned seed = 0;    // of the seeded camera poses
-    bool anonymised = false;  // names are pseudonyms (raylab grade --anonymise)
-    std::string machine;  // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
-    double seconds = 0;   // wall time of the whole run
+    unsigned seed = 0;                   // of the seeded camera poses
+    bool anonymised = false;             // names are pseudonyms (raylab grade --anonymise)
+    std::string machine;                 // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
+    double seconds = 0;                  // wall time of the whole run
 };
 
 }  // namespace raylab

@@ -139,10 +139,10 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
             stageMax[j] += s->maxScore;
             ++stageCount[j];
             if (isGraded(*s)) {
-                const std::string title =
-                    s->latePenalty > 0 ? num(s->rawScore()) + " before the late penalty: " +
-                                             escapeMarkup(s->lateNote, true)
-                                       : num(s->score) + " / " + num(s->maxScore);
+                const std::string title = s->latePenalty > 0
+                                              ? num(s->rawScore()) + " before the late penalty: " +
+                                                    escapeMarkup(s->lateNote, true)
+                                              : num(s->score) + " / " + num(s->maxScore);
                 h += "<td class=\"cell num\"><a class=\"" +
                      std::string(tone(s->score, s->maxScore)) + "\" href=\"#" + anchor(i, k) +
                      "\" title=\"" + title + "\">" + num(s->score) +
@@ -217,8 +217,9 @@ void htmlClassSummary(std::string& h, const ClassResult& r) {
     if (counts.empty() || counts.front().failed == 0) {
         h += "<p class=\"muted\">No check failed.</p>\n";
     } else {
-        h += "<div class=\"scroll\"><table class=\"summary\"><thead><tr><th>Stage</th><th>Check</th>"
-             "<th>Kind</th><th class=\"num\">Failed</th></tr></thead><tbody>\n";
+        h +=
+            "<div class=\"scroll\"><table class=\"summary\"><thead><tr><th>Stage</th><th>Check</th>"
+            "<th>Kind</th><th class=\"num\">Failed</th></tr></thead><tbody>\n";
         for (const Count& c : counts) {
             if (c.failed == 0) break;
             h += "<tr><td>" + escapeMarkup(c.stage) + "</td><td>" + escapeMarkup(c.check) +
@@ -238,7 +239,8 @@ void htmlClassSummary(std::string& h, const ClassResult& r) {
     } else if (matched == 0) {
         h += "<p class=\"muted\">No failure repeats a catalogued mistake's checks exactly.</p>\n";
     } else {
-        h += "<div class=\"scroll\"><table class=\"summary\"><thead><tr><th>Stage</th><th>Mistake</th>"
+        h += "<div class=\"scroll\"><table "
+             "class=\"summary\"><thead><tr><th>Stage</th><th>Mistake</th>"
              "<th>Fails exactly</th><th class=\"num\">Stages</th></tr></thead><tbody>\n";
         for (const MistakeMatch& m : r.mistakes) {
             if (m.matches == 0) continue;

@@ -77,17 +77,14 @@ void validateGrading(const StageGrading& g, const StageInfo& stage, const std::s
 
 namespace {
 
-std::string points(double p) {
+// Points to three significant digits ("5.56", "50"); weights as given ("0.5").
+std::string printed(const char* format, double value) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", p);
+    std::snprintf(buf, sizeof buf, format, value);
     return buf;
 }
-
-std::string weightText(double w) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", w);
-    return buf;
-}
+std::string points(double p) { return printed("%.3g", p); }
+std::string weightText(double w) { return printed("%g", w); }
 
 }  // namespace
 

@@ -22,6 +22,7 @@ packages=(
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL (surfaceless Mesa, llvmpipe)
   libosmesa6-dev                                   # headless OSMesa backend
   libzip-dev                                       # zip uploads (PrairieLearn keeps a zip as a file)
+  libsodium-dev                                    # keyed pseudonyms (raylab grade --anonymise)
   libcli11-dev nlohmann-json3-dev                  # command line, scene files
   libtinyobjloader-dev                             # OBJ meshes (fur track)
   libimgui-dev                                     # on-screen overlay (Dear ImGui + its SDL2/OpenGL3 backends)

@@ -4,11 +4,13 @@
 # submits an array of N tasks (grade_array.sh) and a job that runs
 # `raylab grade --merge OUT/report OUT/shard-*` once all of them succeeded.
 # RAYLAB (default: build/raylab of this checkout) must be reachable from the
-# nodes, as must SUBMISSIONS and OUT. Prints the two job ids.
+# nodes, as must SUBMISSIONS and OUT. COURSE=course.json grades with a course
+# file's weights, which the merge applies too (with its late policy, give
+# SUBMITTED=times.csv). Prints the two job ids.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-case "${1:-}" in -h|--help) sed -n '2,8p' "$0"; exit 0 ;; esac
-if [ $# -lt 3 ] || [ $# -gt 5 ]; then sed -n '2,8p' "$0" >&2; exit 2; fi
+case "${1:-}" in -h|--help) sed -n '2,9p' "$0"; exit 0 ;; esac
+if [ $# -lt 3 ] || [ $# -gt 5 ]; then sed -n '2,9p' "$0" >&2; exit 2; fi
 for arg in "$@"; do
   case "$arg" in -*) echo "submit.sh: '$arg' looks like an option; it takes none but --help (paths may not start with '-')" >&2; exit 2 ;; esac
 done
@@ -21,10 +23,13 @@ mkdir -p "$out"
 out=$(realpath "$out")
 # Through the environment (--export=ALL): a value in --export=NAME=VALUE
 # may not hold a comma, and a stage list does.
-array=$(RAYLAB=$raylab SUBMISSIONS=$submissions OUT=$out SEED=$seed STAGES=$stages \
+course=${COURSE:-} submitted=${SUBMITTED:-}
+[ -z "$course" ] || course=$(realpath "$course")
+[ -z "$submitted" ] || submitted=$(realpath "$submitted")
+array=$(RAYLAB=$raylab SUBMISSIONS=$submissions OUT=$out SEED=$seed STAGES=$stages COURSE=$course \
   sbatch --parsable --array="0-$((n - 1))" --chdir="$out" --export=ALL "$here/grade_array.sh")
 shards=""
 for ((k = 0; k < n; ++k)); do shards+=" '$out/shard-$k'"; done
 merge=$(sbatch --parsable --dependency="afterok:${array%%;*}" --job-name=raylab-merge --chdir="$out" \
-  --output="$out/raylab-merge-%j.log" --wrap="'$raylab' grade --merge '$out/report'$shards")
+  --output="$out/raylab-merge-%j.log" --wrap="'$raylab' grade --merge '$out/report'$shards${course:+ --course '$course'}${submitted:+ --submitted '$submitted'}")
 echo "array job $array (grading, $n shares), merge job $merge (report: $out/report/report.html)"

@@ -63,6 +63,8 @@ TEST(GradeWorkflow, RosterLatePolicyCanvasAndTheClassSummary) {
                                  "carol,2026-12-30T09:00:00Z,\n");
     grade(dir.path(), "--out graded --roster roster.csv --course course.json --submitted "
                       "times.csv --lms canvas");
+    // A regrade of one student finishes the class as the run did.
+    grade(dir.path(), "--out graded --only carol");
     const std::string csv = readFile(dir / "graded/summary.csv");
     EXPECT_EQ(csv.rfind("student,id,01-raycast,02-shading,total,max,notes\r\n", 0), 0u) << csv;
     EXPECT_EQ(row(csv, "alice"), "alice,s1,100,100,200,200,") << csv;
@@ -116,10 +118,13 @@ TEST(GradeWorkflow, OnlyRegradesOneStudentIntoTheReport) {
     EXPECT_EQ(row(csv, "alice").find("alice,,100,"), std::string::npos) << csv;
     EXPECT_FALSE(row(csv, "bob").empty() || row(csv, "carol").empty()) << csv;
 
-    // Refused: another seed, a student with no folder, a folder never graded.
+    // Refused: another seed, a student with no folder, a folder never graded,
+    // other weights than the run's.
+    writeFile(dir / "weights.json", R"({"stages": {"01": {"grading": {"views": 10}}}})");
     for (const std::string& args :
          {std::string("--out graded --only alice --seed 4"), std::string("--out graded --only zed"),
-          std::string("--out elsewhere --only alice")}) {
+          std::string("--out elsewhere --only alice"),
+          std::string("--out graded --only alice --course weights.json")}) {
         CommandResult r = runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
                                      " grade --submissions class --jobs 2 --seed 3 " + args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.all();
@@ -135,12 +140,18 @@ TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
     // A compile error, so that a message names the student's file.
     replaceInFile(dir / "class/carol/01-raycast/intersect_sphere.glsl", "    return",
                   "    float = 1.0;\n    return");
-    grade(dir.path(), "--out tas --anonymise");
+    // A folder whose name is part of every pseudonym ("stud" of "student-").
+    fs::create_directories(dir / "class" / "stud");
+    fs::copy(solved / "01-raycast", dir / "class" / "stud" / "01-raycast",
+             fs::copy_options::recursive);
+    grade(dir.path(), "--out tas --anonymise key.json");
+    EXPECT_NE(readFile(dir / "key.json").find("\"alice\""), std::string::npos)
+        << "the key file says whose each pseudonym is";
     int files = 0;
     for (const std::string& f : filesUnder(dir / "tas")) {
         ++files;
         const std::string text = readFile(dir / "tas" / f);
-        for (const char* name : {"alice", "bob/", "carol"}) {
+        for (const char* name : {"alice", "bob/", "carol", "/stud/"}) {
             EXPECT_EQ(f.find(name), std::string::npos) << f;
             EXPECT_EQ(text.find(name), std::string::npos) << name << " in " << f;
         }
@@ -150,9 +161,11 @@ TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
               std::string::npos)
         << "the compile error still names the file";
     EXPECT_NE(readFile(dir / "tas/summary.csv").find("student-"), std::string::npos);
-    // The same seed gives the same pseudonyms.
-    grade(dir.path(), "--out tas2 --anonymise");
+    // The same key gives the same pseudonyms; another key others.
+    grade(dir.path(), "--out tas2 --anonymise key.json");
     EXPECT_EQ(readFile(dir / "tas/summary.csv"), readFile(dir / "tas2/summary.csv"));
+    grade(dir.path(), "--out tas3 --anonymise other-key.json");
+    EXPECT_NE(readFile(dir / "tas/summary.csv"), readFile(dir / "tas3/summary.csv"));
     // The control: without --anonymise the names are there, the message's too.
     grade(dir.path(), "--out named");
     EXPECT_NE(readFile(dir / "named/report.html").find("carol/01-raycast/intersect_sphere.glsl:"),
@@ -164,6 +177,8 @@ TEST(GradeWorkflow, BadCourseInputIsOneLineAndWritesNothing) {
     fs::create_directories(dir / "class/alice/01-raycast");
     writeFile(dir / "bad-course.json", R"({"late": {"deadline": "soon"}})");
     writeFile(dir / "bad-roster.csv", "name,id\nx,1\n");
+    writeFile(dir / "late.json",
+              R"({"late": {"deadline": "2026-12-01T00:00Z", "penalty_per_day": 5}})");
     const struct {
         std::string args;
         const char* expected;
@@ -171,7 +186,10 @@ TEST(GradeWorkflow, BadCourseInputIsOneLineAndWritesNothing) {
         {"--lms canvas", "--lms canvas needs --roster"},
         {"--course bad-course.json", "late.deadline: 'soon' is not a time"},
         {"--roster bad-roster.csv", "no 'student' column"},
-        {"--anonymise --roster bad-roster.csv", "--anonymise cannot go with --roster"},
+        {"--anonymise k.json --roster bad-roster.csv", "--anonymise cannot go with --roster"},
+        {"--anonymise out/k.json", "keep the key file outside out"},
+        {"--anonymise bad-course.json", "not a key file"},
+        {"--course late.json", "has a late policy: say when each student submitted"},
         {"--submitted nowhere.csv --course bad-course.json", "not a time"},
         {"--lms moodle --roster bad-roster.csv", "--lms"},
     };

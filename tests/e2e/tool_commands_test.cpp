@@ -147,16 +147,24 @@ namespace {
 
 // A zip of ENTRIES (name -> content) written with libzip, names as given
 // (so that a hostile one such as "../x" can be made).
+// An entry whose name starts with "@link:" is a symbolic link to its text.
 void writeZip(const fs::path& file,
               const std::vector<std::pair<std::string, std::string>>& entries) {
     int err = 0;
     zip_t* z = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
     ASSERT_NE(z, nullptr);
-    for (const auto& [name, text] : entries) {
+    for (const auto& [entry, text] : entries) {
+        const bool link = entry.rfind("@link:", 0) == 0;
+        const std::string name = link ? entry.substr(6) : entry;
         char* copy = static_cast<char*>(malloc(text.size() + 1));
         memcpy(copy, text.data(), text.size());
         zip_source_t* src = zip_source_buffer(z, copy, text.size(), 1);
-        ASSERT_GE(zip_file_add(z, name.c_str(), src, ZIP_FL_ENC_UTF_8), 0) << name;
+        const zip_int64_t index = zip_file_add(z, name.c_str(), src, ZIP_FL_ENC_UTF_8);
+        ASSERT_GE(index, 0) << name;
+        if (link)
+            ASSERT_EQ(zip_file_set_external_attributes(z, zip_uint64_t(index), 0, ZIP_OPSYS_UNIX,
+                                                       zip_uint32_t(0120777) << 16),
+                      0);
     }
     ASSERT_EQ(zip_close(z), 0);
 }
@@ -196,6 +204,39 @@ TEST(PrairieLearn, AZipUploadIsUnpackedAndAHostileOneRefused) {
         << hostile.dump();
     EXPECT_FALSE(fs::exists(dir / "escaped.glsl"));
     EXPECT_FALSE(fs::exists(dir / "hostile" / "escaped.glsl"));
+
+    const struct {
+        const char* name;
+        std::vector<std::pair<std::string, std::string>> entries;
+        const char* expected;
+    } refused[] = {
+        {"absolute", {{"/tmp/escaped.glsl", "x"}}, "outside the upload"},
+        {"link",
+         {{"@link:01-raycast/intersect_sphere.glsl", "../../solution/01-raycast/x.glsl"}},
+         "is a symbolic link"},
+        {"bomb",
+         {{"01-raycast/intersect_sphere.glsl", std::string(65u << 20, ' ')}},
+         "more than 64 MB unpacked"},
+    };
+    for (const auto& r : refused) {
+        nlohmann::json j = gradeForPrairieLearn(
+            dir, r.name, [&](const fs::path& s) { writeZip(s / "up.zip", r.entries); });
+        EXPECT_FALSE(j["gradable"].get<bool>()) << r.name;
+        EXPECT_NE(j["message"].get<std::string>().find(r.expected), std::string::npos)
+            << r.name << ": " << j.dump();
+    }
+
+    // A stage folder uploaded with a link in it (a grader that keeps links):
+    // the link is left out and said so, never followed into the solution.
+    nlohmann::json linked = gradeForPrairieLearn(dir, "linked", [&](const fs::path& s) {
+        fs::create_directories(s / "01-raycast");
+        for (const char* f : {"intersect_sphere.glsl", "find_closest.glsl"})
+            fs::create_symlink(sourceDir() / "solution/01-raycast" / f, s / "01-raycast" / f);
+    });
+    EXPECT_LT(linked["score"].get<double>(), 0.5) << "the solution was not followed";
+    EXPECT_NE(linked["output"].get<std::string>().find("a symbolic link, left out"),
+              std::string::npos)
+        << linked.dump();
 
     nlohmann::json damaged = gradeForPrairieLearn(dir, "damaged", [&](const fs::path& s) {
         writeFile(s / "labs.zip", "PK\x03\x04 not really a zip");

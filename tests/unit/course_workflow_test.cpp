@@ -6,6 +6,7 @@
 #include "csv_text.h"
 #include "error.h"
 #include "handout.h"
+#include "pseudonyms.h"
 #include "stage_list.h"
 #include "test_support.h"
 
@@ -256,10 +257,21 @@ TEST(Handout, TheGuideSaysWhereEveryFileComesFrom) {
               std::string::npos);
 }
 
-TEST(Pseudonyms, StableForASeedAndUnlikeEachOther) {
-    EXPECT_EQ(pseudonym("alice", 7), pseudonym("alice", 7));
-    EXPECT_NE(pseudonym("alice", 7), pseudonym("alice", 8));
-    EXPECT_NE(pseudonym("alice", 7), pseudonym("alicf", 7));
-    EXPECT_EQ(pseudonym("alice", 7).rfind("student-", 0), 0u);
-    EXPECT_EQ(pseudonym("alice", 7).find("alice"), std::string::npos);
+TEST(Pseudonyms, KeyedStableWithTheKeyFileAndUnlikeEachOther) {
+    ScratchDir dir;
+    PseudonymKey key(dir / "key.json");
+    const std::string alice = key.pseudonym("alice");
+    EXPECT_EQ(alice.rfind("student-", 0), 0u);
+    EXPECT_EQ(alice.size(), std::string("student-").size() + 8);
+    EXPECT_EQ(alice.find("alice"), std::string::npos);
+    EXPECT_NE(alice, key.pseudonym("alicf"));
+    EXPECT_EQ(key.nameOf(alice), "alice");
+    key.save();
+    PseudonymKey again(dir / "key.json");
+    EXPECT_EQ(again.pseudonym("alice"), alice) << "the same key file, the same pseudonym";
+    EXPECT_EQ(again.nameOf(alice), "alice");
+    PseudonymKey other(dir / "other.json");
+    EXPECT_NE(other.pseudonym("alice"), alice) << "another key, another pseudonym";
+    writeFile(dir / "bad.json", "{}");
+    EXPECT_THROW(PseudonymKey(dir / "bad.json"), Error);
 }

@@ -36,6 +36,7 @@ packages=(
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # headless EGL on Mesa llvmpipe
   libosmesa6-dev                                   # the OSMesa fallback
   libzip-dev                                       # zip uploads (PrairieLearn keeps a zip as a file)
+  libsodium-dev                                    # keyed pseudonyms (raylab grade --anonymise)
   libcli11-dev nlohmann-json3-dev                  # command line, scene files (universe on Ubuntu)
   libtinyobjloader-dev                             # OBJ meshes (fur track; universe on Ubuntu)
 )

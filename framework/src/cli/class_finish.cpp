@@ -89,20 +89,4 @@ void matchMistakes(ClassResult& result) {
     }
 }
 
-std::string pseudonym(const std::string& name, unsigned seed) {
-    // FNV-1a over the seed and the name: stable, and without the seed (kept
-    // secret) not worked back from a list of names.
-    std::uint64_t h = 1469598103934665603ull;
-    auto mix = [&h](unsigned char c) { h = (h ^ c) * 1099511628211ull; };
-    for (int i = 0; i < 4; ++i) mix((unsigned char)(seed >> (8 * i)));
-    for (char c : name) mix((unsigned char)c);
-    // splitmix64's finaliser: names that differ in one letter differ everywhere.
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-    h ^= h >> 31;
-    char out[32];
-    std::snprintf(out, sizeof out, "student-%08x", unsigned(h >> 32));
-    return out;
-}
-
 }  // namespace raylab

@@ -1,7 +1,7 @@
 #pragma once
 // What `raylab grade` does with a graded class before it writes the reports:
 // the course's late policy, the roster, the class summary's catalogued
-// mistakes, pseudonyms. Each step works on the ClassResult only, so a
+// mistakes. Each step works on the ClassResult only, so a
 // --merge of shares and a --only regrade finish the class the same way.
 #include "course_file.h"
 #include "grade_result.h"
@@ -27,9 +27,5 @@ std::vector<std::string> attachRoster(ClassResult& result,
 // result.mistakes: per catalogued mistake of the graded stages, how many
 // graded stages failed exactly the checks it fails (seeded views aside).
 void matchMistakes(ClassResult& result);
-
-// A stable pseudonym for folder NAME under SEED ("student-3f9a2c1e"): the
-// same student gets the same one in every run with the same seed.
-std::string pseudonym(const std::string& name, unsigned seed);
 
 }  // namespace raylab

@@ -16,6 +16,7 @@
 #include "grade_shards.h"
 #include "grade_stage.h"
 #include "paths.h"
+#include "pseudonyms.h"
 #include "stage_list.h"
 
 #include <unistd.h>
@@ -226,7 +227,10 @@ std::string withoutName(std::string text, const std::string& name, const std::st
     if (name.size() >= 4) forms.push_back(name);
     for (const std::string& form : forms) {
         if (form.empty()) continue;
-        for (std::size_t at; (at = text.find(form)) != std::string::npos;)
+        // On after each replacement: the pseudonym may hold the name
+        // ("stud" in "student-...").
+        for (std::size_t at = text.find(form); at != std::string::npos;
+             at = text.find(form, at + pseudonym.size()))
             text.replace(at, form.size(), pseudonym);
     }
     return text;
@@ -300,8 +304,13 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     checkFoldersApart(submissions, out);
     // What the reports call each student: the folder's name, or its pseudonym.
     std::vector<std::string> shown;
-    for (const std::string& name : students)
-        shown.push_back(g.anonymise ? pseudonym(name, g.seed) : name);
+    if (!g.anonymise.empty()) {
+        PseudonymKey key(g.anonymise);
+        for (const std::string& name : students) shown.push_back(key.pseudonym(name));
+        key.save();
+    } else {
+        shown = students;
+    }
     std::error_code ec;
     // Only what grading writes is cleared: no stale result of an earlier run
     // may be mixed into this one. A regrade of one student (--only) clears
@@ -374,7 +383,8 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     result.students.resize(students.size());
     std::map<std::pair<std::size_t, std::string>, StageResult> graded;
     std::deque<Item> queue;
-    result.anonymised = g.anonymise;
+    result.anonymised = !g.anonymise.empty();
+    result.courseDigest = fileDigest(g.course);
     for (std::size_t i = 0; i < students.size(); ++i) {
         result.students[i].name = shown[i];
         fs::create_directories(studentFolder(out, shown[i]), ec);
@@ -423,12 +433,12 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
                     haveResult = true;
                 } catch (const Error&) {}
             }
-            if (g.anonymise)
+            if (!g.anonymise.empty())
                 scrubNames(itemDir / "log.txt", students[item.student], shown[item.student],
                            submissions);
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
-            if (g.anonymise) {
+            if (!g.anonymise.empty()) {
                 r.message = withoutName(r.message, students[item.student], shown[item.student],
                                         submissions);
                 for (CheckResult& c : r.checks)
@@ -475,8 +485,30 @@ void checkReportOptions(const GradeOptions& g) {
                     "'");
     if (!g.lms.empty() && g.roster.empty())
         throw Error("--lms canvas needs --roster FILE (Canvas matches students by their ids)");
-    if (g.anonymise && (!g.roster.empty() || !g.lms.empty()))
+    if (!g.anonymise.empty() && (!g.roster.empty() || !g.lms.empty()))
         throw Error("--anonymise cannot go with --roster or --lms: their ids name the students");
+    if (!g.anonymise.empty()) {
+        // The key must not reach the TAs with the report.
+        std::error_code ec;
+        const fs::path key = fs::weakly_canonical(g.anonymise, ec);
+        for (const std::string& folder : {g.outDir, g.submissions}) {
+            if (folder.empty()) continue;
+            const fs::path f = fs::weakly_canonical(folder, ec);
+            if (std::mismatch(f.begin(), f.end(), key.begin(), key.end()).first == f.end())
+                throw Error("--anonymise " + g.anonymise + ": keep the key file outside " + folder +
+                            " (whoever has it can tell whose each pseudonym is)");
+        }
+        PseudonymKey check(g.anonymise);  // a file that is not a key stops here
+    }
+    if (!g.submitted.empty() && (g.course.empty() || !readCourseFile(g.course).late))
+        std::fprintf(stderr, "raylab grade: --submitted is used by a course file's late policy; "
+                             "there is none, so it changes nothing\n");
+    if (g.shard.empty() && !g.course.empty() && readCourseFile(g.course).late &&
+        g.submitted.empty())
+        throw Error("--course " + g.course +
+                    " has a late policy: say when each student submitted, --submitted CSV "
+                    "(student,submitted[,stage]) or --submitted mtime (the stage folders' "
+                    "modification times, when they were kept)");
     if (!g.roster.empty()) readRoster(g.roster);
     if (!g.course.empty()) readCourseFile(g.course);
     if (!g.submitted.empty() && g.submitted != "mtime")
@@ -485,27 +517,45 @@ void checkReportOptions(const GradeOptions& g) {
 
 }  // namespace
 
-int cmdGrade(const GradeOptions& g) {
-    checkReportOptions(g);
-    const fs::path out = g.outDir;
-    if (!g.shard.empty() && !g.only.empty()) throw Error("--only and --shard exclude each other");
-    // --only: the earlier run's results, checked to be of the same grading.
+int cmdGrade(const GradeOptions& options) {
+    const fs::path out = options.outDir;
+    if (!options.shard.empty() && !options.only.empty())
+        throw Error("--only and --shard exclude each other");
+    // --only: the earlier run's results, checked to be of the same grading,
+    // and its course file, roster, times and export, unless given again.
+    GradeOptions g = options;
     std::optional<ClassResult> earlier;
     if (!g.only.empty()) {
-        earlier = readClassFile(out);
+        FinishSettings before;
+        earlier = readClassFile(out, &before);
+        if (g.course.empty()) g.course = before.course;
+        if (g.roster.empty()) g.roster = before.roster;
+        if (g.submitted.empty()) g.submitted = before.submitted;
+        if (g.lms.empty()) g.lms = before.lms;
+        std::error_code ec;
+        if (!g.course.empty() && !fs::is_regular_file(g.course, ec))
+            throw Error("--only: " + out.string() + " was graded with --course " + g.course +
+                        ", which is gone; give it again");
+        if (earlier->courseDigest != fileDigest(g.course))
+            throw Error("--only: " + out.string() + " was graded " +
+                        (earlier->courseDigest.empty() ? std::string("without a course file")
+                                                       : "with another course file's weights") +
+                        "; one report cannot mix weights (grade the class again)");
         if (earlier->seed != g.seed)
             throw Error("--only: " + out.string() + " was graded with --seed " +
                         std::to_string(earlier->seed) + ", not " + std::to_string(g.seed) +
                         " (its views would differ from the other students')");
-        if (earlier->anonymised != g.anonymise)
+        if (earlier->anonymised != !g.anonymise.empty())
             throw Error(std::string("--only: ") + out.string() + " was graded " +
-                        (earlier->anonymised ? "with" : "without") + " --anonymise");
+                        (earlier->anonymised ? "with --anonymise KEYFILE: give it again"
+                                             : "without --anonymise"));
         std::vector<std::string> ids;
         for (const StageInfo* s : stagesToGrade(g.stages)) ids.push_back(s->id);
         if (!g.stages.empty() && ids != earlier->stages)
             throw Error("--only: " + out.string() +
                         " graded other stages; give its --stages or none");
     }
+    checkReportOptions(g);
     GradeOptions run = g;
     if (earlier) {
         run.stages.clear();
@@ -539,7 +589,7 @@ int cmdGrade(const GradeOptions& g) {
                     g.only.c_str(), result.seconds, merged.students.size() - 1);
         result = merged;
     }
-    writeClassFile(result, out);
+    writeClassFile(result, {g.course, "", g.roster, "", g.submitted, g.lms}, out);
     finishAndReport(result, g, out);
     std::printf("graded in %.1f s; report: %s\n", result.seconds,
                 fs::absolute(out / "report.html").lexically_normal().c_str());
@@ -570,15 +620,17 @@ void finishAndReport(ClassResult result, const GradeOptions& g, const fs::path& 
     if (!g.course.empty()) {
         const CourseSettings course = readCourseFile(g.course);
         if (course.late) {
-            const std::string source = g.submitted.empty() ? "mtime" : g.submitted;
             if (g.submitted.empty())
-                std::printf("late policy: submission times from the stage folders' modification "
-                            "times (--submitted mtime)\n");
-            const SubmissionTimes times = SubmissionTimes::read(source, g.submissions);
+                throw Error("--course " + g.course +
+                            " has a late policy: give --submitted (a CSV, or mtime)");
+            const SubmissionTimes times = SubmissionTimes::read(g.submitted, g.submissions);
             std::map<std::string, std::string> folderOf;  // result name -> the times' name
-            if (result.anonymised)
-                for (const std::string& name : times.students())
-                    folderOf[pseudonym(name, result.seed)] = name;
+            if (result.anonymised) {
+                if (g.anonymise.empty())
+                    throw Error("the names are pseudonyms: a late policy needs --anonymise KEYFILE "
+                                "to find each student's submission time");
+                folderOf = PseudonymKey(g.anonymise).known();
+            }
             applyLatePolicy(result, *course.late, times, folderOf);
         }
     }
@@ -590,6 +642,8 @@ void finishAndReport(ClassResult result, const GradeOptions& g, const fs::path& 
     }
     matchMistakes(result);
     writeClassReports(result, out);
+    std::error_code ec;
+    if (g.lms.empty()) fs::remove(out / "canvas.csv", ec);  // never one of an earlier run
     if (g.lms == "canvas") {
         writeCanvasCsv(result, out / "canvas.csv", "RayLab ");
         std::printf("canvas.csv: import it in Canvas under Grades > Import\n");
@@ -637,18 +691,18 @@ Command gradeCommand() {
                            "canvas_id, login_id, section: ids in summary.csv, and for --lms");
             cmd.add_option("--lms", g->lms, "also write OUT/canvas.csv, Canvas's gradebook import")
                 ->check(CLI::IsMember({"canvas"}));
-            cmd.add_flag("--anonymise,--anonymize", g->anonymise,
-                         "pseudonyms (stable for the same --seed) instead of folder names in "
-                         "every report file, for TAs");
+            cmd.add_option("--anonymise,--anonymize", g->anonymise,
+                           "KEYFILE: pseudonyms instead of folder names in every report file, "
+                           "for TAs; KEYFILE (made when missing; keep it outside --out) holds the "
+                           "key and whose each pseudonym is");
             cmd.add_option("--only", g->only,
                            "regrade this one student into the existing report in --out (the "
                            "report is rewritten; nothing else changes)");
             return std::function<int()>([=] {
                 if (!merge->empty()) {
                     if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty() ||
-                        !g->only.empty() || g->anonymise)
-                        throw Error("--merge takes no --submissions, --out, --shard, --only or "
-                                    "--anonymise");
+                        !g->only.empty())
+                        throw Error("--merge takes no --submissions, --out, --shard or --only");
                     if (g->submitted == "mtime")
                         throw Error(
                             "--merge: --submitted mtime needs the class folder; give a CSV");

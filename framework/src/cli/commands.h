@@ -71,12 +71,12 @@ struct GradeOptions {
     unsigned seed = 0;  // of the seeded views; keep it secret to prevent tuning
     std::string shard;  // "K/N": grade that share of the class only (grade_shards.h)
     // The course's workflow (class_finish.h):
-    std::string course;      // --course FILE: weights over stage.json's, a late policy
-    std::string submitted;   // --submitted CSV|mtime: when each student submitted
-    std::string roster;      // --roster CSV: ids (summary.csv) and what an LMS needs
-    std::string lms;         // --lms canvas: also OUT/canvas.csv
-    bool anonymise = false;  // pseudonyms instead of folder names in every report file
-    std::string only;        // --only NAME: regrade one student into OUT's report
+    std::string course;     // --course FILE: weights over stage.json's, a late policy
+    std::string submitted;  // --submitted CSV|mtime: when each student submitted
+    std::string roster;     // --roster CSV: ids (summary.csv) and what an LMS needs
+    std::string lms;        // --lms canvas: also OUT/canvas.csv
+    std::string anonymise;  // --anonymise KEYFILE: pseudonyms (pseudonyms.h) in every report file
+    std::string only;       // --only NAME: regrade one student into OUT's report
 };
 int cmdGrade(const GradeOptions& grade);
 

@@ -2,6 +2,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
+#include "course_file.h"
 #include "error.h"
 #include "grade_stage.h"
 #include "json_reader.h"
@@ -54,6 +55,7 @@ json classResultJson(const ClassResult& result) {
                 {"machine", result.machine},
                 {"seconds", result.seconds},
                 {"anonymised", result.anonymised},
+                {"course_digest", result.courseDigest},
                 {"students", json::array()}};
     for (const StudentResult& st : result.students) {
         json stages = json::array();
@@ -70,6 +72,7 @@ ClassResult classResultFrom(const json& doc) {
     result.machine = doc.at("machine").get<std::string>();
     result.seconds = doc.at("seconds").get<double>();
     result.anonymised = doc.value("anonymised", false);
+    result.courseDigest = doc.value("course_digest", "");
     for (const json& st : doc.at("students")) {
         StudentResult student;
         student.name = st.at("name").get<std::string>();
@@ -91,18 +94,43 @@ void writeShardFile(const ClassResult& result, const Shard& shard, const fs::pat
     writeTextFileAtomic(outDir / kShardFile, doc.dump(1) + "\n");
 }
 
-void writeClassFile(const ClassResult& result, const fs::path& outDir) {
-    writeTextFileAtomic(outDir / kClassFile, classResultJson(result).dump(1) + "\n");
+std::string fileDigest(const std::string& file) {
+    if (file.empty()) return "";
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the text: a change, not an attack
+    for (char c : readTextFile(file)) h = (h ^ std::uint8_t(c)) * 1099511628211ull;
+    char out[24];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+    return out;
 }
 
-ClassResult readClassFile(const fs::path& outDir) {
+void writeClassFile(const ClassResult& result, const FinishSettings& settings,
+                    const fs::path& outDir) {
+    json doc = classResultJson(result);
+    doc["finish"] = {{"course", settings.course},
+                     {"roster", settings.roster},
+                     {"roster_digest", fileDigest(settings.roster)},
+                     {"submitted", settings.submitted},
+                     {"lms", settings.lms}};
+    writeTextFileAtomic(outDir / kClassFile, doc.dump(1) + "\n");
+}
+
+ClassResult readClassFile(const fs::path& outDir, FinishSettings* settings) {
     const fs::path file = outDir / kClassFile;
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
         throw Error(outDir.string() + ": no " + kClassFile +
                     " (not the output of a finished `raylab grade` run)");
     try {
-        return classResultFrom(json::parse(readTextFile(file)));
+        const json doc = json::parse(readTextFile(file));
+        if (settings) {
+            const json f = doc.value("finish", json::object());
+            settings->course = f.value("course", "");
+            settings->roster = f.value("roster", "");
+            settings->rosterDigest = f.value("roster_digest", "");
+            settings->submitted = f.value("submitted", "");
+            settings->lms = f.value("lms", "");
+        }
+        return classResultFrom(doc);
     } catch (const json::exception& e) {
         throw Error(file.string() + ": not a class file this raylab wrote (" + e.what() + ")");
     }
@@ -142,6 +170,10 @@ int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& opti
         throw Error(
             "--merge OUT SHARD_DIR...: give the output folder and at least one shard folder");
     const fs::path out = args[0];
+    // What finishing needs is there before anything is written.
+    if (!options.course.empty() && readCourseFile(options.course).late && options.submitted.empty())
+        throw Error("--merge --course " + options.course +
+                    " has a late policy: give --submitted CSV (student,submitted[,stage])");
     std::vector<ShardFile> shards;
     for (std::size_t i = 1; i < args.size(); ++i) shards.push_back(readShardFile(args[i]));
 
@@ -149,6 +181,12 @@ int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& opti
     const ShardFile& first = shards.front();
     std::set<int> seen;
     for (const ShardFile& s : shards) {
+        if (s.result.courseDigest != fileDigest(options.course))
+            throw Error(s.dir.string() +
+                        (s.result.courseDigest.empty()
+                             ? " was graded without a course file: merge it without --course"
+                             : " was graded with a course file's weights: give --merge the same "
+                               "--course (its text unchanged)"));
         if (s.count != first.count || s.result.seed != first.result.seed ||
             s.result.stages != first.result.stages ||
             s.result.anonymised != first.result.anonymised)
@@ -171,6 +209,7 @@ int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& opti
     merged.stages = first.result.stages;
     merged.machine = first.result.machine;
     merged.anonymised = first.result.anonymised;
+    merged.courseDigest = first.result.courseDigest;
     std::map<std::string, const ShardFile*> owner;
     for (const ShardFile& s : shards) {
         merged.seconds = std::max(merged.seconds, s.result.seconds);  // the shares ran side by side
@@ -204,7 +243,8 @@ int cmdGradeMerge(const std::vector<std::string>& args, const GradeOptions& opti
     }
     std::printf("raylab grade --merge: %zu shares, %zu students x %zu stages\n", shards.size(),
                 merged.students.size(), merged.stages.size());
-    writeClassFile(merged, out);
+    writeClassFile(merged, {options.course, "", options.roster, "", options.submitted, options.lms},
+                   out);
     finishAndReport(merged, options, out);
     std::printf("merged; report: %s\n",
                 fs::absolute(out / "report.html").lexically_normal().c_str());

@@ -32,8 +32,17 @@ void writeShardFile(const ClassResult& result, const Shard& shard,
 
 // OUT/class.json: every result of a whole run as graded (before a late
 // policy or a roster): what `raylab grade --only NAME` regrades one student into.
-void writeClassFile(const ClassResult& result, const std::filesystem::path& outDir);
-ClassResult readClassFile(const std::filesystem::path& outDir);  // throws Error
+// What finished the reports (the options of the course's workflow), kept in
+// class.json so that --only finishes the class the same way.
+struct FinishSettings {
+    std::string course, courseDigest, roster, rosterDigest, submitted, lms;
+};
+void writeClassFile(const ClassResult& result, const FinishSettings& settings,
+                    const std::filesystem::path& outDir);
+ClassResult readClassFile(const std::filesystem::path& outDir,
+                          FinishSettings* settings = nullptr);  // throws Error
+// A digest of FILE's text ("" for no file): what tells a changed course file.
+std::string fileDigest(const std::string& file);
 
 // The class reports in OUT: <student>/results.json, summary.csv, junit.xml,
 // report.html (canvas.csv with --lms canvas), and the summary table on

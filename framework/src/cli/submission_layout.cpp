@@ -38,6 +38,25 @@ std::vector<fs::directory_entry> entries(const fs::path& dir) {
     return out;
 }
 
+// A stage folder as uploaded, its links left out (one into solution/ would
+// hand in the solution) and said so.
+void copyStageFolder(const fs::path& from, const fs::path& to, std::vector<std::string>& notes) {
+    fs::create_directories(to);
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec)) {
+        const fs::path rel = it->path().lexically_relative(from);
+        if (it->is_symlink(ec)) {
+            notes.push_back(from.filename().string() + "/" + rel.generic_string() +
+                            ": a symbolic link, left out");
+            if (it->is_directory(ec)) it.disable_recursion_pending();
+        } else if (it->is_directory(ec)) {
+            fs::create_directories(to / rel);
+        } else if (it->is_regular_file(ec)) {
+            fs::copy_file(it->path(), to / rel);
+        }
+    }
+}
+
 }  // namespace
 
 SubmissionLayout layOutSubmission(const fs::path& uploaded, const std::vector<std::string>& stages,
@@ -90,7 +109,7 @@ SubmissionLayout layOutSubmission(const fs::path& uploaded, const std::vector<st
             const std::string name = e.path().filename().string();
             if (e.is_symlink()) r.notes.push_back(name + ": a symbolic link, left out");
             else if (e.is_directory() && isStageId(name))
-                fs::copy(e.path(), labRoot / name, fs::copy_options::recursive);
+                copyStageFolder(e.path(), labRoot / name, r.notes);
             else r.notes.push_back(name + ": not a stage folder, left out");
         }
         return r;

@@ -57,8 +57,10 @@ bool isZipFile(const fs::path& file) {
 void unpackZip(const fs::path& zipFile, const fs::path& into, const ZipLimits& limits) {
     const std::string label = zipFile.filename().string();
     int err = 0;
-    std::unique_ptr<zip_t, ZipCloser> z(
-        zip_open(zipFile.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &err));
+    // No ZIP_CHECKCONS: libzip 1.7 (Debian 12, Ubuntu 22.04) then refuses the
+    // zips macOS's Finder makes (local and central headers differ); every
+    // entry's name, kind and size is checked here instead.
+    std::unique_ptr<zip_t, ZipCloser> z(zip_open(zipFile.c_str(), ZIP_RDONLY, &err));
     if (!z) {
         zip_error_t e;
         zip_error_init_with_code(&e, err);
@@ -100,11 +102,15 @@ void unpackZip(const fs::path& zipFile, const fs::path& into, const ZipLimits& l
         fs::create_directories(into);
         for (const fs::path& f : folders) fs::create_directories(into / f);
         std::vector<char> buffer(1 << 16);
+        std::uint64_t unpacked = 0;
         for (const auto& [index, rel] : files) {
             std::unique_ptr<zip_file_t, FileCloser> in(zip_fopen_index(z.get(), index, 0));
             if (!in)
                 throw Error(label + ": " + rel.string() + " cannot be read (" +
                             zip_strerror(z.get()) + ")");
+            zip_stat_t st;
+            zip_stat_init(&st);
+            zip_stat_index(z.get(), index, 0, &st);
             fs::create_directories((into / rel).parent_path());
             std::ofstream out(into / rel, std::ios::binary | std::ios::trunc);
             std::uint64_t written = 0;
@@ -113,8 +119,11 @@ void unpackZip(const fs::path& zipFile, const fs::path& into, const ZipLimits& l
                 if (n < 0) throw Error(label + ": " + rel.string() + " is damaged");
                 if (n == 0) break;
                 written += std::uint64_t(n);
+                unpacked += std::uint64_t(n);
                 // The sizes in the directory were checked; the data must agree.
-                if (written > limits.maxBytes)
+                if (written > st.size)
+                    throw Error(label + ": " + rel.string() + " holds more than its entry says");
+                if (unpacked > limits.maxBytes)
                     throw Error(label + ": more than " + std::to_string(limits.maxBytes >> 20) +
                                 " MB unpacked");
                 out.write(buffer.data(), std::streamsize(n));

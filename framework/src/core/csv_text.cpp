@@ -48,7 +48,15 @@ CsvTable parseCsv(const std::string& input, const std::string& where) {
     std::string field;
     bool quoted = false, fieldStarted = false;
     int line = 1, recordLine = 1;
+    bool wasQuoted = false;
     auto endField = [&] {
+        // Spreadsheets pad cells: an unquoted field's surrounding spaces go.
+        if (!wasQuoted) {
+            const auto a = field.find_first_not_of(" \t");
+            field = a == std::string::npos ? ""
+                                           : field.substr(a, field.find_last_not_of(" \t") - a + 1);
+        }
+        wasQuoted = false;
         record.push_back(field);
         field.clear();
         fieldStarted = false;
@@ -76,8 +84,9 @@ CsvTable parseCsv(const std::string& input, const std::string& where) {
             }
             continue;
         }
-        if (c == '"' && !fieldStarted) {
-            quoted = fieldStarted = true;
+        if (c == '"' && field.find_first_not_of(" \t") == std::string::npos) {
+            field.clear();  // spaces before an opening quote
+            quoted = fieldStarted = wasQuoted = true;
         } else if (c == ',') {
             endField();
         } else if (c == '\n' || c == '\r') {

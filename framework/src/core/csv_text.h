@@ -14,7 +14,8 @@ std::string csvText(const std::string& raw);
 // A CSV file an instructor gives (a roster, submission times): RFC 4180
 // fields (quoted ones may hold commas, quotes and line breaks), LF or CRLF
 // line ends, a UTF-8 byte-order mark (spreadsheets write one) skipped, blank
-// lines skipped. The first row names the columns.
+// lines skipped, spaces around an unquoted field dropped. The first row
+// names the columns.
 struct CsvTable {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;  // each as long as the header

@@ -78,7 +78,9 @@ std::int64_t parseIsoTime(const std::string& text, const std::string& where) {
         offset = 0;
     } else if (at + 6 == text.size() && (text[at] == '+' || text[at] == '-') &&
                text[at + 3] == ':') {
-        const long minutes = digits(text, at + 1, 2, what) * 60L + digits(text, at + 4, 2, what);
+        const int hours = digits(text, at + 1, 2, what), mins = digits(text, at + 4, 2, what);
+        if (hours > 14 || mins > 59) throw Error(what);  // zones span -12:00 .. +14:00
+        const long minutes = hours * 60L + mins;
         offset = (text[at] == '+' ? 1 : -1) * minutes * 60L;
     } else {
         throw Error(what);

@@ -19,7 +19,7 @@
 //
 // "grading" is stage.json's (stage_grading.h), over the stage's own: what it
 // sets replaces, the rest stays. The late policy takes penalty_per_day percent
-// of a stage's points for every day or part of a day past its deadline (after
+// of the score a stage earned for every day or part of a day past its deadline (after
 // the grace minutes), at most max_penalty percent; a stage without a deadline
 // is never late. Times are ISO 8601 with a zone: "2026-12-10T23:59:00Z",
 // "2026-12-10T23:59+01:00".
@@ -37,12 +37,12 @@ struct LatePolicy {
     std::optional<std::int64_t> deadline;           // Unix seconds, every stage
     std::map<std::string, std::int64_t> deadlines;  // stage id -> its own
     double graceMinutes = 0;
-    double penaltyPerDay = 0;  // percent of the stage's points
+    double penaltyPerDay = 0;  // percent of the score the stage earned
     double maxPenalty = 100;   // percent
     std::optional<std::int64_t> deadlineOf(const std::string& stage) const;
     // Whole days (or parts) past the deadline; 0 when on time or no deadline.
     int daysLate(const std::string& stage, std::int64_t submitted) const;
-    // The percent of the points taken.
+    // The percent of the earned score taken.
     double penaltyPercent(const std::string& stage, std::int64_t submitted) const;
 };
 

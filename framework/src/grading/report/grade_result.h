@@ -83,8 +83,12 @@ struct ClassResult {
     std::vector<MistakeMatch> mistakes;  // of the graded stages; empty: no catalogue
     unsigned seed = 0;                   // of the seeded camera poses
     bool anonymised = false;             // names are pseudonyms (raylab grade --anonymise)
-    std::string machine;                 // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
-    double seconds = 0;                  // wall time of the whole run
+    // The course file whose weights the scores were computed under, as a
+    // digest of its text ("" for stage.json's own): shares and regrades
+    // under other weights are refused.
+    std::string courseDigest;
+    std::string machine;  // e.g. "OpenGL 4.5 (Core Profile) Mesa 22.3.6 on llvmpipe"
+    double seconds = 0;   // wall time of the whole run
 };
 
 }  // namespace raylab

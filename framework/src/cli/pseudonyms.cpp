@@ -1,0 +1,83 @@
+#include "pseudonyms.h"
+
+#include "atomic_file.h"
+#include "error.h"
+#include "paths.h"
+
+#include <nlohmann/json.hpp>
+#include <sodium.h>
+
+#include <cstdio>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string hex(const unsigned char* bytes, std::size_t n) {
+    std::string out;
+    char two[3];
+    for (std::size_t i = 0; i < n; ++i) {
+        std::snprintf(two, sizeof two, "%02x", bytes[i]);
+        out += two;
+    }
+    return out;
+}
+
+}  // namespace
+
+PseudonymKey::PseudonymKey(const fs::path& keyFile) : file_(keyFile) {
+    if (sodium_init() < 0) throw Error("libsodium cannot start");
+    const std::string shown = "--anonymise " + keyFile.string();
+    std::error_code ec;
+    if (!fs::exists(keyFile, ec)) {
+        key_.resize(crypto_generichash_KEYBYTES);
+        randombytes_buf(key_.data(), key_.size());
+        return;
+    }
+    try {
+        const nlohmann::json doc = nlohmann::json::parse(readTextFile(keyFile));
+        const std::string h = doc.at("key").get<std::string>();
+        if (h.size() != 2 * crypto_generichash_KEYBYTES) throw Error("");
+        key_.resize(crypto_generichash_KEYBYTES);
+        std::size_t n = 0;
+        if (sodium_hex2bin(reinterpret_cast<unsigned char*>(key_.data()), key_.size(), h.c_str(),
+                           h.size(), nullptr, &n, nullptr) != 0 ||
+            n != key_.size())
+            throw Error("");
+        const nlohmann::json known = doc.value("pseudonyms", nlohmann::json::object());
+        for (const auto& [pseudonym, name] : known.items())
+            names_[pseudonym] = name.get<std::string>();
+    } catch (const std::exception&) {
+        throw Error(shown + ": not a key file raylab wrote (a new path makes a new key)");
+    }
+}
+
+std::string PseudonymKey::pseudonym(const std::string& name) {
+    unsigned char hash[16];
+    crypto_generichash(hash, sizeof hash, reinterpret_cast<const unsigned char*>(name.data()),
+                       name.size(), reinterpret_cast<const unsigned char*>(key_.data()),
+                       key_.size());
+    const std::string p = "student-" + hex(hash, 4);
+    names_[p] = name;
+    return p;
+}
+
+std::string PseudonymKey::nameOf(const std::string& pseudonym) const {
+    auto it = names_.find(pseudonym);
+    return it == names_.end() ? "" : it->second;
+}
+
+void PseudonymKey::save() const {
+    nlohmann::json doc = {
+        {"comment", "raylab grade --anonymise: the key of the pseudonyms and whose each is. Keep "
+                    "it from the TAs; the same file gives the same pseudonyms next time."},
+        {"key", hex(reinterpret_cast<const unsigned char*>(key_.data()), key_.size())},
+        {"pseudonyms", names_}};
+    writeTextFileAtomic(file_, doc.dump(1) + "\n");
+    std::error_code ec;
+    fs::permissions(file_, fs::perms::owner_read | fs::perms::owner_write, ec);
+}
+
+}  // namespace raylab

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <sstream>
 
 using namespace raylab::test;
 using nlohmann::json;
@@ -161,6 +162,13 @@ TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
               std::string::npos)
         << "the compile error still names the file";
     EXPECT_NE(readFile(dir / "tas/summary.csv").find("student-"), std::string::npos);
+    // In the pseudonyms' order, not the names': a class list must not tell them.
+    std::vector<std::string> rows;
+    std::istringstream csv(readFile(dir / "tas/summary.csv"));
+    for (std::string line; std::getline(csv, line);)
+        if (line.rfind("student-", 0) == 0) rows.push_back(line.substr(0, line.find(',')));
+    EXPECT_EQ(rows.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(rows.begin(), rows.end()));
     // The same key gives the same pseudonyms; another key others.
     grade(dir.path(), "--out tas2 --anonymise key.json");
     EXPECT_EQ(readFile(dir / "tas/summary.csv"), readFile(dir / "tas2/summary.csv"));

@@ -12,6 +12,7 @@ namespace raylab {
 
 void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const SubmissionTimes& times,
                      const std::map<std::string, std::string>& folderOf) {
+    std::vector<std::string> untimed;  // said on the console: a misspelt name escapes the policy
     for (StudentResult& st : result.students) {
         auto folder = folderOf.find(st.name);
         const std::string name = folder == folderOf.end() ? st.name : folder->second;
@@ -22,6 +23,7 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
             const std::optional<std::int64_t> when = times.of(name, s.stage);
             if (!when) {
                 s.lateNote = "no submission time in " + times.source() + ": taken as on time";
+                untimed.push_back(st.name + " " + s.stage);
                 continue;
             }
             const int days = policy.daysLate(s.stage, *when);
@@ -36,6 +38,16 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
                           raw);
             s.lateNote = note;
         }
+    }
+    if (!untimed.empty()) {
+        std::string list;
+        for (std::size_t i = 0; i < untimed.size() && i < 5; ++i)
+            list += (i ? ", " : "") + untimed[i];
+        std::fprintf(stderr,
+                     "raylab grade: %zu graded stage%s no submission time in %s (taken as on "
+                     "time): %s%s\n",
+                     untimed.size(), untimed.size() == 1 ? " has" : "s have",
+                     times.source().c_str(), list.c_str(), untimed.size() > 5 ? ", ..." : "");
     }
 }
 

@@ -342,15 +342,15 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
         return true;
     };
 
-    std::printf("raylab grade: %zu student%s x %zu stage%s%s, %d jobs, timeout %.0f s, memory %ld "
-                "MB%s\n",
+    std::printf("raylab grade: %zu student%s x %zu stage%s%s, %d job%s, timeout %.0f s, memory "
+                "%ld MB%s\n",
                 students.size(), students.size() == 1 ? "" : "s", stages.size(),
                 stages.size() == 1 ? "" : "s",
                 shard.count > 1 ? (" (share " + std::to_string(shard.index) + "/" +
                                    std::to_string(shard.count) + ")")
                                       .c_str()
                                 : "",
-                g.jobs, g.timeoutSeconds, g.memoryMb,
+                g.jobs, g.jobs == 1 ? "" : "s", g.timeoutSeconds, g.memoryMb,
                 g.seed == 0 ? ", seed 0 (give --seed N and keep it secret)" : "");
     std::fflush(stdout);
 
@@ -493,7 +493,8 @@ void checkReportOptions(const GradeOptions& g) {
         const fs::path key = fs::weakly_canonical(g.anonymise, ec);
         for (const std::string& folder : {g.outDir, g.submissions}) {
             if (folder.empty()) continue;
-            const fs::path f = fs::weakly_canonical(folder, ec);
+            fs::path f = fs::weakly_canonical(folder, ec);
+            if (f.filename().empty()) f = f.parent_path();  // "graded/" is the folder graded
             if (std::mismatch(f.begin(), f.end(), key.begin(), key.end()).first == f.end())
                 throw Error("--anonymise " + g.anonymise + ": keep the key file outside " + folder +
                             " (whoever has it can tell whose each pseudonym is)");
@@ -565,6 +566,11 @@ int cmdGrade(const GradeOptions& options) {
     const std::optional<ClassResult> graded = gradeClass(run);
     if (!graded) return 130;  // interrupted: no report
     ClassResult result = *graded;
+    // Pseudonyms in their own order: the folders' (alphabetical) order would
+    // let a class list tell whose each is.
+    if (result.anonymised)
+        std::sort(result.students.begin(), result.students.end(),
+                  [](const StudentResult& a, const StudentResult& b) { return a.name < b.name; });
     // The reports; a share writes its results for --merge instead.
     if (!g.shard.empty()) {
         const Shard shard = parseShard(g.shard);
@@ -587,9 +593,16 @@ int cmdGrade(const GradeOptions& options) {
         std::printf("raylab grade --only %s: regraded in %.1f s; the other %zu students' results "
                     "are as they were\n",
                     g.only.c_str(), result.seconds, merged.students.size() - 1);
+        merged.seconds = result.seconds;
         result = merged;
     }
-    writeClassFile(result, {g.course, "", g.roster, "", g.submitted, g.lms}, out);
+    // Absolute paths: --only may run from another folder.
+    auto absolute = [](const std::string& p) {
+        return p.empty() || p == "mtime" ? p : fs::absolute(p).lexically_normal().string();
+    };
+    writeClassFile(result,
+                   {absolute(g.course), "", absolute(g.roster), "", absolute(g.submitted), g.lms},
+                   out);
     finishAndReport(result, g, out);
     std::printf("graded in %.1f s; report: %s\n", result.seconds,
                 fs::absolute(out / "report.html").lexically_normal().c_str());
@@ -636,9 +649,25 @@ void finishAndReport(ClassResult result, const GradeOptions& g, const fs::path& 
     }
     if (!g.roster.empty()) {
         const std::vector<std::string> unlisted = attachRoster(result, readRoster(g.roster));
-        for (const std::string& name : unlisted)
-            std::fprintf(stderr, "raylab grade: %s is not in the roster (no id in summary.csv%s)\n",
-                         name.c_str(), g.lms.empty() ? "" : ", left out of canvas.csv");
+        if (!unlisted.empty()) {
+            std::string names;
+            for (std::size_t i = 0; i < unlisted.size() && i < 5; ++i)
+                names += (i ? ", " : "") + unlisted[i];
+            std::fprintf(stderr,
+                         "raylab grade: %zu student folder%s not in the roster (%s%s): no id in "
+                         "summary.csv%s\n",
+                         unlisted.size(), unlisted.size() == 1 ? " is" : "s are", names.c_str(),
+                         unlisted.size() > 5 ? ", ..." : "",
+                         g.lms.empty() ? "" : ", left out of canvas.csv");
+        }
+        std::string missing;
+        for (const StudentResult& st : result.students)
+            if (!st.hasFolder) missing += (missing.empty() ? "" : ", ") + st.name;
+        if (!missing.empty())
+            std::fprintf(stderr,
+                         "raylab grade: in the roster without a submission folder (not "
+                         "submitted; a typo?): %s\n",
+                         missing.c_str());
     }
     matchMistakes(result);
     writeClassReports(result, out);

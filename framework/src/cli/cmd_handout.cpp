@@ -82,6 +82,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     if (!fs::is_directory(parent, ec))
         throw Error("--out " + outDir + ": folder " + parent.string() + " does not exist");
 
+    // How the guides' commands name the handout: as --out did, from the RayLab folder.
+    const std::string labFolder = out.generic_string() + "/";
     const fs::path temp =
         parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
     try {
@@ -99,8 +101,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
             if (fs::is_regular_file(from / "README.md", ec))
                 writeTextFileAtomic(
                     to / "README.md",
-                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h), *h.stage,
-                                       course.gradingOf(*h.stage)));
+                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h, labFolder),
+                                       *h.stage, course.gradingOf(*h.stage)));
         }
         writeTextFileAtomic(temp / "README.md", readme(plan));
         if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above

@@ -4,6 +4,8 @@
 #include "lab_files.h"
 
 #include <algorithm>
+#include <regex>
+#include <sstream>
 
 namespace raylab {
 
@@ -100,7 +102,29 @@ std::string providedText(const HandoutStage& h) {
 
 }  // namespace
 
-std::string handoutGuide(const std::string& guide, const HandoutStage& plan) {
+namespace {
+
+// Every `build/raylab COMMAND --stage X` of GUIDE that runs a lab, with
+// --lab FOLDER after the stage (not where it runs the solution or names a lab).
+std::string withLabOption(const std::string& guide, const std::string& folder) {
+    static const std::regex command(
+        R"((build/raylab (?:run|check|render|rays|trace|shader) --stage [A-Za-z0-9-]+))");
+    std::istringstream in(guide);
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        if (line.find("--solution") == std::string::npos && line.find("--lab") == std::string::npos)
+            line = std::regex_replace(line, command, "$1 --lab " + folder);
+        out += line + "\n";
+    }
+    if (!guide.empty() && guide.back() != '\n') out.pop_back();
+    return out;
+}
+
+}  // namespace
+
+std::string handoutGuide(const std::string& original, const HandoutStage& plan,
+                         const std::string& labFolder) {
+    const std::string guide = labFolder.empty() ? original : withLabOption(original, labFolder);
     const std::size_t open = guide.find(kOpen);
     if (open == std::string::npos) return guide;
     const std::size_t close = guide.find(kClose, open);

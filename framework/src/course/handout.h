@@ -44,6 +44,13 @@ Carry parseCarry(const std::string& value);
 // the folder holds every earlier file, solved; otherwise it is replaced by
 // what this folder holds and which of the student's folders it reads. The
 // markers themselves are removed.
-std::string handoutGuide(const std::string& guide, const HandoutStage& plan);
+//
+// LABFOLDER (the handout's folder as the RayLab folder sees it, "week3/";
+// empty: leave the commands alone) is added as --lab to every command of the
+// guide that draws or checks the student's lab (`build/raylab check --stage
+// 02` becomes `build/raylab check --stage 02 --lab week3/`): without it they
+// would run the project's labs/, not the student's files.
+std::string handoutGuide(const std::string& guide, const HandoutStage& plan,
+                         const std::string& labFolder = "");
 
 }  // namespace raylab

@@ -31,7 +31,9 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot, Missing
         throw Error("lab folder " + labRoot.string() + " has no " + stage.id +
                     "/ (it should be laid out like labs/)");
     StageSources s;
-    s.label = "lab " + displayPath(labRoot) + "/";
+    std::string shown = displayPath(labRoot);
+    while (shown.size() > 1 && shown.back() == '/') shown.pop_back();
+    s.label = "lab " + shown + "/";
     s.chain = solutionSources(stage).chain;
     s.lab = true;
     s.labRoot = labRoot;

@@ -135,9 +135,11 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
                 continue;
             }
             std::size_t k = std::size_t(s - st.stages.data());
-            stageSum[j] += s->score;
-            stageMax[j] += s->maxScore;
-            ++stageCount[j];
+            if (s->status != "not submitted") {  // the average of those who handed it in
+                stageSum[j] += s->score;
+                stageMax[j] += s->maxScore;
+                ++stageCount[j];
+            }
             if (isGraded(*s)) {
                 const std::string title = s->latePenalty > 0
                                               ? num(s->rawScore()) + " before the late penalty: " +
@@ -163,7 +165,7 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
     }
     h += "</tbody>\n";
     if (!r.students.empty()) {
-        h += "<tfoot><tr><td>Class average</td>";
+        h += "<tfoot><tr><td title=\"per stage: of those who handed it in\">Class average</td>";
         for (std::size_t j = 0; j < r.stages.size(); ++j)
             h += "<td class=\"num\">" +
                  (stageCount[j] ? num(stageSum[j] / stageCount[j]) : std::string("&ndash;")) +

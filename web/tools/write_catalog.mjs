@@ -33,6 +33,8 @@ const catalog = {
   framework: shaderFiles(join(root, 'framework/shaders')),
   web: shaderFiles(join(root, 'web/shaders')),
   variants,
+  // The pictures and meshes scenes name (the core's scene reader checks that they exist).
+  assets: ['textures', 'meshes'].flatMap((d) => filesIn(join(root, 'assets', d)).map((n) => `${d}/${n}`)),
   // Ray-tracing scenes at the top, fur scenes under fur/.
   scenes: [
     ...filesIn(join(root, 'assets/scenes')).filter((n) => n.endsWith('.json')),

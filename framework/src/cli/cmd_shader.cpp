@@ -5,6 +5,7 @@
 #include "command.h"
 #include "command_options.h"
 #include "error.h"
+#include "scene_transform.h"
 #include "stage_programs.h"
 #include "track_registry.h"
 
@@ -21,18 +22,27 @@ struct ShaderOptions {
     bool generic = false;
     bool noBvh = false;
     bool origins = false;
+    bool demo = false;
 };
 
 int cmdShader(const ShaderOptions& o) {
     StageSetup setup = resolveStageOptions(o.stage);
     requireRayTracingStage(*setup.stage, "raylab shader");
-    ShaderVariant variant = ShaderVariant::fastestFor(setup.scene);
+    // The scene in the frame the renderer draws it in (scene_transform.h):
+    // the numbers its program holds.
+    const Scene scene = transformScene(setup.scene, sceneFrame(setup.scene));
+    ShaderVariant variant = ShaderVariant::fastestFor(scene);
     variant.specialized = !o.generic;
     if (o.noBvh) variant.bvh = false;
-    StagePrograms programs =
-        assembleStagePrograms(*setup.stage, setup.sources, setup.scene, variant);
+    variant.webGl2 = o.es;
+    if (o.demo) {
+        if (setup.sources.lab)
+            throw Error("--demo: the demo's levers replace files students write: only for the "
+                        "solution (add --solution)");
+        variant.useDemoLevers();
+    }
+    StagePrograms programs = assembleStagePrograms(*setup.stage, setup.sources, scene, variant);
     ShaderSource source = o.vertex ? programs.vertex : programs.fragment;
-    if (o.es) source = asGlslEs300(source);
     if (!o.origins) {
         std::fputs(source.text.c_str(), stdout);
         return 0;
@@ -59,11 +69,16 @@ Command shaderCommand() {
             auto o = std::make_shared<ShaderOptions>();
             CLI::Option* lab = addStageOptions(cmd, o->stage, false);
             cmd.add_flag("--vertex", o->vertex, "the vertex shader instead of the fragment shader");
-            cmd.add_flag("--es", o->es, "GLSL ES 3.00 for WebGL 2 (the web build's prelude)");
+            cmd.add_flag(
+                "--es", o->es,
+                "the web page's program: GLSL ES 3.00, web/shaders first on the search path");
             cmd.add_flag("--generic", o->generic,
                          "the stage's generic program (scene in uniforms) instead of the "
                          "program specialised to the scene");
             cmd.add_flag("--no-bvh", o->noBvh, "stage 08: the linear search instead of the BVH");
+            cmd.add_flag("--demo", o->demo,
+                         "the program raylab demo draws: the solution with the demo's levers "
+                         "(weight cut, shared work, light buffer, eye cells)");
             cmd.add_flag("--origins", o->origins,
                          "prefix every line with the file:line it came from");
             return std::function<int()>([=] {

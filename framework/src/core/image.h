@@ -1,6 +1,6 @@
 #pragma once
 // An 8-bit RGBA image with rows stored top to bottom, and PNG I/O through
-// SDL2_image. Writes are atomic: a failed or interrupted write never leaves a
+// SDL2_image (png_file.cpp). Writes are atomic: a failed or interrupted write never leaves a
 // partial file under the requested name.
 #include <cstdint>
 #include <filesystem>

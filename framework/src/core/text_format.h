@@ -16,5 +16,9 @@ std::string trimmedFixed(double v, int decimals);
 
 // The shortest text that reads back as exactly V ("0.1", "1e-07").
 std::string shortestExact(double v);
+// The same text without std::to_chars (the WebAssembly core's libc++ lacks
+// it for floating point): the fewest digits that read back, written fixed or
+// scientific, whichever is shorter (fixed on a tie), as to_chars writes them.
+std::string shortestExactPortable(double v);
 
 }  // namespace raylab

@@ -16,10 +16,6 @@
 
 namespace raylab {
 
-// A leaf's code is kBvhLeafKinds * count + kind: the kinds (shader_constants.h)
-// stay below 8, and float holds the code exactly for counts below 2^21.
-inline constexpr int kBvhLeafKinds = 8;
-
 class BvhBuffers {
 public:
     explicit BvhBuffers(const Bvh& bvh);

@@ -16,14 +16,12 @@
 // Needs a current GL context. (Students need not read this file.)
 #include "gl.h"
 #include "scene.h"
+#include "stage_programs.h"  // kSphereBlockStride
 
 #include <string>
 #include <vector>
 
 namespace raylab {
-
-// Bytes one sphere takes in each block (std140 array stride).
-constexpr int kSphereBlockStride = 16;
 
 // GL_MAX_UNIFORM_BLOCK_SIZE of the current context.
 int maxUniformBlockBytes();

@@ -12,35 +12,6 @@ namespace raylab {
 
 namespace {
 
-void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count,
-               int limit) {
-    if (count > 0 && limit == 0)
-        throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
-    if (int(count) > limit)
-        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what +
-                    ", but stage " + stage.id + " supports at most " + std::to_string(limit));
-}
-
-void checkSceneFits(const StageInfo& stage, const Scene& scene) {
-    const StageLimits& l = stage.limits;
-    checkFits(scene, stage, "spheres", scene.spheres.size(), l.spheres);
-    checkFits(scene, stage, "materials", scene.materials.size(), l.materials);
-    checkFits(scene, stage, "lights", scene.lights.size(), l.lights);
-    checkFits(scene, stage, "planes", scene.planes.size(), l.planes);
-    checkFits(scene, stage, "discs", scene.discs.size(), l.discs);
-    checkFits(scene, stage, "triangles", scene.triangles.size(), l.triangles);
-    checkFits(scene, stage, "tori", scene.tori.size(), l.tori);
-    checkFits(scene, stage, "mesh triangles", meshTriangleCount(scene), l.meshTriangles);
-    checkFits(scene, stage, "textures", scene.textures.size(), l.textures);
-    if (scene.skyBox && !l.skyBox) {
-        std::string adds;  // the first stage of the track that has one
-        for (const StageInfo& s : allStages())
-            if (adds.empty() && s.track == stage.track && s.limits.skyBox)
-                adds = " (stage " + s.number() + " adds it)";
-        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box" + adds);
-    }
-}
-
 // Texture units: the scene's pictures, then the sky box.
 constexpr int kTextureUnit = 0;
 constexpr int kSkyUnit = 1;

@@ -174,7 +174,8 @@ export class Page {
     if (!reload) this.showMessage('compiling…');
     try {
       const sources = await this.sources();
-      const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName);
+      // The solution gets the demo's levers, as in the native window.
+      const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName, undefined, undefined, true);
       if (ticket !== this.loading) return loaded.renderer.dispose();
       this.busy = false;
       this.renderer?.dispose();

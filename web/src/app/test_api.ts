@@ -7,8 +7,8 @@ import { frameOfView, sceneOfView } from './frame.js';
 import { WatchedLab } from './lab_folder.js';
 import type { Page } from './page.js';
 import { ROOT, type Catalog, type Sources, stageById } from '../course/catalog.js';
-import { assembleStagePrograms } from '../raytrace/stage_renderer.js';
-import { parseScene } from '../scene/scene_reader.js';
+import { loadCore } from '../core/core.js';
+import { openRayStage } from '../raytrace/stage_renderer.js';
 import { loadStage } from '../tracks/track_registry.js';
 import type { OpenTodo } from '../shader/open_todos.js';
 
@@ -22,6 +22,7 @@ export interface ViewRequest {
   width: number;
   height: number;
   bvh?: boolean;               // stage 08: walk the BVH; default: where it repays itself
+  demoLevers?: boolean;        // the solution with the demo's levers (raylab demo's program)
 }
 
 export interface ViewResult {
@@ -40,7 +41,7 @@ async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: V
   const sources: Sources = req.labFiles
     ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
     : { kind: req.source ?? 'solution' };
-  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh, req.sceneText);
+  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh, req.sceneText, req.demoLevers);
   return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view) };
 }
 
@@ -97,15 +98,15 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
         wrongStage,
       };
     },
-    // The fragment program as `raylab shader --es --origins` prints it.
-    async assemble(req: { stage: string; scene: string }): Promise<string> {
+    // The fragment program as `raylab shader --es --origins [--demo]` prints it.
+    async assemble(req: { stage: string; scene: string; demoLevers?: boolean }): Promise<string> {
       const stage = stageById(catalog, req.stage);
-      const shown = `assets/scenes/${req.scene}`;
-      const url = `${ROOT}/${shown}`;
-      const scene = parseScene(await (await fetch(url)).text(), url, shown);
-      const p = await assembleStagePrograms(catalog, stage, { kind: 'solution' }, scene, `assets/scenes/${req.scene}`);
-      const lines = p.fragment.text.split('\n');
-      return p.fragment.origin.map((o, i) => `${o.file}:${o.line}\t${lines[i]}`).join('\n') + '\n';
+      const { handle, info } = await openRayStage(gl, await loadCore(), catalog, {
+        stage, sources: { kind: 'solution' }, sceneName: req.scene, demoLevers: req.demoLevers,
+      });
+      handle.delete();
+      const lines = info.fragment.text.split('\n');
+      return info.fragment.origin.map(([file, line], i) => `${file}:${line}\t${lines[i]}`).join('\n') + '\n';
     },
     // Median wall time of FRAMES frames of the demo's fly-through, each waited for by reading one pixel
     // back (the browser's equivalent of glFinish), after one warm-up frame.

@@ -46,6 +46,7 @@ export interface Catalog {
   web: string[];
   variants: Record<string, string[]>;
   scenes: string[];
+  assets: string[];  // under assets/: textures/*.png, meshes/*.obj
 }
 
 export async function loadCatalog(url = 'dist/catalog.json'): Promise<Catalog> {

@@ -71,16 +71,24 @@ export async function cubeMap(gl: WebGL2RenderingContext, urls: string[]): Promi
   return t;
 }
 
-// A data texture read with texelFetch only (no filtering).
-export function dataTexture(
-  gl: WebGL2RenderingContext,
-  data: { width: number; height: number; data: Float32Array | Int32Array },
-): WebGLTexture {
+// A list of texels for texelFetch (no filtering), stored row by row
+// DATA_TEXTURE_WIDTH texels wide (web/shaders/texel_rows.glsl): WebGL 2's
+// stand-in for a buffer texture. CHANNELS: 1 (R), 2 (RG) or 4 (RGBA) per texel.
+export const DATA_TEXTURE_WIDTH = 1024;
+export function dataTexture(gl: WebGL2RenderingContext, values: Float32Array | Int32Array, channels: 1 | 2 | 4): WebGLTexture {
+  const texels = Math.max(1, Math.ceil(values.length / channels));
+  const width = Math.min(texels, DATA_TEXTURE_WIDTH), height = Math.ceil(texels / DATA_TEXTURE_WIDTH);
+  const float = values instanceof Float32Array;
+  const data = float ? new Float32Array(width * height * channels) : new Int32Array(width * height * channels);
+  data.set(values);
   const t = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D, t);
-  const float = data.data instanceof Float32Array;
-  gl.texImage2D(gl.TEXTURE_2D, 0, float ? gl.RGBA32F : gl.R32I, data.width, data.height, 0,
-    float ? gl.RGBA : gl.RED_INTEGER, float ? gl.FLOAT : gl.INT, data.data);
+  const formats = {
+    1: float ? [gl.R32F, gl.RED] : [gl.R32I, gl.RED_INTEGER],
+    2: float ? [gl.RG32F, gl.RG] : [gl.RG32I, gl.RG_INTEGER],
+    4: float ? [gl.RGBA32F, gl.RGBA] : [gl.RGBA32I, gl.RGBA_INTEGER],
+  }[channels];
+  gl.texImage2D(gl.TEXTURE_2D, 0, formats[0]!, width, height, 0, formats[1]!, float ? gl.FLOAT : gl.INT, data);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
   return t;

@@ -1,105 +1,105 @@
 // The ray-tracing track's renderer in WebGL 2 (native:
 // framework/src/raytrace/stage_renderer.cpp): one full-screen canvas whose
-// fragment shader traces the scene. The web always compiles the program
-// specialised to its scene (the scene's static data as constants): the
-// generic program keeps everything in uniform arrays, which can exceed a
-// browser's uniform budget (WebGL 2 guarantees only 224 vectors); the
-// specialised one needs only the spheres' centres (a uniform block,
-// sphere_block.ts) and the spinning tori.
+// fragment shader traces the scene. Everything the CPU prepares comes from
+// the C++ core (core/core.ts: framework/src/wasm/web_ray_stage.h): the scene
+// read and framed, checked against the stage's limits, the program as
+// `raylab shader --es` prints it (with the demo's levers where the demo
+// shows the solution), the BVH, the light buffer and the eye's cells. What
+// stays here is WebGL: the textures, the uniforms, the draw. The page always
+// draws the program specialised to its scene (its static data compiled in):
+// the generic one keeps everything in uniform arrays, which can exceed a
+// browser's uniform budget (WebGL 2 guarantees only 224 vectors).
 import { Camera } from '../app/camera.js';
-import { type Catalog, type Sources, type StageJson, searchPath } from '../course/catalog.js';
+import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';
+import {
+  type Core, coreFileUrl, CORE_ROOT, ensureProjectFiles, type RayStageHandle, type RayStageInfo, rayTracingFiles,
+  writeProjectFile, writeStudentLab,
+} from '../core/core.js';
 import { Program } from '../gl/program.js';
 import { cubeMap, dataTexture, textureArray } from '../gl/textures.js';
-import { buildBvh, packBvhTextures } from '../scene/bvh.js';
-import type { Scene } from '../scene/scene.js';
-import { torusAxisAt, torusToLocal } from '../scene/scene.js';
-import { bakedSceneDefines, bakedSceneGlsl } from '../scene/scene_baking.js';
-import { findOpenTodos, type OpenTodo } from '../shader/open_todos.js';
-import { asGlslEs300, assembleShader, type ShaderSource } from '../shader/shader_source.js';
+import type { ShaderSource } from '../shader/shader_source.js';
+import type { OpenTodo } from '../shader/open_todos.js';
 import type { RenderSettings } from './render_settings.js';
 import { SceneLimitError } from './scene_limit_error.js';
-import { checkSpheresFitBlock, SphereBlock } from './sphere_block.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
 
-// Texture units, one per sampler type (WebGL refuses to draw when samplers
-// of two types share a unit, and unused samplers default to unit 0).
-const TEXTURE_UNIT = 0, SKY_UNIT = 1, BVH_NODE_UNIT = 2, BVH_ITEM_UNIT = 3;
-// Measured natively (ShaderVariant::fastestFor): the BVH repays its walk from 32 spheres.
-const SPHERES_FOR_BVH = 32;
+// Texture units, one per sampler (WebGL refuses to draw when samplers of
+// two types share a unit, and unused samplers default to unit 0).
+const UNITS = { uTextures: 0, uSky: 1, uBvhNodes: 2, uBvhItems: 3, uLightCells: 4, uLightItems: 5, uEyeCells: 6 };
+const SPHERE_BINDING_POINT = 0;
 
 export { SceneLimitError };
 
-// The stage's limits (native: checkSceneFits).
-function checkSceneFits(stage: StageJson, scene: Scene, shown: string): void {
-  const l = stage.limits;
-  const fits = (what: string, count: number) => {
-    const limit = Number(l[what] ?? 0);
-    if (count > 0 && limit === 0) throw new SceneLimitError(`${shown}: ${what}: stage ${stage.id} has no ${what}`);
-    if (count > limit)
-      throw new SceneLimitError(`${shown}: ${what}: ${count} ${what}, but stage ${stage.id} supports at most ${limit}`);
-  };
-  fits('spheres', scene.spheres.length);
-  fits('materials', scene.materials.length);
-  fits('lights', scene.lights.length);
-  fits('planes', scene.planes.length);
-  fits('discs', scene.discs.length);
-  fits('triangles', scene.triangles.length);
-  fits('tori', scene.tori.length);
-  fits('textures', scene.textures.length);
-  if (scene.skyBox && !l.sky_box) throw new SceneLimitError(`${shown}: sky_box: stage ${stage.id} has no sky box`);
-}
-
-// The specialised program keeps the spheres' centres in a uniform block
-// (sphere_block.ts), three vectors per torus in plain uniforms, plus about
-// 30 for the camera and the switches. A browser that offers too little
-// would fail to link with a message naming no cause.
+// The specialised program keeps three vectors per torus in plain uniforms,
+// plus about 30 for the camera and the switches. A browser that offers too
+// little would fail to link with a message naming no cause.
 const OTHER_UNIFORM_VECTORS = 32;
-function checkUniformBudget(gl: WebGL2RenderingContext, scene: Scene, shown: string): void {
-  checkSpheresFitBlock(scene, Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)), shown);
-  const need = 3 * scene.tori.length + OTHER_UNIFORM_VECTORS;
+function checkUniformBudget(gl: WebGL2RenderingContext, info: RayStageInfo): void {
+  const need = 3 * info.tori + OTHER_UNIFORM_VECTORS;
   const have = Number(gl.getParameter(gl.MAX_FRAGMENT_UNIFORM_VECTORS));
   if (need > have)
-    throw new SceneLimitError(`${shown}: tori: ${scene.tori.length} tori need about ${need} uniform vectors, ` +
+    throw new SceneLimitError(`${info.sceneFile}: tori: ${info.tori} tori need about ${need} uniform vectors, ` +
       `but this browser offers ${have} (WebGL 2 guarantees 224): use a scene with fewer tori`);
 }
 
-export interface StageProgramSources {
-  vertex: ShaderSource;
-  fragment: ShaderSource;
-  defines: string[];
+// A core ShaderSource as the page's Program takes it (errors mapped to file:line).
+function shaderSource(s: RayStageInfo['vertex']): ShaderSource {
+  return { text: s.text, origin: s.origin.map(([file, line]) => ({ file, line })), files: [] };
 }
 
-// The program's sources exactly as natively (stage_programs.cpp), in GLSL ES.
-// BVH: walk a BVH (stage 08); by default where it repays itself natively.
-export async function assembleStagePrograms(
-  catalog: Catalog, stage: StageJson, sources: Sources, scene: Scene, sceneShown: string,
-  bvh = scene.spheres.length >= SPHERES_FOR_BVH,
-): Promise<StageProgramSources> {
-  const defines = [...bakedSceneDefines(scene), ...(stage.defines ?? [])];
-  if (bvh) defines.push('RAYLAB_BVH');
-  const search = searchPath(catalog, stage, sources, defines);
-  const vertex = asGlslEs300(await assembleShader(stage.program.vertex, search, defines));
-  const fragment = asGlslEs300(await assembleShader(stage.program.fragment, search, defines, bakedSceneGlsl(scene, sceneShown)));
-  return { vertex, fragment, defines };
+export interface RayStageRequest {
+  stage: StageJson;
+  sources: Sources;
+  sceneName: string;       // under assets/scenes/
+  sceneText?: string;      // that file's text, made up by a test
+  bvh?: boolean;           // stage 08: with or without the BVH; default: the fastest choice
+  demoLevers?: boolean;    // the demo's levers (the solution only), as `raylab demo`
+}
+
+// The core's stage for REQUEST, after the files it reads are in its file
+// system. Throws Error with native's message.
+export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catalog: Catalog, r: RayStageRequest): Promise<{ handle: RayStageHandle; info: RayStageInfo }> {
+  await ensureProjectFiles(core, rayTracingFiles(catalog));
+  if (r.sceneText !== undefined) writeProjectFile(core, `assets/scenes/${r.sceneName}`, r.sceneText);
+  let lab = '';
+  if (r.sources.kind === 'lab') lab = `${CORE_ROOT}/labs`;
+  if (r.sources.kind === 'disk') {
+    // The folder the student opened: a labs/-like folder shown as
+    // ROOT/<stage>, or one stage's folder (then laid out as <stage>/ under .).
+    const suffix = `/${r.stage.id}`;
+    const root = r.sources.shown.endsWith(suffix) ? r.sources.shown.slice(0, -suffix.length) : '.';
+    lab = writeStudentLab(core, root, new Map([[r.stage.id, r.sources.files]]));
+  }
+  const handle = new core.RayStage(JSON.stringify({
+    stage: r.stage.id, lab, scene: `${CORE_ROOT}/assets/scenes/${r.sceneName}`,
+    demoLevers: r.demoLevers ?? false, bvh: r.bvh === undefined ? -1 : r.bvh ? 1 : 0,
+    maxBlockBytes: Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)),
+  }));
+  const error = handle.error();
+  if (error) {
+    handle.delete();
+    throw new Error(error);
+  }
+  return { handle, info: JSON.parse(handle.info()) as RayStageInfo };
 }
 
 export class StageRenderer implements TrackRenderer {
   readonly notes: string[] = [];
-  private textures: WebGLTexture | null = null;
-  private sky: WebGLTexture | null = null;
-  private bvhNodes: WebGLTexture | null = null;
-  private bvhItems: WebGLTexture | null = null;
-  private spheres: SphereBlock | null = null;
+  readonly todos: OpenTodo[];
+  private textures = new Map<string, WebGLTexture>();
+  private sphereBuffer: WebGLBuffer;
+  private shownTime = Number.NaN;
   private vao: WebGLVertexArrayObject;
   private buffer: WebGLBuffer;
 
   private constructor(
     private gl: WebGL2RenderingContext,
     readonly stage: StageJson,
-    readonly scene: Scene,
+    private core: RayStageHandle,
+    readonly info: RayStageInfo,
     readonly program: Program,
-    readonly todos: OpenTodo[],
   ) {
+    this.todos = info.todos;
     this.buffer = gl.createBuffer()!;
     gl.bindBuffer(gl.ARRAY_BUFFER, this.buffer);
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1]), gl.STATIC_DRAW);
@@ -108,35 +108,36 @@ export class StageRenderer implements TrackRenderer {
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
     gl.bindVertexArray(null);
+    this.sphereBuffer = gl.createBuffer()!;
+    const index = gl.getUniformBlockIndex(program.id, 'SphereGeometry');
+    if (index !== gl.INVALID_INDEX) gl.uniformBlockBinding(program.id, index, SPHERE_BINDING_POINT);
   }
 
-  // Throws ShaderError (file:line), SceneError or SceneLimitError (one line).
-  static async create(
-    gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, scene: Scene, sceneShown: string,
-    bvh?: boolean,
-  ): Promise<StageRenderer> {
-    if (stage.track !== 'raytrace') throw new Error(`stage ${stage.id} is not a ray-tracing stage`);
-    checkSceneFits(stage, scene, sceneShown);
-    checkUniformBudget(gl, scene, sceneShown);
-    const p = await assembleStagePrograms(catalog, stage, sources, scene, sceneShown, bvh);
-    const program = new Program(gl, p.vertex, p.fragment);
-    let r: StageRenderer;
+  // Throws ShaderError (file:line) or Error (native's message: the scene,
+  // the stage's limits, a missing file).
+  static async create(gl: WebGL2RenderingContext, core: Core, catalog: Catalog, request: RayStageRequest): Promise<StageRenderer> {
+    if (request.stage.track !== 'raytrace') throw new Error(`stage ${request.stage.id} is not a ray-tracing stage`);
+    const { handle, info } = await openRayStage(gl, core, catalog, request);
+    let program: Program;
     try {
-      r = new StageRenderer(gl, stage, scene, program, await findOpenTodos(p.fragment));
+      checkUniformBudget(gl, info);
+      program = new Program(gl, shaderSource(info.vertex), shaderSource(info.fragment));
     } catch (e) {
-      program.dispose();
+      handle.delete();
       throw e;
     }
+    const r = new StageRenderer(gl, request.stage, handle, info, program);
     try {
-      SphereBlock.attach(gl, program.id);
-      r.spheres = new SphereBlock(gl, scene);
-      if (scene.textures.length) r.textures = await textureArray(gl, scene.textures);
-      if (scene.skyBox) r.sky = await cubeMap(gl, scene.skyBox);
-      // The tree only for a program that walks it (as natively).
-      if (program.uniform('uBvhNodes') !== null) {
-        const packed = packBvhTextures(buildBvh(scene));
-        r.bvhNodes = dataTexture(gl, packed.nodes);
-        r.bvhItems = dataTexture(gl, packed.items);
+      if (info.textures.length) r.textures.set('uTextures', await textureArray(gl, info.textures.map(coreFileUrl)));
+      if (info.skyBox.length) r.textures.set('uSky', await cubeMap(gl, info.skyBox.map(coreFileUrl)));
+      // The buffers the core built for this program (none where it reads none).
+      const nodes = handle.bvhNodes();
+      if (nodes.length) r.textures.set('uBvhNodes', dataTexture(gl, nodes, 4));
+      if (nodes.length) r.textures.set('uBvhItems', dataTexture(gl, handle.bvhItems(), 1));
+      const cells = handle.lightCells();
+      if (cells.length) {
+        r.textures.set('uLightCells', dataTexture(gl, cells, 4));
+        r.textures.set('uLightItems', dataTexture(gl, handle.lightItems(), 1));
       }
     } catch (e) {
       r.dispose();
@@ -151,7 +152,11 @@ export class StageRenderer implements TrackRenderer {
     gl.clearColor(0, 0, 0, 1);  // as natively: a discarded fragment leaves black
     gl.clear(gl.COLOR_BUFFER_BIT);
     gl.useProgram(p.id);
-    gl.uniform3fv(p.uniform('uEye'), camera.pose.position);
+    // The eye moves with the scene into the shaders' frame; directions stay.
+    const [x, y, z] = camera.pose.position;
+    const placed = this.core.placeEye(x, y, z);
+    if (placed.eyeCellsMoved) this.uploadEyeCells();
+    gl.uniform3fv(p.uniform('uEye'), placed.eye);
     gl.uniform3fv(p.uniform('uForward'), camera.forward());
     gl.uniform3fv(p.uniform('uRight'), camera.right());
     gl.uniform3fv(p.uniform('uUp'), camera.up());
@@ -163,33 +168,50 @@ export class StageRenderer implements TrackRenderer {
     gl.uniform1i(p.uniform('uGlow'), settings.glow ? 1 : 0);
     gl.uniform1i(p.uniform('uNormalMaps'), settings.normalMaps ? 1 : 0);
     gl.uniform1i(p.uniform('uColorMode'), settings.colorMode);
-    const bind = (unit: number, target: number, t: WebGLTexture | null, sampler: string) => {
+    const lb = this.info.lightBuffer;
+    gl.uniform1i(p.uniform('uLightBufferSize'), lb.size);
+    gl.uniform1i(p.uniform('uLightBufferEveryCell'), lb.everyCell);
+    gl.uniform1f(p.uniform('uLightBufferReach'), lb.reach);
+    gl.uniform1i(p.uniform('uEyeCellsSize'), this.info.eyeCellsSize);
+    gl.uniform3fv(p.uniform('uEyeCellsCentre'), placed.eye);
+    for (const [sampler, unit] of Object.entries(UNITS)) {
+      const target = sampler === 'uTextures' ? gl.TEXTURE_2D_ARRAY : sampler === 'uSky' ? gl.TEXTURE_CUBE_MAP : gl.TEXTURE_2D;
       gl.uniform1i(p.uniform(sampler), unit);
       gl.activeTexture(gl.TEXTURE0 + unit);
-      gl.bindTexture(target, t);
-    };
-    bind(TEXTURE_UNIT, gl.TEXTURE_2D_ARRAY, this.textures, 'uTextures');
-    bind(SKY_UNIT, gl.TEXTURE_CUBE_MAP, this.sky, 'uSky');
-    bind(BVH_NODE_UNIT, gl.TEXTURE_2D, this.bvhNodes, 'uBvhNodes');
-    bind(BVH_ITEM_UNIT, gl.TEXTURE_2D, this.bvhItems, 'uBvhItems');
-    // Only sphere positions and torus axes change from frame to frame.
-    this.spheres!.bindAt(timeSeconds);
-    if (this.scene.tori.length) {
-      const m = new Float32Array(9 * this.scene.tori.length);
-      this.scene.tori.forEach((t, i) => m.set(torusToLocal(torusAxisAt(t, timeSeconds)), 9 * i));
-      gl.uniformMatrix3fv(p.uniform('uTorusToLocal[0]'), false, m);
+      gl.bindTexture(target, this.textures.get(sampler) ?? null);
     }
+    // Only sphere positions and torus axes change from frame to frame.
+    if (timeSeconds !== this.shownTime) {
+      this.shownTime = timeSeconds;
+      gl.bindBuffer(gl.UNIFORM_BUFFER, this.sphereBuffer);
+      gl.bufferData(gl.UNIFORM_BUFFER, this.core.sphereCentres(timeSeconds), gl.DYNAMIC_DRAW);
+      gl.bindBuffer(gl.UNIFORM_BUFFER, null);
+      if (this.info.tori) gl.uniformMatrix3fv(p.uniform('uTorusToLocal[0]'), false, this.core.torusToLocal(timeSeconds));
+    }
+    gl.bindBufferBase(gl.UNIFORM_BUFFER, SPHERE_BINDING_POINT, this.sphereBuffer);
     gl.bindVertexArray(this.vao);
     gl.drawArrays(gl.TRIANGLES, 0, 6);
     gl.bindVertexArray(null);
   }
 
+  // The eye's cells moved with the eye: their lists follow the tree's items.
+  private uploadEyeCells(): void {
+    const gl = this.gl;
+    for (const name of ['uBvhItems', 'uEyeCells']) {
+      const t = this.textures.get(name);
+      if (t) gl.deleteTexture(t);
+    }
+    this.textures.set('uBvhItems', dataTexture(gl, this.core.bvhItems(), 1));
+    this.textures.set('uEyeCells', dataTexture(gl, this.core.eyeCells(), 2));
+  }
+
   dispose(): void {
     const gl = this.gl;
     this.program.dispose();
-    this.spheres?.dispose();
-    for (const t of [this.textures, this.sky, this.bvhNodes, this.bvhItems]) if (t) gl.deleteTexture(t);
+    for (const t of this.textures.values()) gl.deleteTexture(t);
+    gl.deleteBuffer(this.sphereBuffer);
     gl.deleteVertexArray(this.vao);
     gl.deleteBuffer(this.buffer);
+    this.core.delete();
   }
 }

@@ -7,8 +7,8 @@ import { FurRenderer } from '../fur/fur_renderer.js';
 import { type FurScene, parseFurScene } from '../fur/mesh/fur_scene.js';
 import { makeShape } from '../fur/mesh/mesh_shapes.js';
 import { parseObjMesh } from '../fur/mesh/obj_mesh.js';
+import { loadCore } from '../core/core.js';
 import { StageRenderer } from '../raytrace/stage_renderer.js';
-import { parseScene } from '../scene/scene_reader.js';
 import type { TrackRenderer } from './track_renderer.js';
 
 export interface LoadedStage {
@@ -29,22 +29,29 @@ async function fetchText(shown: string, url: string, what: string): Promise<stri
 // BVH: the ray tracer's BVH switch (stage 08); undefined: as natively.
 // SCENETEXT: the scene file's text, not fetched (the browser tests' made-up
 // scenes, window.raylab.renderView); it is still shown as assets/scenes/SCENENAME.
+// DEMOLEVERS: the ray tracer's program with the demo's levers (the solution
+// only), as `raylab demo` and the native window showing the solution draw it.
 export async function loadStage(
   gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
-  sceneText?: string,
+  sceneText?: string, demoLevers = false,
 ): Promise<LoadedStage> {
   const shown = `assets/scenes/${sceneName}`;
   const url = `${ROOT}/${shown}`;
-  const text = sceneText ?? await fetchText(shown, url, 'scene file');
   if (stage.track === 'raytrace') {
-    const scene = parseScene(text, url, shown);
-    const renderer = await StageRenderer.create(gl, catalog, stage, sources, scene, shown, bvh);
+    const core = await loadCore();
+    const renderer = await StageRenderer.create(gl, core, catalog, {
+      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution',
+    });
+    const c = renderer.info.camera;
     return {
-      renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
-      summary: `${scene.spheres.length} spheres, ${scene.triangles.length} triangles, ${scene.tori.length} tori, ${scene.lights.length} lights`,
+      renderer, camera: { position: c.position, yawDeg: c.yaw, pitchDeg: c.pitch }, fovYDeg: c.fovY,
+      summary: `${renderer.info.spheres} spheres, ${renderer.info.triangles} triangles, ` +
+        `${renderer.info.tori} tori, ${renderer.info.lights} lights` +
+        (renderer.info.levers.length ? `; program with ${renderer.info.levers.join(', ')}` : ''),
       sceneShells: 0,
     };
   }
+  const text = sceneText ?? await fetchText(shown, url, 'scene file');
   if (stage.track === 'fur') {
     const scene: FurScene = parseFurScene(text, url, shown);
     const mesh = scene.mesh.obj

@@ -3,7 +3,8 @@
 //     native headless render (tests/reference/<stage>/<view>.png) within the
 //     graders' tolerance (`raylab compare`);
 //  2. the page assembles each ray-tracing stage's program exactly as natively
-//     (`raylab shader --es --origins`), line for line, file:line for file:line;
+//     (`raylab shader --es --origins [--demo]`: the page's programs come from
+//     the C++ core), line for line, file:line for file:line;
 //  3. every untouched lab lists its open TODOs and shows the same
 //     unfinished-TODO stripes as `raylab render --lab` of it;
 //  4. a lab with a syntax error reports the right file:line in the page;
@@ -56,8 +57,6 @@ function manySpheres(n) {
     spheres,
   };
 }
-// The BVH accessors are the one file the web replaces (web/shaders/bvh_access.glsl).
-const keep = (text) => text.split('\n').filter((l) => !/^(framework|web)\/shaders\/bvh_access\.glsl:/.test(l));
 const fail = (what) => { failures.push(what); console.log(`FAIL ${what}`); };
 
 const server = await startServer();
@@ -71,34 +70,41 @@ try {
     .filter((s) => (only.length === 0 || only.some((o) => s.id === o || s.id.startsWith(`${o}-`))));
 
   // Scenes with OBJ meshes are native only: the page refuses them in one
-  // line (scene_reader.ts), so their views are not compared here.
+  // line (the core's web_ray_stage.cpp), so their views are not compared here.
   const sceneIsNativeOnly = (sceneName) => sceneName && 'meshes' in JSON.parse(readFileSync(join(projectRoot, 'assets/scenes', sceneName), 'utf8'));
   for (const stage of stages) {
     // 1. The solution from every check view against the native reference.
-    for (const view of stage.check_views) {
-      if (sceneIsNativeOnly(view.scene)) { console.log(`skip ${stage.id}/${view.name}: ${view.scene} has OBJ meshes (native build only)`); continue; }
-      const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, view: view.name, width: 160, height: 120 });
-      if (!r.ok) { fail(`${stage.id}/${view.name}: ${r.error}`); continue; }
-      const file = join(outDir, stage.id, `${view.name}.png`);
+    // Stage 08 also with the demo's levers (the program the page's demo and
+    // its solution draw: light buffer, eye cells, shared work, weight cut).
+    const leverRuns = stage.id.startsWith('08') ? [false, true] : [false];
+    for (const view of stage.check_views) for (const demoLevers of leverRuns) {
+      if (sceneIsNativeOnly(view.scene)) { if (!demoLevers) console.log(`skip ${stage.id}/${view.name}: ${view.scene} has OBJ meshes (native build only)`); continue; }
+      const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, view: view.name, width: 160, height: 120, demoLevers });
+      const tag = demoLevers ? ' (demo levers)' : '';
+      if (!r.ok) { fail(`${stage.id}/${view.name}${tag}: ${r.error}`); continue; }
+      const file = join(outDir, stage.id, `${view.name}${demoLevers ? '.levers' : ''}.png`);
       mkdirSync(join(outDir, stage.id), { recursive: true });
       writeFileSync(file, dataUrlBytes(r.png));
       const ref = join(projectRoot, 'tests/reference', stage.id, `${view.name}.png`);
       const c = spawnSync(raylab, ['compare', file, ref, '--heat-map', file.replace(/\.png$/, '.diff.png')], { encoding: 'utf8' });
       const verdict = (c.stdout + c.stderr).trim().replace(`${file}: `, '');
-      if (c.status === 0) console.log(`ok   ${stage.id}/${view.name}: ${verdict}`);
-      else fail(`${stage.id}/${view.name}: ${verdict}`);
+      if (c.status === 0) console.log(`ok   ${stage.id}/${view.name}${tag}: ${verdict}`);
+      else fail(`${stage.id}/${view.name}${tag}: ${verdict}`);
     }
 
     // 2. The assembled program, line by line with its origin, against native
     // (`raylab shader` prints ray-tracing programs).
     for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])].filter((n) => !sceneIsNativeOnly(n))) {
-      const web = await page.evaluate((req) => window.raylab.assemble(req), { stage: stage.id, scene: sceneName });
-      const native = execFileSync(raylab, ['shader', '--stage', stage.id, '--solution', '--es', '--origins', '--scene', join(projectRoot, 'assets/scenes', sceneName)], { encoding: 'utf8', cwd: projectRoot });
-      const a = keep(web), b = keep(native);
-      let at = a.findIndex((l, i) => l !== b[i]);
-      if (at < 0 && a.length !== b.length) at = Math.min(a.length, b.length);  // one is longer
-      if (at < 0) console.log(`ok   ${stage.id} + ${sceneName}: the page assembles the same ${a.length} lines`);
-      else fail(`${stage.id} + ${sceneName}: assembled line ${at + 1} differs:\n  web:    ${a[at] ?? '(no line)'}\n  native: ${b[at] ?? '(no line)'}`);
+      for (const demoLevers of stage.id.startsWith('08') ? [false, true] : [false]) {
+        const web = await page.evaluate((req) => window.raylab.assemble(req), { stage: stage.id, scene: sceneName, demoLevers });
+        const native = execFileSync(raylab, ['shader', '--stage', stage.id, '--solution', '--es', '--origins', '--scene', join(projectRoot, 'assets/scenes', sceneName), ...(demoLevers ? ['--demo'] : [])], { encoding: 'utf8', cwd: projectRoot });
+        const a = web.split('\n'), b = native.split('\n');
+        let at = a.findIndex((l, i) => l !== b[i]);
+        if (at < 0 && a.length !== b.length) at = Math.min(a.length, b.length);  // one is longer
+        const what = `${stage.id} + ${sceneName}${demoLevers ? ' --demo' : ''}`;
+        if (at < 0) console.log(`ok   ${what}: the page assembles the same ${a.length} lines`);
+        else fail(`${what}: assembled line ${at + 1} differs:\n  web:    ${a[at] ?? '(no line)'}\n  native: ${b[at] ?? '(no line)'}`);
+      }
     }
 
     // 3. The untouched lab: open TODOs listed, stripes drawn.
@@ -160,7 +166,7 @@ try {
   }
   if (!other) throw new Error(`control: the page assembles ${first.id} for no scene but ${first.scene}`);
   const nativeOwn = execFileSync(raylab, ['shader', '--stage', first.id, '--solution', '--es', '--origins'], { encoding: 'utf8', cwd: projectRoot });
-  if (keep(webOther).join('\n') === keep(nativeOwn).join('\n')) fail(`control: ${other}'s program equals ${first.scene}'s`);
+  if (webOther === nativeOwn) fail(`control: ${other}'s program equals ${first.scene}'s`);
   else console.log(`ok   control: the program for ${other} is told apart from ${first.scene}'s`);
 
   // 6. A lab folder the page watches (Chrome's File System Access API, here

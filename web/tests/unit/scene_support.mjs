@@ -7,8 +7,6 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-import { parseScene } from '../../dist/scene/scene_reader.js';
-
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 export const RAYLAB = process.env.RAYLAB ?? path.join(ROOT, 'build/raylab');
 
@@ -34,12 +32,6 @@ function hasMeshes(rel) {
     return 'meshes' in JSON.parse(readFileSync(path.join(ROOT, rel), 'utf8'));
 }
 
-// A scene file under the project root, read as the page reads it: its URL
-// is "/" + the path, its shown name the path.
-export function loadScene(rel) {
-    return parseScene(readFileSync(path.join(ROOT, rel), 'utf8'), `/${rel}`, rel);
-}
-
 export function runRaylab(args) {
     return spawnSync(RAYLAB, args, { cwd: ROOT, encoding: 'utf8', timeout: 60_000, maxBuffer: 64 << 20 });
 }
@@ -61,20 +53,6 @@ export function nativeShader(file) {
     if (r.status === 0) return { text: r.stdout };
     const line = r.stderr.split('\n').find((l) => l.startsWith('raylab: error: '));
     return { error: line ? line.slice('raylab: error: '.length) : r.stderr.trim() };
-}
-
-// The baked block ("// The scene, compiled in" .. "const float uGlowSize"
-// inclusive, newline-terminated) and the scene's #define values (SCENE_BAKED,
-// MAX_*) of an assembled shader.
-export function bakedParts(shader) {
-    const lines = shader.split('\n');
-    const first = lines.findIndex((l) => l.startsWith('// The scene, compiled in'));
-    const last = lines.findIndex((l) => l.startsWith('const float uGlowSize = '));
-    const glsl = first < 0 || last < first ? null : lines.slice(first, last + 1).join('\n') + '\n';
-    const defines = lines
-        .filter((l) => /^#define (SCENE_BAKED|MAX_[A-Z]+)( |$)/.test(l))
-        .map((l) => l.slice('#define '.length));
-    return { glsl, defines };
 }
 
 // A new temporary folder, removed when the test process exits.

@@ -237,4 +237,15 @@ Bvh buildBvh(const Scene& scene, int maxLeaf, BvhObjects objects) {
     return bvh;
 }
 
+std::vector<float> packedBvhNodes(const Bvh& bvh) {
+    std::vector<float> nodes;
+    for (const BvhNode& n : bvh.nodes) {
+        nodes.insert(nodes.end(), {n.box.lo.x, n.box.lo.y, n.box.lo.z, float(n.first)});
+        const int code = n.count > 0 ? kBvhLeafKinds * n.count + n.kind : 0;
+        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(code)});
+    }
+    if (nodes.empty()) nodes.assign(8, 0.0f);
+    return nodes;
+}
+
 }  // namespace raylab

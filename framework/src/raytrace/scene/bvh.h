@@ -95,6 +95,15 @@ enum class BvhObjects { SpheresAndMeshes, AllBounded };
 Bvh buildBvh(const Scene& scene, int maxLeaf = 2,
              BvhObjects objects = BvhObjects::SpheresAndMeshes);
 
+// A leaf's code is kBvhLeafKinds * count + kind: the kinds (shader_constants.h)
+// stay below 8, and float holds the code exactly for counts below 2^21.
+inline constexpr int kBvhLeafKinds = 8;
+
+// The nodes as the shaders read them (bvh_access.glsl): two RGBA texels per
+// node, (box min, first) and (box max, code); the code is 0 for an inner node.
+// At least one node's worth (an empty buffer texture is not allowed everywhere).
+std::vector<float> packedBvhNodes(const Bvh& bvh);
+
 // Longest path any traversal stack has to hold: the GLSL stack size
 // (BVH_STACK_SIZE) must be at least this. Where the levels left would not
 // hold the items even if halved at every level, the builder halves them by

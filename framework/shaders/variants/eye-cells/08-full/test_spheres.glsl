@@ -18,8 +18,8 @@
 #include "bvh_access.glsl"
 #include "ray_box.glsl"
 #include "cube_cell.glsl"
+#include "eye_cell_access.glsl"  // eyeCellList(cell): (first, count) of its spheres in the tree's items
 
-uniform isamplerBuffer uEyeCells;  // per cell: (first, count) of its spheres in uBvhItems
 uniform int uEyeCellsSize;         // cells along a cube face's edge
 uniform vec3 uEyeCellsCentre;      // the point the cells were built around: the eye
 
@@ -51,7 +51,7 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
     // A ray from the eye: its cell's list is the leaf. (The same 8 pixels
     // all start there or none does: a primary ray is every pixel's first.)
     if (ray.origin == uEyeCellsCentre) {
-        ivec2 list = texelFetch(uEyeCells, cubeCell(ray.dir, uEyeCellsSize)).xy;
+        ivec2 list = eyeCellList(cubeCell(ray.dir, uEyeCellsSize));
         first = list.x;
         // An empty list: a leaf of planes, a kind no leaf holds, tests nothing.
         code = list.y > 0 ? 8 * list.y + KIND_SPHERE : KIND_PLANE;

@@ -10,8 +10,7 @@
 // is many steps of reads whose addresses differ between llvmpipe's 8
 // lock-step pixels. The lists are conservative, so the answer - blocked or
 // not - is the same as findBlocker's, bit for bit.
-uniform isamplerBuffer uLightCells;  // per cell: (first, count) of its spheres, of its triangles
-uniform isamplerBuffer uLightItems;  // the lists: sphere and triangle indices
+#include "light_buffer_access.glsl"  // lightCellList(cell), lightItem(k)
 uniform int uLightBufferSize;        // cells along a cube face's edge
 uniform int uLightBufferEveryCell;   // the cell listing every sphere and triangle
 uniform float uLightBufferReach;     // shading points farther out use that cell
@@ -36,9 +35,9 @@ bool findLightBlocker(Ray ray, float maxT, int light)
     // A point far out on an infinite plane: its ray origin moved further off
     // the surface than the lists allow for, so every object is tested.
     int cell = length(ray.origin) > uLightBufferReach ? uLightBufferEveryCell : lightCell(light, -ray.dir);
-    ivec4 list = texelFetch(uLightCells, cell);
+    ivec4 list = lightCellList(cell);
     for (int k = 0; k < list.y && hit.id < 0; ++k) {
-        int i = texelFetch(uLightItems, list.x + k).r;
+        int i = lightItem(list.x + k);
         keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
     }
     for (int i = 0; i < uPlaneCount && hit.id < 0; ++i)
@@ -46,7 +45,7 @@ bool findLightBlocker(Ray ray, float maxT, int light)
     for (int i = 0; i < uDiscCount && hit.id < 0; ++i)
         keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
     for (int k = 0; k < list.w && hit.id < 0; ++k) {
-        int i = texelFetch(uLightItems, list.z + k).r;
+        int i = lightItem(list.z + k);
         keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
                    KIND_TRIANGLE, i);
     }

@@ -1,15 +1,49 @@
 #include "stage_programs.h"
 
+#include "error.h"
 #include "eye_cells.h"
 #include "hidden_tori.h"
 #include "light_buffer.h"
+#include "paths.h"
 #include "scene_baking.h"
-#include "sphere_blocks.h"
 
 #include <algorithm>
 #include <cstdio>
 
 namespace raylab {
+
+namespace {
+
+void checkFits(const Scene& scene, const StageInfo& stage, const char* what, std::size_t count,
+               int limit) {
+    if (count > 0 && limit == 0)
+        throw Error(scene.file + ": " + what + ": stage " + stage.id + " has no " + what);
+    if (int(count) > limit)
+        throw Error(scene.file + ": " + what + ": " + std::to_string(count) + " " + what +
+                    ", but stage " + stage.id + " supports at most " + std::to_string(limit));
+}
+
+}  // namespace
+
+void checkSceneFits(const StageInfo& stage, const Scene& scene) {
+    const StageLimits& l = stage.limits;
+    checkFits(scene, stage, "spheres", scene.spheres.size(), l.spheres);
+    checkFits(scene, stage, "materials", scene.materials.size(), l.materials);
+    checkFits(scene, stage, "lights", scene.lights.size(), l.lights);
+    checkFits(scene, stage, "planes", scene.planes.size(), l.planes);
+    checkFits(scene, stage, "discs", scene.discs.size(), l.discs);
+    checkFits(scene, stage, "triangles", scene.triangles.size(), l.triangles);
+    checkFits(scene, stage, "tori", scene.tori.size(), l.tori);
+    checkFits(scene, stage, "mesh triangles", meshTriangleCount(scene), l.meshTriangles);
+    checkFits(scene, stage, "textures", scene.textures.size(), l.textures);
+    if (scene.skyBox && !l.skyBox) {
+        std::string adds;  // the first stage of the track that has one
+        for (const StageInfo& s : allStages())
+            if (adds.empty() && s.track == stage.track && s.limits.skyBox)
+                adds = " (stage " + s.number() + " adds it)";
+        throw Error(scene.file + ": sky_box: stage " + stage.id + " has no sky box" + adds);
+    }
+}
 
 std::vector<std::string> ShaderVariant::defines() const {
     std::vector<std::string> d;
@@ -101,10 +135,16 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
     if (variant.usesEyeCells(scene)) defines.push_back("RAYLAB_EYE_CELLS");
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();
-    const std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);
+    std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);
+    if (variant.webGl2) search.insert(search.begin(), projectRoot() / "web" / "shaders");
     const std::string& entry = fragmentEntry.empty() ? stage.program.fragment : fragmentEntry;
-    return {assembleShader(stage.program.vertex, search, defines, {}, variant.extensions()),
-            assembleShader(entry, search, defines, prelude, variant.extensions())};
+    StagePrograms p{assembleShader(stage.program.vertex, search, defines, {}, variant.extensions()),
+                    assembleShader(entry, search, defines, prelude, variant.extensions())};
+    if (variant.webGl2) {
+        p.vertex = asGlslEs300(std::move(p.vertex));
+        p.fragment = asGlslEs300(std::move(p.fragment));
+    }
+    return p;
 }
 
 }  // namespace raylab

@@ -14,6 +14,10 @@
 
 namespace raylab {
 
+// Bytes one sphere takes in each of the spheres' uniform blocks (std140
+// array stride; raytrace/sphere_blocks.h fills them).
+constexpr int kSphereBlockStride = 16;
+
 // How the stage's shader is compiled (fixed per program, unlike RenderSettings).
 // `raylab bench` compares the choices; the defaults are the fastest correct ones.
 struct ShaderVariant {
@@ -64,6 +68,10 @@ struct ShaderVariant {
     // (sphere_blocks.h); set beforehand, it asks for them anyway (the growth
     // bench compares the two).
     bool sphereStorage = false;
+    // The web page's program (web/README.md): GLSL ES 3.00, with web/shaders
+    // first on the search path (its files read 2D textures where WebGL 2
+    // has no buffer textures). `raylab shader --es` prints it.
+    bool webGl2 = false;
     // Switches on the levers of `raylab demo` and of the window showing the
     // solution: the weight cut (kDemoWeightCut), shared work, the light
     // buffer and the eye's cells. Only for
@@ -81,6 +89,10 @@ struct ShaderVariant {
     // repay walking it (lite's 10 are found faster by the plain loop).
     static ShaderVariant fastestFor(const Scene& scene);
 };
+
+// Throws Error (one line: the scene file, what, how many, the stage's
+// limit) when SCENE has more of something than STAGE supports.
+void checkSceneFits(const StageInfo& stage, const Scene& scene);
 
 struct StagePrograms {
     ShaderSource vertex;

@@ -1,0 +1,137 @@
+#include "web_ray_stage.h"
+
+#include "error.h"
+#include "eye_cells.h"
+#include "light_buffer.h"
+#include "paths.h"
+#include "shader_source.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z
+// (raytrace/stage_renderer.cpp's torusToLocal, column-major).
+glm::mat3 torusRotation(glm::vec3 axis) {
+    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
+    glm::vec3 y = glm::cross(axis, x);
+    return glm::transpose(glm::mat3(x, y, axis));
+}
+
+StageSources sourcesFor(const StageInfo& stage, const std::string& lab) {
+    return lab.empty() ? solutionSources(stage) : labSources(stage, lab);
+}
+
+}  // namespace
+
+WebRayStage::WebRayStage(const WebRayRequest& r)
+    : stage_(&findStage(r.stage)), sources_(sourcesFor(*stage_, r.lab)) {
+    if (stage_->track != "raytrace")
+        throw Error("stage " + stage_->id + " is not a ray-tracing stage");
+    if (!stage_->program.geometry.empty())
+        throw Error(displayPath(stage_->folder() / "stage.json") +
+                    ": program.geometry: the ray tracer's renderer takes no geometry shader");
+    const Scene read = loadScene(r.scene.empty()
+                                     ? projectRoot() / "assets" / "scenes" / stage_->scene
+                                     : std::filesystem::path(r.scene));
+    // Stage 08's OBJ meshes sit in buffer textures the page has no
+    // stand-in for yet.
+    if (!read.meshes.empty())
+        throw Error(read.file +
+                    ": meshes: OBJ meshes are drawn by the native build only (build/raylab), not "
+                    "in the web page");
+    fileCamera_ = read.camera;
+    frame_ = sceneFrame(read);
+    scene_ = transformScene(read, frame_);
+    checkSceneFits(*stage_, scene_);
+    // The page always compiles the program specialised to its scene: the
+    // generic one keeps the scene in uniform arrays that can pass WebGL 2's
+    // guaranteed 224 vectors.
+    variant_ = ShaderVariant::fastestFor(scene_);
+    if (r.bvh >= 0) variant_.bvh = r.bvh == 1;
+    if (r.demoLevers) {
+        if (!r.lab.empty())
+            throw Error("the demo's levers replace files students write: only for the solution");
+        variant_.useDemoLevers();
+    }
+    variant_.webGl2 = true;
+    variant_.maxBlockBytes = r.maxBlockBytes;
+    if (r.maxBlockBytes > 0 && int(scene_.spheres.size()) > r.maxBlockBytes / kSphereBlockStride)
+        throw Error(scene_.file + ": spheres: " + std::to_string(scene_.spheres.size()) +
+                    " spheres, but this browser's uniform blocks hold at most " +
+                    std::to_string(r.maxBlockBytes / kSphereBlockStride) +
+                    " (MAX_UNIFORM_BLOCK_SIZE " + std::to_string(r.maxBlockBytes) + " bytes, " +
+                    std::to_string(kSphereBlockStride) + " per sphere)");
+    programs_ = assembleStagePrograms(*stage_, sources_, scene_, variant_);
+    todos_ = findOpenTodos(programs_.fragment);
+    const std::string& text = programs_.fragment.text;
+    auto reads = [&](const char* uniform) { return text.find(uniform) != std::string::npos; };
+    // The buffers only for a program that reads them (as natively).
+    if (variant_.bvh && reads("uBvhNodes")) {
+        const Bvh bvh = buildBvh(scene_, 2, BvhObjects::SpheresAndMeshes);
+        bvhNodes = packedBvhNodes(bvh);
+        bvhItems.assign(bvh.items.begin(), bvh.items.end());
+        treeItemCount_ = bvhItems.size();
+        if (reads("uEyeCells")) eyeCube_.emplace(kEyeCellResolution);
+    }
+    if (reads("uLightCells")) {
+        lightBuffer = buildLightBuffer(scene_);
+        for (glm::ivec4 c : lightBuffer.cells) lightCells.insert(lightCells.end(), {c.x, c.y, c.z, c.w});
+        lightItems.assign(lightBuffer.items.begin(), lightBuffer.items.end());
+        lightBuffer.cells.clear();  // kept for its uniforms only
+        lightBuffer.items.clear();
+    }
+}
+
+std::vector<std::string> WebRayStage::levers() const {
+    std::vector<std::string> on;
+    const std::string& text = programs_.fragment.text;
+    auto has = [&](const char* define) {
+        return text.find(std::string("#define ") + define) != std::string::npos;
+    };
+    if (has("RAYLAB_BVH")) on.push_back(usesEyeCells() ? "BVH, eye cells" : "BVH");
+    if (has("RAYLAB_LIGHT_BUFFER")) on.push_back("light buffer");
+    if (has("RAYLAB_TORI_HIDDEN_FROM_LIGHTS")) on.push_back("tori hidden from the lights");
+    if (has("RAYLAB_SHARED_WORK")) on.push_back("shared work");
+    if (has("RAYLAB_WEIGHT_CUT")) on.push_back("weight cut");
+    return on;
+}
+
+std::vector<float> WebRayStage::sphereCentres(float t) const {
+    std::vector<float> out(4 * std::max<std::size_t>(1, scene_.spheres.size()), 0.0f);
+    for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
+        const Sphere& s = scene_.spheres[i];
+        const glm::vec3 c = s.center + s.motion.offsetAt(t);
+        std::copy_n(&c.x, 3, &out[4 * i]);
+        out[4 * i + 3] = s.radius;
+    }
+    return out;
+}
+
+std::vector<float> WebRayStage::torusToLocal(float t) const {
+    std::vector<float> out;
+    for (const Torus& torus : scene_.tori) {
+        const glm::mat3 m = torusRotation(torus.axisAt(t));
+        for (int c = 0; c < 3; ++c) out.insert(out.end(), {m[c].x, m[c].y, m[c].z});
+    }
+    return out;
+}
+
+bool WebRayStage::moveEye(glm::vec3 eye) {
+    if (!eyeCube_ || (eyeBuilt_ && eye == eyeCellsCentre_)) return false;
+    const EyeCells built = buildEyeCells(scene_, eye, *eyeCube_);
+    bvhItems.resize(treeItemCount_);
+    const int base = int(bvhItems.size());
+    bvhItems.insert(bvhItems.end(), built.items.begin(), built.items.end());
+    eyeCells.clear();
+    for (glm::ivec2 c : built.cells) eyeCells.insert(eyeCells.end(), {base + c.x, c.y});
+    eyeCellsCentre_ = eye;
+    eyeBuilt_ = true;
+    return true;
+}
+
+}  // namespace raylab

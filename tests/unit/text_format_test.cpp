@@ -24,9 +24,28 @@ std::string viaToChars(double v) {
 }
 
 TEST(ShortestExact, PortableWritesWhatToCharsWrites) {
-    const double fixed[] = {0.0, -0.0, 1.0, -1.0, 0.1, 0.001, 1e-4, 123456.0, 1e20, 1e21, 1e22,
-                            1.5e-7, 100000.0, 1e15, 1e16, 1e17, 12345678901234567.0, 0.3, 2.0 / 3.0,
-                            5e-324, std::numeric_limits<double>::max(), 1.0 / 255.0,
+    const double fixed[] = {0.0,
+                            -0.0,
+                            1.0,
+                            -1.0,
+                            0.1,
+                            0.001,
+                            1e-4,
+                            123456.0,
+                            1e20,
+                            1e21,
+                            1e22,
+                            1.5e-7,
+                            100000.0,
+                            1e15,
+                            1e16,
+                            1e17,
+                            12345678901234567.0,
+                            0.3,
+                            2.0 / 3.0,
+                            5e-324,
+                            std::numeric_limits<double>::max(),
+                            1.0 / 255.0,
                             std::numeric_limits<double>::infinity(),
                             -std::numeric_limits<double>::infinity()};
     for (double v : fixed) EXPECT_EQ(shortestExactPortable(v), viaToChars(v)) << v;
@@ -37,7 +56,8 @@ TEST(ShortestExact, PortableWritesWhatToCharsWrites) {
         double v;
         std::memcpy(&v, &bits, sizeof v);
         if (!std::isfinite(v)) continue;
-        const double f = double(float(std::ldexp(double(rng() % 2000000) - 1e6, int(rng() % 40) - 30)));
+        const double f =
+            double(float(std::ldexp(double(rng() % 2000000) - 1e6, int(rng() % 40) - 30)));
         ASSERT_EQ(shortestExactPortable(v), viaToChars(v)) << v;
         ASSERT_EQ(shortestExactPortable(f), viaToChars(f)) << f;
     }

@@ -371,4 +371,12 @@ std::vector<std::pair<std::string, const StageProgram*>> StageInfo::allPrograms(
     return all;
 }
 
+const StageProgram& namedProgram(const StageInfo& stage, const char* name, const char* feature) {
+    auto it = stage.programs.find(name);
+    if (it == stage.programs.end())
+        throw Error(displayPath(stage.folder() / "stage.json") + ": programs." + name +
+                    ": the feature \"" + feature + "\" needs this program");
+    return it->second;
+}
+
 }  // namespace raylab

@@ -116,6 +116,10 @@ const std::vector<StageInfo>& allStages();
 // Accepts "01-raycast", "01", "1", or "f2" for "f2-shells". Throws Error listing the stage ids.
 const StageInfo& findStage(const std::string& idOrNumber);
 
+// STAGE's program NAME ("fins", "strands"), which FEATURE needs; throws
+// Error naming stage.json when the stage has none.
+const StageProgram& namedProgram(const StageInfo& stage, const char* name, const char* feature);
+
 // The stage `raylab demo` and `raylab bench` run for TRACK: its last stage
 // with the "demo" feature.
 const StageInfo& demoStage(const std::string& track = "raytrace");

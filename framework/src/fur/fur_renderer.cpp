@@ -26,16 +26,6 @@ constexpr int kColorUnit = 0, kPatternUnit = 1, kFinUnit = 2;
 // share of the far one.
 constexpr float kNearShareOfFar = 1e-4f;
 
-std::string stageFile(const StageInfo& stage) { return displayPath(stage.folder() / "stage.json"); }
-
-const StageProgram& namedProgram(const StageInfo& stage, const char* name, const char* feature) {
-    auto it = stage.programs.find(name);
-    if (it == stage.programs.end())
-        throw Error(stageFile(stage) + ": programs." + name + ": the feature \"" + feature +
-                    "\" needs this program");
-    return it->second;
-}
-
 // "Over" blending for the see-through layers (the frame's own alpha is
 // masked off in render()).
 void blendOver() {
@@ -44,13 +34,6 @@ void blendOver() {
 }
 
 }  // namespace
-
-Mesh loadFurMesh(const FurScene& scene) {
-    Mesh m = scene.mesh.obj.empty() ? makeShape(scene.mesh.shape, scene.mesh.detail)
-                                    : loadObjMesh(scene.mesh.obj);
-    validateMesh(m);
-    return m;
-}
 
 struct FurRenderer::Frame {
     glm::mat4 model, view, projection;
@@ -65,7 +48,8 @@ FurRenderer::FurRenderer(const StageInfo& stage, StageSources sources, FurScene 
     : TargetRenderer(width, height, format), stage_(stage), sources_(std::move(sources)),
       scene_(std::move(scene)) {
     if (!stage_.has("mesh"))
-        throw Error(stageFile(stage_) + ": features: a fur stage needs the \"mesh\" feature");
+        throw Error(displayPath(stage_.folder() / "stage.json") +
+                    ": features: a fur stage needs the \"mesh\" feature");
     colorMap_ = std::make_unique<Texture2D>(scene_.fur.colorMap);
     pattern_ = std::make_unique<Texture2D>(scene_.fur.pattern);
     finMap_ = std::make_unique<Texture2D>(scene_.fur.finMap);

@@ -26,9 +26,6 @@
 
 namespace raylab {
 
-// The mesh a fur scene names (procedural or OBJ). Throws Error.
-Mesh loadFurMesh(const FurScene& scene);
-
 class FurRenderer : public TargetRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene or mesh, missing

@@ -1,10 +1,11 @@
 // The page's entry into the core (embind): web/src/core/core.ts is its only
-// caller. Requests and small answers are JSON text; arrays of numbers are
-// typed arrays (copies: wasm memory may move when it grows). A constructor
-// never throws into JavaScript: errors, with native's text, are kept and
-// read through error(). Students need not read this file.
+// caller (RayStage: a ray-tracing stage; FurStage: a fur stage). Requests and small answers are
+// JSON text; arrays of numbers are typed arrays (copies: wasm memory may move when it grows). A
+// constructor never throws into JavaScript: errors, with native's text, are kept and read through
+// error(). Students need not read this file.
 #include "error.h"
 #include "shader_source.h"
+#include "web_fur_stage.h"
 #include "web_ray_stage.h"
 
 #include <emscripten/bind.h>
@@ -49,9 +50,7 @@ public:
             q.bvh = r.value("bvh", -1);
             q.maxBlockBytes = r.value("maxBlockBytes", 0);
             stage_ = std::make_unique<WebRayStage>(q);
-        } catch (const std::exception& e) {
-            error_ = e.what();
-        }
+        } catch (const std::exception& e) { error_ = e.what(); }
     }
     std::string error() const { return error_; }
 
@@ -93,15 +92,9 @@ public:
             .dump();
     }
 
-    // A driver's log with the assembled lines mapped to file:line (native's
-    // mapCompilerLog). WHICH: "vertex" or "fragment".
-    std::string mapLog(const std::string& log, const std::string& which) const {
-        if (!stage_) return log;
-        const StagePrograms& p = stage_->programs();
-        return mapCompilerLog(log, which == "vertex" ? p.vertex : p.fragment);
+    val sphereCentres(float t) const {
+        return typedArray("Float32Array", stage_->sphereCentres(t));
     }
-
-    val sphereCentres(float t) const { return typedArray("Float32Array", stage_->sphereCentres(t)); }
     val torusToLocal(float t) const { return typedArray("Float32Array", stage_->torusToLocal(t)); }
     val bvhNodes() const { return typedArray("Float32Array", stage_->bvhNodes); }
     val bvhItems() const { return typedArray("Int32Array", stage_->bvhItems); }
@@ -125,17 +118,123 @@ private:
     std::string error_;
 };
 
+// A driver's log with the assembled lines mapped to file:line (native's
+// mapCompilerLog) for SOURCEJSON, a source as info() gives it.
+std::string mapLog(const std::string& log, const std::string& sourceJson) {
+    try {
+        const json j = json::parse(sourceJson);
+        ShaderSource s;
+        s.text = j.at("text").get<std::string>();
+        for (const json& o : j.at("origin")) s.origin.push_back({o.at(0), o.at(1)});
+        return mapCompilerLog(log, s);
+    } catch (const std::exception&) {
+        return log;  // an unmapped log beats none
+    }
+}
+
+json programsJson(const WebFurPrograms& p) {
+    return {{"vertex", sourceJson(p.vertex)}, {"fragment", sourceJson(p.fragment)}};
+}
+
+// A fur stage for the page (web_fur_stage.h).
+class FurStage {
+public:
+    explicit FurStage(const std::string& requestJson) {
+        try {
+            const json r = json::parse(requestJson);
+            stage_ = std::make_unique<WebFurStage>(r.value("stage", ""), r.value("lab", ""),
+                                                   r.value("scene", ""));
+        } catch (const std::exception& e) { error_ = e.what(); }
+    }
+    std::string error() const { return error_; }
+
+    std::string info() const {
+        if (!stage_) return "{}";
+        const WebFurStage& s = *stage_;
+        const FurScene& scene = s.scene();
+        const FurParameters& f = scene.fur;
+        json todos = json::array();
+        for (const OpenTodo& t : s.todos())
+            todos.push_back({{"file", t.file}, {"line", t.line}, {"title", t.title}});
+        json programs = {{"shells", programsJson(s.shells())}};
+        if (s.fins()) programs["fins"] = programsJson(*s.fins());
+        if (s.strands()) programs["strands"] = programsJson(*s.strands());
+        json strands = nullptr;
+        if (s.strandBudget())
+            strands = {{"perTriangle", s.strandBudget()->strandsPerTriangle},
+                       {"vertices", s.strandBudget()->segments + 1}};
+        const CameraPose& cam = scene.camera;
+        return json{
+            {"stage", s.stage().id},
+            {"sceneFile", scene.file},
+            {"programs", programs},
+            {"todos", todos},
+            {"background", vec3Json(scene.background)},
+            {"camera",
+             {{"position", vec3Json(cam.position)},
+              {"yaw", cam.yawDeg},
+              {"pitch", cam.pitchDeg},
+              {"fovY", scene.fovYDeg}}},
+            {"lightDirection", vec3Json(scene.lightDirection)},
+            {"lightColor", vec3Json(scene.lightColor)},
+            {"ambient", vec3Json(scene.ambient)},
+            {"fur",
+             {{"length", f.length},
+              {"shells", f.shells},
+              {"patternScale", f.patternScale},
+              {"shadowIntensity", f.shadowIntensity},
+              {"gravity", f.gravity},
+              {"strandDensity", f.strandDensity},
+              {"strandSegments", f.strandSegments}}},
+            {"textures", {f.colorMap.string(), f.pattern.string(), f.finMap.string()}},
+            {"bounds", {{"centre", vec3Json(s.boundsCentre())}, {"radius", s.boundsRadius()}}},
+            {"strands", strands},
+            {"mesh",
+             {{"name", s.mesh().name},
+              {"vertices", s.mesh().vertexCount()},
+              {"triangles", s.mesh().triangleCount()}}}}
+            .dump();
+    }
+
+    val positions() const { return vec3Array(stage_->mesh().positions); }
+    val normals() const { return vec3Array(stage_->mesh().normals); }
+    val uvs() const {
+        std::vector<float> out;
+        for (glm::vec2 v : stage_->mesh().uvs) out.insert(out.end(), {v.x, v.y});
+        return typedArray("Float32Array", out);
+    }
+    val indices() const { return typedArray("Uint32Array", stage_->mesh().indices); }
+    val adjacency() const { return typedArray("Uint32Array", stage_->adjacency().indices); }
+    // The model matrix at time T, column-major.
+    val modelMatrix(float t) const {
+        const glm::mat4 m = stage_->scene().modelMatrix(t);
+        std::vector<float> out;
+        for (int c = 0; c < 4; ++c) out.insert(out.end(), {m[c].x, m[c].y, m[c].z, m[c].w});
+        return typedArray("Float32Array", out);
+    }
+
+private:
+    static val vec3Array(const std::vector<glm::vec3>& v) {
+        std::vector<float> out;
+        out.reserve(3 * v.size());
+        for (glm::vec3 p : v) out.insert(out.end(), {p.x, p.y, p.z});
+        return typedArray("Float32Array", out);
+    }
+    std::unique_ptr<WebFurStage> stage_;
+    std::string error_;
+};
+
 }  // namespace
 
 }  // namespace raylab
 
 EMSCRIPTEN_BINDINGS(raylab_core) {
+    emscripten::function("mapCompilerLog", &raylab::mapLog);
     using raylab::RayStage;
     emscripten::class_<RayStage>("RayStage")
         .constructor<std::string>()
         .function("error", &RayStage::error)
         .function("info", &RayStage::info)
-        .function("mapLog", &RayStage::mapLog)
         .function("sphereCentres", &RayStage::sphereCentres)
         .function("torusToLocal", &RayStage::torusToLocal)
         .function("bvhNodes", &RayStage::bvhNodes)
@@ -144,4 +243,15 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("lightItems", &RayStage::lightItems)
         .function("eyeCells", &RayStage::eyeCells)
         .function("placeEye", &RayStage::placeEye);
+    using raylab::FurStage;
+    emscripten::class_<FurStage>("FurStage")
+        .constructor<std::string>()
+        .function("error", &FurStage::error)
+        .function("info", &FurStage::info)
+        .function("positions", &FurStage::positions)
+        .function("normals", &FurStage::normals)
+        .function("uvs", &FurStage::uvs)
+        .function("indices", &FurStage::indices)
+        .function("adjacency", &FurStage::adjacency)
+        .function("modelMatrix", &FurStage::modelMatrix);
 }

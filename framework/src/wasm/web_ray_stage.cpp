@@ -35,9 +35,9 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     if (!stage_->program.geometry.empty())
         throw Error(displayPath(stage_->folder() / "stage.json") +
                     ": program.geometry: the ray tracer's renderer takes no geometry shader");
-    const Scene read = loadScene(r.scene.empty()
-                                     ? projectRoot() / "assets" / "scenes" / stage_->scene
-                                     : std::filesystem::path(r.scene));
+    const Scene read =
+        loadScene(r.scene.empty() ? projectRoot() / "assets" / "scenes" / stage_->scene
+                                  : std::filesystem::path(r.scene));
     // Stage 08's OBJ meshes sit in buffer textures the page has no
     // stand-in for yet.
     if (!read.meshes.empty())
@@ -80,7 +80,8 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     }
     if (reads("uLightCells")) {
         lightBuffer = buildLightBuffer(scene_);
-        for (glm::ivec4 c : lightBuffer.cells) lightCells.insert(lightCells.end(), {c.x, c.y, c.z, c.w});
+        for (glm::ivec4 c : lightBuffer.cells)
+            lightCells.insert(lightCells.end(), {c.x, c.y, c.z, c.w});
         lightItems.assign(lightBuffer.items.begin(), lightBuffer.items.end());
         lightBuffer.cells.clear();  // kept for its uniforms only
         lightBuffer.items.clear();

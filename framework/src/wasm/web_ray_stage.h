@@ -20,9 +20,9 @@ namespace raylab {
 
 // What the page asks for (web/src/core/core.ts writes it as JSON).
 struct WebRayRequest {
-    std::string stage;     // id or number
-    std::string lab;       // the lab's folder (laid out like labs/); empty: the solution
-    std::string scene;     // a scene file; empty: the stage's own
+    std::string stage;        // id or number
+    std::string lab;          // the lab's folder (laid out like labs/); empty: the solution
+    std::string scene;        // a scene file; empty: the stage's own
     bool demoLevers = false;  // the demo's levers (solution only), as `raylab demo`
     int bvh = -1;             // 1 or 0: with or without the BVH; -1: the fastest choice
     int maxBlockBytes = 0;    // the browser's MAX_UNIFORM_BLOCK_SIZE
@@ -52,12 +52,12 @@ public:
     std::vector<float> torusToLocal(float t) const;
 
     // Filled where the program reads them (empty otherwise).
-    std::vector<float> bvhNodes;   // two RGBA texels per node (bvh_access.glsl)
-    std::vector<int> bvhItems;     // the tree's items, then the eye cells' lists
-    std::vector<int> lightCells;   // RGBA per cell
+    std::vector<float> bvhNodes;  // two RGBA texels per node (bvh_access.glsl)
+    std::vector<int> bvhItems;    // the tree's items, then the eye cells' lists
+    std::vector<int> lightCells;  // RGBA per cell
     std::vector<int> lightItems;
-    LightBuffer lightBuffer;       // its uniforms (resolution, reach, every-object cell)
-    std::vector<int> eyeCells;     // RG per cell: (first in bvhItems, count)
+    LightBuffer lightBuffer;    // its uniforms (resolution, reach, every-object cell)
+    std::vector<int> eyeCells;  // RG per cell: (first in bvhItems, count)
     bool usesEyeCells() const { return eyeCube_.has_value(); }
     int eyeCellResolution() const { return eyeCube_ ? eyeCube_->resolution() : 0; }
     glm::vec3 eyeCellsCentre() const { return eyeCellsCentre_; }

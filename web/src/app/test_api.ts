@@ -10,7 +10,7 @@ import { ROOT, type Catalog, type Sources, stageById } from '../course/catalog.j
 import { loadCore } from '../core/core.js';
 import { openRayStage } from '../raytrace/stage_renderer.js';
 import { loadStage } from '../tracks/track_registry.js';
-import type { OpenTodo } from '../shader/open_todos.js';
+import type { OpenTodo } from '../core/core.js';
 
 export interface ViewRequest {
   stage: string;

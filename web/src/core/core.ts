@@ -8,22 +8,29 @@
 // "solution/01-raycast/intersect_sphere.glsl" as natively) and a student's
 // folder (under STUDENT_ROOT, the core's working folder, so that its files
 // are named as the student's folder names them).
-import { ROOT, type Catalog } from '../course/catalog.js';
+import { ROOT, type Catalog, type Sources } from '../course/catalog.js';
 
 export const CORE_ROOT = '/raylab';
 export const STUDENT_ROOT = '/student';
 
-// What the core gives for a ray-tracing stage (framework/src/wasm/bindings.cpp).
+// An assembled shader: its text and where each line came from (file, line).
 export interface CoreSource {
   text: string;
   origin: [string, number][];
 }
+// A TODO block of a lab that still holds its stub (native: OpenTodo).
+export interface OpenTodo {
+  file: string;
+  line: number;
+  title: string;
+}
+// What the core gives for a ray-tracing stage (framework/src/wasm/bindings.cpp).
 export interface RayStageInfo {
   stage: string;
   sceneFile: string;
   vertex: CoreSource;
   fragment: CoreSource;
-  todos: { file: string; line: number; title: string }[];
+  todos: OpenTodo[];
   levers: string[];
   spheres: number;
   tori: number;
@@ -38,7 +45,6 @@ export interface RayStageInfo {
 export interface RayStageHandle {
   error(): string;
   info(): string;
-  mapLog(log: string, which: 'vertex' | 'fragment'): string;
   sphereCentres(t: number): Float32Array;
   torusToLocal(t: number): Float32Array;
   bvhNodes(): Float32Array;
@@ -47,6 +53,37 @@ export interface RayStageHandle {
   lightItems(): Int32Array;
   eyeCells(): Int32Array;
   placeEye(x: number, y: number, z: number): { eye: Float32Array; eyeCellsMoved: boolean };
+  delete(): void;
+}
+// What the core gives for a fur stage.
+export interface FurStageInfo {
+  stage: string;
+  sceneFile: string;
+  programs: Record<'shells' | 'fins' | 'strands', { vertex: CoreSource; fragment: CoreSource } | undefined>;
+  todos: OpenTodo[];
+  background: [number, number, number];
+  camera: RayStageInfo['camera'];
+  lightDirection: [number, number, number];
+  lightColor: [number, number, number];
+  ambient: [number, number, number];
+  fur: {
+    length: number; shells: number; patternScale: number; shadowIntensity: number;
+    gravity: number; strandDensity: number; strandSegments: number;
+  };
+  textures: [string, string, string];  // colour map, pattern, fin map
+  bounds: { centre: [number, number, number]; radius: number };
+  strands: { perTriangle: number; vertices: number } | null;
+  mesh: { name: string; vertices: number; triangles: number };
+}
+export interface FurStageHandle {
+  error(): string;
+  info(): string;
+  positions(): Float32Array;
+  normals(): Float32Array;
+  uvs(): Float32Array;
+  indices(): Uint32Array;
+  adjacency(): Uint32Array;
+  modelMatrix(t: number): Float32Array;
   delete(): void;
 }
 interface CoreFs {
@@ -62,6 +99,9 @@ interface CoreFs {
 export interface Core {
   FS: CoreFs;
   RayStage: new (request: string) => RayStageHandle;
+  FurStage: new (request: string) => FurStageHandle;
+  // A driver's log with its line references turned into file:line (native's mapCompilerLog).
+  mapCompilerLog(log: string, sourceJson: string): string;
 }
 
 declare function RayLabCore(options: object): Promise<Core>;
@@ -146,10 +186,10 @@ export function writeStudentLab(core: Core, labRoot: string, folders: Map<string
   return labRoot;
 }
 
-// Every file the core may read for the ray-tracing stages: the stage.json
-// files, every shader folder, the scenes and their pictures (a scene names its
-// pictures; the reader checks that they exist).
-export function rayTracingFiles(catalog: Catalog): string[] {
+// Every file the core may read: the stage.json files, every shader folder,
+// the scenes, their pictures and meshes (a scene names them; the readers
+// check that they exist).
+export function projectFiles(catalog: Catalog): string[] {
   const files: string[] = [];
   for (const s of catalog.stages) {
     files.push(`solution/${s.info.id}/stage.json`);
@@ -160,9 +200,21 @@ export function rayTracingFiles(catalog: Catalog): string[] {
   files.push(...catalog.web.map((n) => `web/shaders/${n}`));
   for (const [folder, names] of Object.entries(catalog.variants))
     files.push(...names.map((n) => `framework/shaders/variants/${folder}/${n}`));
-  files.push(...catalog.scenes.filter((n) => !n.startsWith('fur/')).map((n) => `assets/scenes/${n}`));
+  files.push(...catalog.scenes.map((n) => `assets/scenes/${n}`));
   files.push(...catalog.assets.map((n) => `assets/${n}`));
   return files;
+}
+
+// The lab a request names, as the core takes it: '' for the solution, the
+// project's labs/, or a student's folder written under the core's working
+// folder (a labs/-like folder shown as ROOT/<stage>, or one stage's folder,
+// then laid out as <stage>/ under .).
+export function labForCore(core: Core, stageId: string, sources: Sources): string {
+  if (sources.kind === 'lab') return `${CORE_ROOT}/labs`;
+  if (sources.kind !== 'disk') return '';
+  const suffix = `/${stageId}`;
+  const root = sources.shown.endsWith(suffix) ? sources.shown.slice(0, -suffix.length) : '.';
+  return writeStudentLab(core, root, new Map([[stageId, sources.files]]));
 }
 
 // A core path (/raylab/assets/scenes/../textures/earth.png) as a URL the page fetches.

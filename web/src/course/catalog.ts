@@ -1,8 +1,7 @@
 // The project as the page sees it (dist/catalog.json, written at build time
-// by tools/write_catalog.mjs): stage.json files and which shader files exist
-// where. Stage order and search paths follow the native rules
-// (framework/src/course/stage_catalog.cpp, stage_sources.cpp).
-import { memoryFolder, servedFolder, type SourceFolder } from '../shader/source_folder.js';
+// by tools/write_catalog.mjs): stage.json files and which files exist where,
+// for the menus and for the files the core reads (core/core.ts). Search
+// paths and stage rules are the core's own (native C++).
 
 export interface CheckViewJson {
   name: string;
@@ -72,59 +71,9 @@ export function chain(catalog: Catalog, stage: StageJson): StageJson[] {
   return out;
 }
 
-// MAX_SPHERES... from the limits (at least 1: GLSL has no empty arrays), then "defines".
-export function stageDefines(stage: StageJson): string[] {
-  const size = (name: string, key: string) => `${name} ${Math.max(1, Number(stage.limits[key] ?? 0))}`;
-  return [
-    size('MAX_SPHERES', 'spheres'), size('MAX_MATERIALS', 'materials'), size('MAX_LIGHTS', 'lights'),
-    size('MAX_PLANES', 'planes'), size('MAX_DISCS', 'discs'), size('MAX_TRIANGLES', 'triangles'),
-    size('MAX_TORI', 'tori'), ...(stage.defines ?? []),
-  ];
-}
-
 // Where a program's files come from: a solution, a lab served from the
 // project's labs/, or a lab folder the student opened from disk.
 export type Sources =
   | { kind: 'solution' }
   | { kind: 'lab' }
   | { kind: 'disk'; shown: string; files: Map<string, string> };
-
-// Which define switches which variant folder on (native: kVariants).
-const VARIANTS: { define: string; whenDefined: boolean; folder: string }[] = [
-  { define: 'RAYLAB_NAIVE_NUMERICS', whenDefined: true, folder: 'naive-numerics' },
-  { define: 'TORUS_SOLVER_CLOSED_FORM', whenDefined: true, folder: 'torus-closed-form' },
-  { define: 'RAYLAB_BVH', whenDefined: false, folder: 'linear-search' },
-  { define: 'RAYLAB_WEIGHT_CUT', whenDefined: true, folder: 'weight-cut' },
-  { define: 'RAYLAB_OLD_PATH', whenDefined: true, folder: 'old-path' },
-  { define: 'RAYLAB_MESHES', whenDefined: true, folder: 'meshes' },
-];
-
-// The search path: the web's own replacements (the BVH over 2D textures)
-// first, then the stage folders with their variant folders in front, then
-// the framework (native: searchWithVariants, with web/shaders put first).
-export function searchPath(catalog: Catalog, stage: StageJson, sources: Sources, defines: string[]): SourceFolder[] {
-  const defined = (name: string) => defines.some((d) => d === name || d.startsWith(name + ' '));
-  const on = VARIANTS.filter((v) => defined(v.define) === v.whenDefined).map((v) => v.folder);
-  const variantFolders = (id: string) =>
-    on.filter((f) => catalog.variants[`${f}/${id}`]).map((f) =>
-      servedFolder(`framework/shaders/variants/${f}/${id}`, `${ROOT}/framework/shaders/variants/${f}/${id}`, catalog.variants[`${f}/${id}`]));
-  const ids = chain(catalog, stage).map((s) => s.id);
-  const search: SourceFolder[] = [servedFolder('web/shaders', `${ROOT}/web/shaders`, catalog.web)];
-  if (sources.kind === 'solution') {
-    for (const id of ids) {
-      search.push(...variantFolders(id));
-      const entry = catalog.stages.find((s) => s.info.id === id)!;
-      search.push(servedFolder(`solution/${id}`, `${ROOT}/solution/${id}`, entry.solutionFiles));
-    }
-  } else {
-    for (const id of ids) search.push(...variantFolders(id));
-    if (sources.kind === 'lab') {
-      const entry = catalog.stages.find((s) => s.info.id === stage.id)!;
-      search.push(servedFolder(`labs/${stage.id}`, `${ROOT}/labs/${stage.id}`, entry.labFiles));
-    } else {
-      search.push(memoryFolder(sources.shown, sources.files));
-    }
-  }
-  search.push(servedFolder('framework/shaders', `${ROOT}/framework/shaders`, catalog.framework));
-  return search;
-}

@@ -4,8 +4,15 @@
 // (locations 3..10: A, B, C, D, the normals and uvs at B and C); for the
 // instanced strands one triangle per STRANDS instances (locations 3..11:
 // three corners, three normals, three uvs, advancing every STRANDS instances).
-import { type EdgeAdjacency, edgeInstances } from './mesh/adjacency.js';
-import type { Mesh } from './mesh/mesh.js';
+import { edgeInstances } from './fin_instances.js';
+
+// A mesh as the core gives it (native: fur/mesh/mesh.h).
+export interface MeshArrays {
+  positions: Float32Array;  // x, y, z per vertex
+  normals: Float32Array;    // x, y, z per vertex, unit length
+  uvs: Float32Array;        // u, v per vertex
+  indices: Uint32Array;     // three per triangle
+}
 
 export class FurMeshBuffers {
   private triangles: WebGLVertexArrayObject;
@@ -18,8 +25,8 @@ export class FurMeshBuffers {
 
   constructor(
     private gl: WebGL2RenderingContext,
-    mesh: Mesh,
-    adjacency: EdgeAdjacency | null,
+    mesh: MeshArrays,
+    adjacency: Uint32Array | null,  // the core's: 4 per edge (A B C D); null without fins
     // The fur shader's strands: per triangle, and vertices per strand (segments + 1).
     private strands: { perTriangle: number; vertices: number } | null,
   ) {
@@ -41,8 +48,8 @@ export class FurMeshBuffers {
     this.indexCount = indices.length;
     this.triangleCount = indices.length / 3;
 
-    if (adjacency && adjacency.indices.length) {
-      this.edgeCount = adjacency.indices.length / 4;
+    if (adjacency && adjacency.length) {
+      this.edgeCount = adjacency.length / 4;
       this.finVao = gl.createVertexArray()!;
       gl.bindVertexArray(this.finVao);
       this.arrayBuffer(edgeInstances(mesh, adjacency));

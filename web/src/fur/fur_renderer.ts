@@ -4,38 +4,46 @@
 // strands come from instanced draws whose vertex shaders
 // (web/shaders/fin_instanced.vert, strand_instanced.vert) do what fin.geom
 // and strand.geom do natively, calling the student's silhouette.glsl and
-// strand_point.glsl; the fragment shaders are the stage's own.
+// strand_point.glsl; the fragment shaders are the stage's own. The scene, the
+// mesh, its edge adjacency and the programs come from the C++ core
+// (core/core.ts: framework/src/wasm/web_fur_stage.h); what stays here is WebGL.
 import type { Camera } from '../app/camera.js';
-import { type Catalog, type Sources, type StageJson, searchPath, stageDefines } from '../course/catalog.js';
+import type { Catalog, Sources, StageJson } from '../course/catalog.js';
+import {
+  type Core, coreFileUrl, CORE_ROOT, ensureProjectFiles, type FurStageHandle, type FurStageInfo, labForCore,
+  type OpenTodo, projectFiles, writeProjectFile,
+} from '../core/core.js';
 import { columnLength, lookAt, perspective, transformPoint } from '../gl/mat4.js';
 import { Program } from '../gl/program.js';
 import { texture2D } from '../gl/textures.js';
 import type { RenderSettings } from '../raytrace/render_settings.js';
-import { findOpenTodos, type OpenTodo } from '../shader/open_todos.js';
-import { asGlslEs300, assembleShader, type ShaderSource } from '../shader/shader_source.js';
-import type { SourceFolder } from '../shader/source_folder.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
-import { buildEdgeAdjacency } from './mesh/adjacency.js';
-import { type FurScene, modelMatrix } from './mesh/fur_scene.js';
-import type { Mesh } from './mesh/mesh.js';
 import { FurMeshBuffers } from './fur_mesh_buffers.js';
 
 const COLOR_UNIT = 0, PATTERN_UNIT = 1, FIN_UNIT = 2;
 // As natively: from inside the bounding sphere the near plane is this share of the far one.
 const NEAR_SHARE_OF_FAR = 1e-4;
-// The strands per triangle natively (strand_budget.cpp) with the geometry
-// budget every OpenGL 3.3 driver offers (1024 components): the same fur.
-const STRAND_VERTEX_COMPONENTS = 17, STRANDS_WANTED = 32, MIN_TOTAL_COMPONENTS = 1024, MIN_OUTPUT_VERTICES = 256;
 
-function strandsPerTriangle(segments: number): number {
-  const perStrand = segments + 1;
-  return Math.min(STRANDS_WANTED, Math.floor(MIN_OUTPUT_VERTICES / perStrand),
-    Math.floor(MIN_TOTAL_COMPONENTS / (perStrand * STRAND_VERTEX_COMPONENTS)));
+export interface FurStageRequest {
+  stage: StageJson;
+  sources: Sources;
+  sceneName: string;   // under assets/scenes/ ("fur/torus.json")
+  sceneText?: string;  // that file's text, made up by a test
 }
 
-function strandDefines(segments: number): string[] {
-  const strands = strandsPerTriangle(segments);
-  return [`STRAND_SEGMENTS ${segments}`, `STRANDS_PER_TRIANGLE ${strands}`, `STRAND_MAX_VERTICES ${strands * (segments + 1)}`];
+// The core's fur stage for REQUEST. Throws Error with native's message.
+export async function openFurStage(core: Core, catalog: Catalog, r: FurStageRequest): Promise<{ handle: FurStageHandle; info: FurStageInfo }> {
+  await ensureProjectFiles(core, projectFiles(catalog));
+  if (r.sceneText !== undefined) writeProjectFile(core, `assets/scenes/${r.sceneName}`, r.sceneText);
+  const handle = new core.FurStage(JSON.stringify({
+    stage: r.stage.id, lab: labForCore(core, r.stage.id, r.sources), scene: `${CORE_ROOT}/assets/scenes/${r.sceneName}`,
+  }));
+  const error = handle.error();
+  if (error) {
+    handle.delete();
+    throw new Error(error);
+  }
+  return { handle, info: JSON.parse(handle.info()) as FurStageInfo };
 }
 
 export class FurRenderer implements TrackRenderer {
@@ -45,89 +53,58 @@ export class FurRenderer implements TrackRenderer {
   private constructor(
     private gl: WebGL2RenderingContext,
     readonly stage: StageJson,
-    readonly scene: FurScene,
+    private core: FurStageHandle,
+    readonly info: FurStageInfo,
     private buffers: FurMeshBuffers,
     private shells: Program,
     private fins: Program | null,
     private strands: Program | null,
-    readonly todos: OpenTodo[],
-    private bounds: { centre: [number, number, number]; radius: number },
-  ) {}
+  ) {
+    this.todos = info.todos;
+  }
 
-  static async create(
-    gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, scene: FurScene, mesh: Mesh,
-  ): Promise<FurRenderer> {
+  readonly todos: OpenTodo[];
+
+  static async create(gl: WebGL2RenderingContext, core: Core, catalog: Catalog, request: FurStageRequest): Promise<FurRenderer> {
+    const { handle, info } = await openFurStage(core, catalog, request);
+    const stage = request.stage;
     const has = (f: string) => stage.features.includes(f);
-    if (!has('mesh')) throw new Error(`solution/${stage.id}/stage.json: features: a fur stage needs the "mesh" feature`);
-    const defines = [...stageDefines(stage), ...(has('fur_shader') ? strandDefines(scene.fur.strandSegments) : [])];
-    const search = searchPath(catalog, stage, sources, defines);
-    const sourcesRead: ShaderSource[] = [];
-    const assemble = async (entry: string, folder?: SourceFolder[]) => {
-      const s = asGlslEs300(await assembleShader(entry, folder ?? search, defines));
-      sourcesRead.push(s);
-      return s;
-    };
-    const programOf = async (vertex: string, fragment: string) => new Program(gl, await assemble(vertex), await assemble(fragment));
-    const named = (name: string, feature: string) => {
-      const p = stage.programs?.[name];
-      if (!p) throw new Error(`solution/${stage.id}/stage.json: programs.${name}: the feature "${feature}" needs this program`);
-      return p;
-    };
     // Built into locals: a failure (a student's compile error) deletes what
     // was built so far, so a watched folder's broken saves leak nothing.
     const programs: Program[] = [];
-    const built = async (vertex: string, fragment: string) => {
-      const p = await programOf(vertex, fragment);
-      programs.push(p);
-      return p;
+    const built = (name: 'shells' | 'fins' | 'strands') => {
+      const p = info.programs[name];
+      if (!p) return null;
+      const program = new Program(gl, core, p.vertex, p.fragment);
+      programs.push(program);
+      return program;
     };
-    const notes: string[] = [];
-    let shells: Program, fins: Program | null = null, strands: Program | null = null;
+    let shells: Program, fins: Program | null, strands: Program | null;
     try {
-      shells = await built(stage.program.vertex, stage.program.fragment);
-      if (has('fins')) {
-        const p = named('fins', 'fins');
-        fins = await built('fin_instanced.vert', p.fragment);
-        await assemble(p.vertex);  // for its TODOs only
-        if (p.geometry) await assemble(p.geometry);
-        notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copies of ${p.vertex} and ${p.geometry}: what you write in those two shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
-      }
-      if (has('fur_shader')) {
-        const p = named('strands', 'fur_shader');
-        strands = await built('strand_instanced.vert', p.fragment);
-        if (p.geometry) await assemble(p.geometry);
-        notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.vertex} and ${p.geometry}, which run natively only`);
-      }
+      shells = built('shells')!;
+      fins = built('fins');
+      strands = built('strands');
     } catch (e) {
       for (const p of programs) p.dispose();
+      handle.delete();
       throw e;
     }
-    // Open TODOs of every file read, each once.
-    const seen = new Set<string>();
-    const todos: OpenTodo[] = [];
-    for (const s of sourcesRead)
-      for (const t of await findOpenTodos(s))
-        if (!seen.has(`${t.file}:${t.line}`)) {
-          seen.add(`${t.file}:${t.line}`);
-          todos.push(t);
-        }
-    const buffers = new FurMeshBuffers(gl, mesh, has('fins') ? buildEdgeAdjacency(mesh) : null,
-      has('fur_shader') ? { perTriangle: strandsPerTriangle(scene.fur.strandSegments), vertices: scene.fur.strandSegments + 1 } : null);
-    // The mesh's bounding sphere (native: FurRenderer::setMesh).
-    const p = mesh.positions;
-    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-    for (let v = 0; v < p.length; v += 3)
-      for (let i = 0; i < 3; ++i) {
-        lo[i] = Math.min(lo[i]!, p[v + i]!);
-        hi[i] = Math.max(hi[i]!, p[v + i]!);
-      }
-    const centre: [number, number, number] = [0.5 * (lo[0]! + hi[0]!), 0.5 * (lo[1]! + hi[1]!), 0.5 * (lo[2]! + hi[2]!)];
-    let radius = 0;
-    for (let v = 0; v < p.length; v += 3) radius = Math.max(radius, Math.hypot(p[v]! - centre[0], p[v + 1]! - centre[1], p[v + 2]! - centre[2]));
-    const r = new FurRenderer(gl, stage, scene, buffers, shells, fins, strands, todos, { centre, radius });
+    const notes: string[] = [];
+    const named = (name: string) => stage.programs?.[name];
+    if (fins) {
+      const p = named('fins')!;
+      notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copies of ${p.vertex} and ${p.geometry}: what you write in those two shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
+    }
+    if (strands) {
+      const p = named('strands')!;
+      notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.vertex} and ${p.geometry}, which run natively only`);
+    }
+    const mesh = { positions: handle.positions(), normals: handle.normals(), uvs: handle.uvs(), indices: handle.indices() };
+    const buffers = new FurMeshBuffers(gl, mesh, has('fins') ? handle.adjacency() : null, info.strands);
+    const r = new FurRenderer(gl, stage, handle, info, buffers, shells, fins, strands);
     r.notes.push(...notes);
     // All three pictures or none: those that loaded are deleted with the rest.
-    const pictures = await Promise.allSettled([scene.fur.colorMap, scene.fur.pattern, scene.fur.finMap].map((u) => texture2D(gl, u)));
+    const pictures = await Promise.allSettled(info.textures.map((u) => texture2D(gl, coreFileUrl(u))));
     r.textures = pictures.flatMap((p) => (p.status === 'fulfilled' ? [p.value] : []));
     const failed = pictures.find((p) => p.status === 'rejected');
     if (failed) {
@@ -138,7 +115,7 @@ export class FurRenderer implements TrackRenderer {
   }
 
   private setUniforms(p: Program, f: { model: Float32Array; view: Float32Array; projection: Float32Array; eye: number[]; time: number; furLength: number }): void {
-    const gl = this.gl, s = this.scene;
+    const gl = this.gl, s = this.info;
     gl.useProgram(p.id);
     gl.uniformMatrix4fv(p.uniform('uModel'), false, f.model);
     gl.uniformMatrix4fv(p.uniform('uView'), false, f.view);
@@ -159,17 +136,17 @@ export class FurRenderer implements TrackRenderer {
   }
 
   render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
-    const gl = this.gl, s = this.scene;
+    const gl = this.gl, s = this.info;
     // The frame (native: FurRenderer::frameFor): near and far planes hug the
     // mesh's bounding sphere with room for the fur.
-    const model = modelMatrix(s, timeSeconds);
+    const model = this.core.modelMatrix(timeSeconds);
     const eye = camera.pose.position;
     const f = camera.forward(), up = camera.up();
     const view = lookAt(eye, [eye[0] + f[0], eye[1] + f[1], eye[2] + f[2]], up);
     const furLength = s.fur.length * settings.furLength;
-    const centre = transformPoint(model, this.bounds.centre);
+    const centre = transformPoint(model, s.bounds.centre);
     const scale = Math.max(columnLength(model, 0), columnLength(model, 1), columnLength(model, 2));
-    const radius = this.bounds.radius * scale + furLength * (1 + s.fur.gravity) * 1.05;
+    const radius = s.bounds.radius * scale + furLength * (1 + s.fur.gravity) * 1.05;
     const distance = Math.hypot(eye[0] - centre[0], eye[1] - centre[1], eye[2] - centre[2]);
     const far = distance + radius;
     const near = Math.max(far * NEAR_SHARE_OF_FAR, distance - radius);
@@ -231,5 +208,6 @@ export class FurRenderer implements TrackRenderer {
     for (const p of [this.shells, this.fins, this.strands]) p?.dispose();
     for (const t of this.textures) gl.deleteTexture(t);
     this.buffers.dispose();
+    this.core.delete();
   }
 }

@@ -1,13 +1,21 @@
-// A linked WebGL 2 program from two assembled shaders; compile and link
-// errors come back with the student's file:line (mapCompilerLog).
-import { mapCompilerLog, ShaderError, type ShaderSource } from '../shader/shader_source.js';
+// A linked WebGL 2 program from two shaders the core assembled; compile and
+// link errors come back with the student's file:line (the core's
+// mapCompilerLog, native's own).
+import type { Core, CoreSource } from '../core/core.js';
 
-function compile(gl: WebGL2RenderingContext, type: number, source: ShaderSource, what: string): WebGLShader {
+export class ShaderError extends Error {}
+
+// (A browser's log may end in a NUL character; the mapped log in a newline.)
+function mapCompilerLog(core: Core, log: string, source: CoreSource): string {
+  return core.mapCompilerLog(log.replace(/\0/g, ''), JSON.stringify(source)).replace(/\n$/, '');
+}
+
+function compile(gl: WebGL2RenderingContext, core: Core, type: number, source: CoreSource, what: string): WebGLShader {
   const shader = gl.createShader(type)!;
   gl.shaderSource(shader, source.text);
   gl.compileShader(shader);
   if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    const log = mapCompilerLog(gl.getShaderInfoLog(shader) ?? '', source);
+    const log = mapCompilerLog(core, gl.getShaderInfoLog(shader) ?? '', source);
     gl.deleteShader(shader);
     throw new ShaderError(`${what} shader does not compile:\n${log}`);
   }
@@ -18,11 +26,11 @@ export class Program {
   readonly id: WebGLProgram;
   private locations = new Map<string, WebGLUniformLocation | null>();
 
-  constructor(private gl: WebGL2RenderingContext, vertex: ShaderSource, fragment: ShaderSource) {
-    const vs = compile(gl, gl.VERTEX_SHADER, vertex, 'vertex');
+  constructor(private gl: WebGL2RenderingContext, core: Core, vertex: CoreSource, fragment: CoreSource) {
+    const vs = compile(gl, core, gl.VERTEX_SHADER, vertex, 'vertex');
     let fs: WebGLShader;
     try {
-      fs = compile(gl, gl.FRAGMENT_SHADER, fragment, 'fragment');
+      fs = compile(gl, core, gl.FRAGMENT_SHADER, fragment, 'fragment');
     } catch (e) {
       gl.deleteShader(vs);
       throw e;
@@ -37,7 +45,7 @@ export class Program {
     if (!gl.getProgramParameter(p, gl.LINK_STATUS)) {
       const log = gl.getProgramInfoLog(p) ?? '';
       gl.deleteProgram(p);
-      throw new ShaderError(`the program does not link:\n${mapCompilerLog(log, fragment)}`);
+      throw new ShaderError(`the program does not link:\n${mapCompilerLog(core, log, fragment)}`);
     }
     this.id = p;
   }

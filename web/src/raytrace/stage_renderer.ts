@@ -12,13 +12,11 @@
 import { Camera } from '../app/camera.js';
 import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';
 import {
-  type Core, coreFileUrl, CORE_ROOT, ensureProjectFiles, type RayStageHandle, type RayStageInfo, rayTracingFiles,
-  writeProjectFile, writeStudentLab,
+  type Core, coreFileUrl, CORE_ROOT, ensureProjectFiles, labForCore, type OpenTodo, projectFiles, type RayStageHandle,
+  type RayStageInfo, writeProjectFile,
 } from '../core/core.js';
 import { Program } from '../gl/program.js';
 import { cubeMap, dataTexture, textureArray } from '../gl/textures.js';
-import type { ShaderSource } from '../shader/shader_source.js';
-import type { OpenTodo } from '../shader/open_todos.js';
 import type { RenderSettings } from './render_settings.js';
 import { SceneLimitError } from './scene_limit_error.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
@@ -42,11 +40,6 @@ function checkUniformBudget(gl: WebGL2RenderingContext, info: RayStageInfo): voi
       `but this browser offers ${have} (WebGL 2 guarantees 224): use a scene with fewer tori`);
 }
 
-// A core ShaderSource as the page's Program takes it (errors mapped to file:line).
-function shaderSource(s: RayStageInfo['vertex']): ShaderSource {
-  return { text: s.text, origin: s.origin.map(([file, line]) => ({ file, line })), files: [] };
-}
-
 export interface RayStageRequest {
   stage: StageJson;
   sources: Sources;
@@ -59,17 +52,9 @@ export interface RayStageRequest {
 // The core's stage for REQUEST, after the files it reads are in its file
 // system. Throws Error with native's message.
 export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catalog: Catalog, r: RayStageRequest): Promise<{ handle: RayStageHandle; info: RayStageInfo }> {
-  await ensureProjectFiles(core, rayTracingFiles(catalog));
+  await ensureProjectFiles(core, projectFiles(catalog));
   if (r.sceneText !== undefined) writeProjectFile(core, `assets/scenes/${r.sceneName}`, r.sceneText);
-  let lab = '';
-  if (r.sources.kind === 'lab') lab = `${CORE_ROOT}/labs`;
-  if (r.sources.kind === 'disk') {
-    // The folder the student opened: a labs/-like folder shown as
-    // ROOT/<stage>, or one stage's folder (then laid out as <stage>/ under .).
-    const suffix = `/${r.stage.id}`;
-    const root = r.sources.shown.endsWith(suffix) ? r.sources.shown.slice(0, -suffix.length) : '.';
-    lab = writeStudentLab(core, root, new Map([[r.stage.id, r.sources.files]]));
-  }
+  const lab = labForCore(core, r.stage.id, r.sources);
   const handle = new core.RayStage(JSON.stringify({
     stage: r.stage.id, lab, scene: `${CORE_ROOT}/assets/scenes/${r.sceneName}`,
     demoLevers: r.demoLevers ?? false, bvh: r.bvh === undefined ? -1 : r.bvh ? 1 : 0,
@@ -121,7 +106,7 @@ export class StageRenderer implements TrackRenderer {
     let program: Program;
     try {
       checkUniformBudget(gl, info);
-      program = new Program(gl, shaderSource(info.vertex), shaderSource(info.fragment));
+      program = new Program(gl, core, info.vertex, info.fragment);
     } catch (e) {
       handle.delete();
       throw e;

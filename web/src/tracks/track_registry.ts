@@ -2,11 +2,8 @@
 // framework/src/tracks/track_registry.cpp). Everything that draws a stage -
 // the page, the tests, the benchmark - comes through here.
 import type { CameraPose } from '../app/camera.js';
-import { ROOT, type Catalog, type Sources, type StageJson } from '../course/catalog.js';
+import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';
 import { FurRenderer } from '../fur/fur_renderer.js';
-import { type FurScene, parseFurScene } from '../fur/mesh/fur_scene.js';
-import { makeShape } from '../fur/mesh/mesh_shapes.js';
-import { parseObjMesh } from '../fur/mesh/obj_mesh.js';
 import { loadCore } from '../core/core.js';
 import { StageRenderer } from '../raytrace/stage_renderer.js';
 import type { TrackRenderer } from './track_renderer.js';
@@ -19,12 +16,6 @@ export interface LoadedStage {
   sceneShells: number; // the fur scene's shell count (what shells 0 means); 0 elsewhere
 }
 
-async function fetchText(shown: string, url: string, what: string): Promise<string> {
-  const r = await fetch(url);
-  if (!r.ok) throw new Error(`${what} ${shown} does not exist`);
-  return r.text();
-}
-
 // SCENENAME: a file under assets/scenes/ ("lite.json", "fur/torus.json").
 // BVH: the ray tracer's BVH switch (stage 08); undefined: as natively.
 // SCENETEXT: the scene file's text, not fetched (the browser tests' made-up
@@ -35,8 +26,6 @@ export async function loadStage(
   gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
   sceneText?: string, demoLevers = false,
 ): Promise<LoadedStage> {
-  const shown = `assets/scenes/${sceneName}`;
-  const url = `${ROOT}/${shown}`;
   if (stage.track === 'raytrace') {
     const core = await loadCore();
     const renderer = await StageRenderer.create(gl, core, catalog, {
@@ -51,17 +40,14 @@ export async function loadStage(
       sceneShells: 0,
     };
   }
-  const text = sceneText ?? await fetchText(shown, url, 'scene file');
   if (stage.track === 'fur') {
-    const scene: FurScene = parseFurScene(text, url, shown);
-    const mesh = scene.mesh.obj
-      ? parseObjMesh(await fetchText(scene.mesh.obj.replace(`${ROOT}/`, ''), scene.mesh.obj, 'OBJ file'), scene.mesh.obj.replace(`${ROOT}/`, ''))
-      : makeShape(scene.mesh.shape, scene.mesh.detail);
-    const renderer = await FurRenderer.create(gl, catalog, stage, sources, scene, mesh);
+    const core = await loadCore();
+    const renderer = await FurRenderer.create(gl, core, catalog, { stage, sources, sceneName, sceneText });
+    const i = renderer.info, c = i.camera;
     return {
-      renderer, camera: scene.camera, fovYDeg: scene.fovYDeg,
-      summary: `${mesh.indices.length / 3} triangles` + (stage.features.includes('shells') ? `, ${scene.fur.shells} shells` : ''),
-      sceneShells: scene.fur.shells,
+      renderer, camera: { position: c.position, yawDeg: c.yaw, pitchDeg: c.pitch }, fovYDeg: c.fovY,
+      summary: `${i.mesh.triangles} triangles` + (stage.features.includes('shells') ? `, ${i.fur.shells} shells` : ''),
+      sceneShells: i.fur.shells,
     };
   }
   throw new Error(`stage ${stage.id}: the web build has no renderer for track "${stage.track}"`);

@@ -3,7 +3,7 @@
 // TODOs of the student's files, and letting go of the GPU objects.
 import type { Camera } from '../app/camera.js';
 import type { RenderSettings } from '../raytrace/render_settings.js';
-import type { OpenTodo } from '../shader/open_todos.js';
+import type { OpenTodo } from '../core/core.js';
 
 export interface TrackRenderer {
   readonly todos: OpenTodo[];

@@ -1,7 +1,8 @@
 // The browser's frame time next to the native one, measured side by side in
 // one run on the same machine (a benchmark: printed, never asserted).
 // Both draw the native demo's frames (the fly-through, 0.1 s apart) of the
-// full solution with its fastest program, each frame waited for (native:
+// full solution with the demo's program (the same variant and levers on both
+// sides: the page gets them from the C++ core), each frame waited for (native:
 // glFinish; browser: reading one pixel back).
 // Usage: node tests/browser/frame_times.mjs [--raylab PATH] [--size 800x600] [--frames 3] [--rounds 3] [--angle gl-egl|swiftshader]
 import { execFileSync } from 'node:child_process';
@@ -55,7 +56,7 @@ try {
     const native = [], web = [];
     for (let r = 0; r < rounds; ++r) {
       native.push(nativeMedianMs(c.scene, c.bvh).ms);
-      web.push((await page.evaluate((req) => window.raylab.timeFrames(req), { stage: stage.id, scene: `${c.scene}.json`, width, height, frames, bvh: c.bvh })).medianMs);
+      web.push((await page.evaluate((req) => window.raylab.timeFrames(req), { stage: stage.id, scene: `${c.scene}.json`, width, height, frames, bvh: c.bvh, demoLevers: true })).medianMs);
     }
     const n = median(native), w = median(web);
     console.log(`| ${c.name} | ${n.toFixed(1)} | ${w.toFixed(1)} | ${(w / n).toFixed(2)}x |`);

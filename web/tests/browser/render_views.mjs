@@ -179,7 +179,7 @@ try {
   else if (!/has no .*\/ folder/.test(watched.wrongStage)) fail(`a watched labs/ folder without the stage: "${watched.wrongStage}"`);
   else console.log(`ok   a watched lab folder (${watched.shown}/) notices a saved file; another stage: "${watched.wrongStage}"`);
 
-  // 8. Many spheres (a uniform block, src/raytrace/sphere_block.ts): a
+  // 8. Many spheres (a uniform block, src/raytrace/stage_renderer.ts): a
   // made-up stage 08 scene of 1000 spheres (past the old limit of 128)
   // against the native render of the same file, within the graders'
   // tolerance; 4097 spheres refused in one line.

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "json_reader.h"
 #include "mesh_shapes.h"
+#include "obj_mesh.h"
 #include "paths.h"
 #include "text_format.h"
 
@@ -127,6 +128,13 @@ FurScene loadFurScene(const std::filesystem::path& file) {
     if (l.contains("ambient")) s.ambient = r.color(l["ambient"], "light.ambient");
     readFur(r, doc, s);
     return s;
+}
+
+Mesh loadFurMesh(const FurScene& scene) {
+    Mesh m = scene.mesh.obj.empty() ? makeShape(scene.mesh.shape, scene.mesh.detail)
+                                    : loadObjMesh(scene.mesh.obj);
+    validateMesh(m);
+    return m;
 }
 
 }  // namespace raylab

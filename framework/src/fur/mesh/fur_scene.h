@@ -3,6 +3,7 @@
 // directional light, the camera, and the fur's parameters and textures.
 // The format is in assets/scenes/README.md, "Fur scenes".
 #include "camera.h"
+#include "mesh.h"
 
 #include <glm/glm.hpp>
 
@@ -52,5 +53,8 @@ struct FurScene {
 
 // Throws Error("FILE: where: what") with the file and JSON path.
 FurScene loadFurScene(const std::filesystem::path& file);
+
+// The mesh a fur scene names (procedural or OBJ), checked. Throws Error.
+Mesh loadFurMesh(const FurScene& scene);
 
 }  // namespace raylab

@@ -1,0 +1,61 @@
+#pragma once
+// A fur stage as the web page draws it: what the native renderer
+// (fur/fur_renderer.cpp) prepares on the CPU, with the same code, for the
+// page's WebGL 2 calls (web/src/fur/fur_renderer.ts). The fur scene, its mesh
+// and edge adjacency, the bounding sphere, and the programs. WebGL 2 has no
+// geometry shaders: the fins and strands are drawn with instanced vertex
+// shaders of the web's own (web/shaders/fin_instanced.vert,
+// strand_instanced.vert) in front of the stage's fragment shaders; the
+// stage's own vertex and geometry files are still read, for their TODOs.
+// Students need not read this file.
+#include "adjacency.h"
+#include "fur_scene.h"
+#include "mesh.h"
+#include "shader_source.h"
+#include "stage_catalog.h"
+#include "stage_sources.h"
+#include "strand_budget.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+struct WebFurPrograms {
+    ShaderSource vertex, fragment;
+};
+
+class WebFurStage {
+public:
+    // LAB: the lab's folder (laid out like labs/), empty for the solution;
+    // SCENE: a fur scene file, empty for the stage's own. Throws Error.
+    WebFurStage(const std::string& stage, const std::string& lab, const std::string& scene);
+
+    const StageInfo& stage() const { return *stage_; }
+    const FurScene& scene() const { return scene_; }
+    const Mesh& mesh() const { return mesh_; }
+    const EdgeAdjacency& adjacency() const { return adjacency_; }  // empty without fins
+    const WebFurPrograms& shells() const { return shells_; }
+    const std::optional<WebFurPrograms>& fins() const { return fins_; }
+    const std::optional<WebFurPrograms>& strands() const { return strands_; }
+    const std::optional<StrandBudget>& strandBudget() const { return budget_; }
+    const std::vector<OpenTodo>& todos() const { return todos_; }
+    glm::vec3 boundsCentre() const { return boundsCentre_; }
+    float boundsRadius() const { return boundsRadius_; }
+
+private:
+    const StageInfo* stage_ = nullptr;
+    StageSources sources_;
+    FurScene scene_;
+    Mesh mesh_;
+    EdgeAdjacency adjacency_;
+    std::optional<StrandBudget> budget_;
+    WebFurPrograms shells_;
+    std::optional<WebFurPrograms> fins_, strands_;
+    std::vector<OpenTodo> todos_;
+    glm::vec3 boundsCentre_{0.0f};
+    float boundsRadius_ = 0.0f;
+};
+
+}  // namespace raylab

@@ -1,7 +1,8 @@
 // libFuzzer target: raylab::loadObjMesh on arbitrary bytes as an OBJ file,
 // then the fin shader's edge adjacency of what it returns. tinyobjloader is
-// compiled from Debian's header into this target (tiny_obj_loader_impl.cpp),
-// so the fuzzer sees its branches too.
+// compiled from Debian's header into this target
+// (framework/src/fur/mesh/tiny_obj_loader_impl.cpp), so the fuzzer sees its
+// branches too.
 #include "adjacency.h"
 #include "error.h"
 #include "fuzz_support.h"

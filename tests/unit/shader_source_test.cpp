@@ -129,15 +129,20 @@ TEST(ShaderSource, MapsMesaNvidiaAndGlslangLogs) {
 TEST(ShaderSource, FindsOpenTodosOutsideComments) {
     ScratchDir dir;
     writeFile(dir / "s/main.frag", "// TODO(9.a): do the thing\n"
-                                   "//     more words\n"
+                                   "//     with more words.\n"
+                                   "// Not part of the title: its sentence ended.\n"
                                    "labTodo();\n"
                                    "// labTodo(); in a comment does not count\n"
-                                   "    x = 1; // TODO(9.b): done already, no stub call\n");
+                                   "    x = 1; // TODO(9.b): done already, no stub call\n"
+                                   "// TODO(9.c): a sentence cut by a\n"
+                                   "// Checked by: line, which never joins\n"
+                                   "labTodo();\n");
     ShaderSource s = assembleShader("main.frag", {dir / "s"}, {});
     auto todos = findOpenTodos(s);
-    ASSERT_EQ(todos.size(), 1u);
-    EXPECT_EQ(todos[0].line, 3);
-    EXPECT_EQ(todos[0].title, "TODO(9.a): do the thing");
+    ASSERT_EQ(todos.size(), 2u);
+    EXPECT_EQ(todos[0].line, 4);
+    EXPECT_EQ(todos[0].title, "TODO(9.a): do the thing with more words.");
+    EXPECT_EQ(todos[1].title, "TODO(9.c): a sentence cut by a");
 }
 
 // The constants GLSL and C++ share are written into every shader from the

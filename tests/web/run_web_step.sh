@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One step of the web build's tests (ctest label `web`), run from the project
-# root: build (tsc and the catalog), unit (node's test runner), browser (the
-# pages in Debian's Chromium against the native renders).
+# root: build (tsc, the catalog, the core in WebAssembly), unit (node's test
+# runner), browser (the pages in Debian's Chromium against the native renders,
+# then the page driven through its own controls).
 #   run_web_step.sh build|unit|browser RAYLAB_EXE OUT_DIR
 set -euo pipefail
 step=$1 raylab=$2 out=$3
@@ -16,6 +17,7 @@ case "$step" in
   browser)
     [ -x /usr/bin/chromium ] || [ -n "${RAYLAB_CHROMIUM:-}" ] ||
       { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
-    node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out" ;;
+    node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
+    node web/tests/browser/page_ui.mjs ;;
   *) echo "run_web_step.sh: unknown step '$step'" >&2; exit 2 ;;
 esac

@@ -38,8 +38,8 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
             ->capture_default_str();
         cmd.add_flag("--no-fins", o.noFins, "fur track: start without fins (stage f3 on; key F)");
         cmd.add_option("--technique", o.technique,
-                       "fur track: shells_and_fins or fur_shader (stage f4; key T)")
-            ->capture_default_str();
+                       "fur track: shells_and_fins or fur_shader (stage f4, whose pictures show "
+                       "the fur shader by default; key T)");
     }
     return lab;
 }

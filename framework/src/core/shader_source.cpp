@@ -80,6 +80,26 @@ bool parseTodoTitle(const std::string& line, std::string& title) {
     return true;
 }
 
+// A TODO's title is its first sentence, which may go on over the comment
+// lines below the TODO line (a title cut mid-sentence reads as a different
+// instruction). Joined lines stop at this length.
+constexpr std::size_t kLongestJoinedTitle = 400;
+
+bool endsSentence(const std::string& text) {
+    std::size_t end = text.find_last_not_of(" \t\r");
+    return end != std::string::npos && std::string(".!?:").find(text[end]) != std::string::npos;
+}
+
+// The text of a line that is only a // comment (trimmed); false for any other line.
+bool commentText(const std::string& line, std::string& text) {
+    std::size_t i = skipSpace(line, 0);
+    if (!startsAt(line, i, "//")) return false;
+    i = skipSpace(line, i + 2);
+    std::size_t end = line.find_last_not_of(" \t\r");
+    text = end == std::string::npos || end < i ? std::string() : line.substr(i, end - i + 1);
+    return true;
+}
+
 // R"(^[^/]*\blabTodo\s*\(\s*\)\s*;)" (searched): a labTodo(); call before any '/'.
 bool hasStubCall(const std::string& line) {
     const std::size_t slash = line.find('/');
@@ -272,8 +292,20 @@ std::vector<OpenTodo> findOpenTodos(const ShaderSource& source) {
         if (shown.rfind("framework/", 0) == 0) continue;
         std::istringstream in(readTextFile(file));
         std::string line, title;
+        bool sentenceOpen = false;  // the title's sentence goes on in the next comment line
         for (int n = 1; std::getline(in, line); ++n) {
-            if (parseTodoTitle(line, title)) continue;
+            if (parseTodoTitle(line, title)) {
+                sentenceOpen = !endsSentence(title);
+                continue;
+            }
+            std::string more;
+            if (sentenceOpen && commentText(line, more) && !more.empty() &&
+                more.rfind("Checked by", 0) != 0 && title.size() < kLongestJoinedTitle) {
+                title += " " + more;
+                sentenceOpen = !endsSentence(title);
+                continue;
+            }
+            sentenceOpen = false;
             if (hasStubCall(line)) todos.push_back({shown, n, title.empty() ? "TODO" : title});
         }
     }

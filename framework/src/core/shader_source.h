@@ -58,7 +58,8 @@ ShaderSource asGlslEs300(ShaderSource source);
 std::string mapCompilerLog(const std::string& log, const ShaderSource& source);
 
 // A TODO block of a lab that still holds its stub: a `labTodo();` call outside
-// a comment, with the title of the `// TODO(id): title` line above it.
+// a comment, with the title of the `// TODO(id): title` line above it: its
+// first sentence, also where it goes on over the comment lines below.
 struct OpenTodo {
     std::string file;
     int line = 0;

@@ -233,7 +233,7 @@ StageInfo readStageFile(const fs::path& file) {
     r.allowOnly(doc, "",
                 {"id", "title", "track", "builds_on", "scene", "program", "programs", "limits",
                  "features", "function_checks", "count_checks", "mistakes", "check_views",
-                 "defines", "hints", "grading"});
+                 "defines", "hints", "grading", "technique"});
     StageInfo s;
     s.id = r.text(r.member(doc, "stage", "id"), "id");
     if (s.id != file.parent_path().filename().string())
@@ -275,11 +275,21 @@ StageInfo readStageFile(const fs::path& file) {
     s.mistakes = r.text(r.member(doc, "stage", "mistakes"), "mistakes");
     if (s.mistakes.is_absolute() || s.mistakes.lexically_normal().string().rfind("..", 0) == 0)
         r.fail("mistakes", "expected a folder inside the project, relative to its root");
+    // The fur technique the stage's pictures show unless told otherwise: its
+    // own work (f4: the fur shader), in the window, `render` and check views.
+    if (doc.contains("technique")) {
+        const std::string t = r.text(doc["technique"], "technique");
+        auto it = std::find(std::begin(kFurTechniques), std::end(kFurTechniques), t);
+        if (it == std::end(kFurTechniques))
+            r.fail("technique", "expected shells_and_fins or fur_shader");
+        s.furTechnique = int(it - std::begin(kFurTechniques));
+    }
     const json& views = r.member(doc, "stage", "check_views");
     if (!views.is_array() || views.empty())
         r.fail("check_views", "expected a non-empty list of views");
     for (std::size_t i = 0; i < views.size(); ++i) {
         CheckView v = r.view(views[i], "check_views[" + std::to_string(i) + "]");
+        if (!views[i].contains("technique")) v.furTechnique = s.furTechnique;
         for (const CheckView& earlier : s.checkViews)
             if (earlier.name == v.name)
                 r.fail("check_views[" + std::to_string(i) + "].name",

@@ -65,6 +65,9 @@ struct StageInfo {
     std::string track;     // "raytrace"
     std::string buildsOn;  // the stage whose files this one inherits; empty for none
     std::string scene;     // default scene, relative to assets/scenes/
+    // "technique": the fur technique its pictures show by default (index into
+    // kFurTechniques): the stage's own work (f4: the fur shader; T switches).
+    int furTechnique = 0;
     StageProgram program;
     // More programs a track's renderer draws with, by name (the fur track's
     // "fins" and "strands"); their files are the stage's like the main one's.

@@ -70,7 +70,9 @@ StageSetup resolveStageOptions(const StageOptions& o) {
         throw Error("--fur-length must be a factor above 0 and at most 10");
     s.settings.furLength = o.furLength;
     s.settings.fins = !o.noFins;
-    s.settings.furTechnique = choice("--technique", o.technique, kFurTechniques);
+    // Without --technique: the stage's own (stage.json "technique").
+    s.settings.furTechnique = o.technique.empty() ? s.stage->furTechnique
+                                                  : choice("--technique", o.technique, kFurTechniques);
     return s;
 }
 

@@ -38,7 +38,7 @@ struct StageOptions {
     int shells = 0;  // 0: the scene's
     float furLength = 1.0f;
     bool noFins = false;
-    std::string technique = "shells_and_fins";
+    std::string technique;  // empty: the stage's own (stage.json "technique")
 };
 
 struct StageSetup {

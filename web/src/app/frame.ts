@@ -15,8 +15,11 @@ export function sceneOfView(stage: StageJson, view?: CheckViewJson): string {
   return view?.scene ?? stage.scene;
 }
 
-export function frameOfView(scenePose: CameraPose, fovYDeg: number, view?: CheckViewJson): Frame {
+// STAGE: its "technique" is the fur technique shown unless the view says
+// otherwise (f4: the fur shader), as natively.
+export function frameOfView(scenePose: CameraPose, fovYDeg: number, view?: CheckViewJson, stage?: StageJson): Frame {
   const settings = defaultSettings();
+  if (stage?.technique) settings.furTechnique = Math.max(0, FUR_TECHNIQUES.indexOf(stage.technique));
   let pose = scenePose;
   if (view) {
     if (view.camera) pose = { position: view.camera.position, yawDeg: view.camera.yaw, pitchDeg: view.camera.pitch };

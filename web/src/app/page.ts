@@ -2,7 +2,7 @@
 // handed out, or the student's own folder from disk) and a scene; fly
 // around with the native window's keys; read the frame time and the switches
 // in the overlay; save a screenshot.
-import { Camera, flyThroughPose } from './camera.js';
+import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
 import { canWatchFolders, labFromFiles, WatchedLab } from './lab_folder.js';
 import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
@@ -35,6 +35,13 @@ export class Page {
   private shown: StageJson | null = null;  // the stage being drawn (the select can be ahead of it while loading)
   private sourceShown = 'solution';  // the Code choice being drawn (a cancelled picker goes back to it)
   private busy = false;  // a load is under way
+  // While a new stage, scene or code is built: what (for the overlay). The
+  // old renderer stops drawing (its frames would hold up the build on the
+  // same GPU or CPU), its last picture stays, dimmed, labelled with what it is.
+  private building: string | null = null;
+  private shownLabel = '';  // what the picture on screen is: "08-full (solution) on pro.json"
+  // Called with the time of the first frame a finished load draws (tests, the switching benchmark).
+  private firstFrameWaiters: ((at: number) => void)[] = [];
   private overlayHidden = false;  // key H
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {}
@@ -78,7 +85,11 @@ export class Page {
       $<HTMLSelectElement>('source').value = this.sourceShown;
     });
     // Browsers without folder watching: read the folder again after an edit.
-    $('reload').onclick = () => $<HTMLInputElement>('folder').click();
+    // (Emptied first: picking the same folder again must count as a change.)
+    $('reload').onclick = () => {
+      $<HTMLInputElement>('folder').value = '';
+      $<HTMLInputElement>('folder').click();
+    };
     // A watched folder: a saved file reloads the stage (as the native window does).
     setInterval(() => void this.reloadIfChanged(), 1000);
     $<HTMLSelectElement>('scene').onchange = () => void this.load();
@@ -112,7 +123,9 @@ export class Page {
     const own = this.stage().scene;
     sel.innerHTML = '';
     const ofTrack = (name: string) => name.startsWith('fur/') === (this.stage().track === 'fur');
-    for (const name of [own, ...this.catalog.scenes.filter((s) => s !== own && ofTrack(s))]) sel.add(new Option(name === own ? `${name} (the stage's)` : name, name));
+    // Not the scenes the page cannot draw (OBJ meshes in a ray-tracing scene: native only).
+    const drawable = (name: string) => !this.catalog.nativeOnlyScenes.includes(name);
+    for (const name of [own, ...this.catalog.scenes.filter((s) => s !== own && ofTrack(s) && drawable(s))]) sel.add(new Option(name === own ? `${name} (the stage's)` : name, name));
   }
 
   private resize(): void {
@@ -166,44 +179,56 @@ export class Page {
   // camera and clock stay, and on a failure the last version that compiled
   // keeps running, as in the native window.
   async load(reload = false): Promise<void> {
-    const ticket = ++this.loading;
-    this.busy = true;
     const stage = this.stage();
     $('title').textContent = `${stage.id}: ${stage.title}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
-    if (!reload) this.showMessage('compiling…');
+    const codeKind = $<HTMLSelectElement>('source').value;
+    const label = `${stage.id} (${codeKind === 'disk' ? 'your files' : codeKind === 'lab' ? 'labs/' : 'solution'}) on ${sceneName}`;
+    // What is on screen already is not built again (a demo button for the
+    // scene shown, the same choice twice): it starts afresh instead.
+    if (!reload && !this.busy && this.renderer && codeKind !== 'disk' && label === this.shownLabel) {
+      this.restart(stage);
+      return;
+    }
+    const ticket = ++this.loading;
+    this.busy = true;
+    this.building = reload ? `${label}, after your save` : label;
+    this.canvas.classList.add('building');
+    this.updateOverlay();
+    if (!reload) this.showMessage(`building ${label}…`);
     try {
       const sources = await this.sources();
       // The solution gets the demo's levers, as in the native window.
       const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName, undefined, undefined, true);
       if (ticket !== this.loading) return loaded.renderer.dispose();
       this.busy = false;
+      this.building = null;
+      this.canvas.classList.remove('building');
+      this.shownLabel = label;
       this.renderer?.dispose();
       this.renderer = loaded.renderer;
       this.sceneShells = loaded.sceneShells;
       this.shown = stage;
-      if (!reload) {
-        // A new stage or scene starts as the native window does: its own
-        // camera, the clock at 0, every switch at its default.
-        const start = frameOfView(loaded.camera, loaded.fovYDeg);
-        this.camera = start.camera;
-        this.settings = start.settings;
-        this.time = 0;
-        this.paused = false;
-        this.note = '';
-      }
+      this.startPose = { pose: loaded.camera, fovYDeg: loaded.fovYDeg };
+      if (!reload) this.restart(stage);
       $('reload').hidden = !(sources.kind === 'disk' && !this.watched);
-      const todos = loaded.renderer.todos.map((t) => `${t.file}:${t.line}: ${t.title}`);
+      // One entry per TODO, a blank line between them: titles run over lines.
+      const todos = loaded.renderer.todos.map((t) => `• ${t.file}:${t.line}\n  ${t.title}`);
       const notes = loaded.renderer.notes.map((n) => `In the browser: ${n}.`);
-      const from = sources.kind === 'disk' ? `Your files: ${sources.shown}/${this.watched ? ' (watched: save a file to reload)' : ' (pick the folder again after editing)'}` : '';
+      const from = sources.kind === 'disk'
+        ? `Your files: ${sources.shown}/${this.watched ? ' (watched: save a file to reload)' : ' (Reload my files after editing)'}` +
+          (reload ? `\nRead again at ${new Date().toLocaleTimeString()}.` : '')
+        : '';
       this.showMessage([
-        todos.length ? `Unfinished (magenta stripes where this code runs):\n${todos.join('\n')}` : `Ready: ${loaded.summary}.`,
+        todos.length ? `Unfinished (magenta stripes where this code runs):\n${todos.join('\n\n')}` : `Ready: ${loaded.summary}.`,
         ...(from ? [from] : []),
         ...notes,
       ].join('\n\n'));
     } catch (e) {
       if (ticket !== this.loading) return;
       this.busy = false;
+      this.building = null;
+      this.canvas.classList.remove('building');
       const message = (e as Error).message;
       if (reload && this.renderer) {
         this.showError(`${message}\n\n(still showing the last version that compiled)`, true);
@@ -283,7 +308,28 @@ export class Page {
     this.schedule();
   }
 
+  private startPose: { pose: CameraPose; fovYDeg: number } | null = null;
+
+  // A new stage or scene starts as the native window does: its own camera,
+  // the clock at 0, every switch at its default.
+  private restart(stage: StageJson): void {
+    if (!this.startPose) return;
+    const start = frameOfView(this.startPose.pose, this.startPose.fovYDeg, undefined, stage);
+    this.camera = start.camera;
+    this.settings = start.settings;
+    this.time = 0;
+    this.paused = false;
+    this.note = '';
+  }
+
+  // Resolves with the time (performance.now()) at which the next finished
+  // load's first frame was drawn.
+  firstFrame(): Promise<number> {
+    return new Promise((resolve) => this.firstFrameWaiters.push(resolve));
+  }
+
   private drawFrame(now: number): void {
+    if (this.building) return this.updateOverlay();
     if (this.renderer) {
       const camera = this.demo ? new Camera(flyThroughPose(this.camera.pose, this.time * 10), this.camera.fovYDeg) : this.camera;
       this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);
@@ -293,6 +339,8 @@ export class Page {
       this.gl.readPixels(0, 0, 1, 1, this.gl.RGBA, this.gl.UNSIGNED_BYTE, this.pixel);
       this.frameTimes = [...this.frameTimes, performance.now() - now].slice(-FRAME_WINDOW);
       this.updateOverlay();
+      const done = performance.now();
+      for (const w of this.firstFrameWaiters.splice(0)) w(done);
     }
   }
 
@@ -302,10 +350,15 @@ export class Page {
   private updateOverlay(): void {
     const sorted = [...this.frameTimes].sort((a, b) => a - b);
     const median = sorted.length ? sorted[sorted.length >> 1]! : 0;
+    if (this.building) {
+      // The overlay names what is on screen, and what is coming.
+      $('overlay').textContent = [`building ${this.building}…`, ...(this.shown ? [`showing ${this.shownLabel}`] : [])].join('\n');
+      return;
+    }
     if (!this.shown) return;
     const rows = settingsRows(this.shown, this.settings, this.sceneShells);
     $('overlay').textContent = [
-      `${this.shown.id}  ${this.canvas.width}x${this.canvas.height}`,
+      `${this.shownLabel}  ${this.canvas.width}x${this.canvas.height}`,
       `frame ${median.toFixed(1)} ms${this.vsync ? ' (vsync on)' : ''}`,
       ...rows,
       `time ${this.time.toFixed(1)} s${this.paused ? ' (paused)' : ''}`,

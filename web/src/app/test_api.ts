@@ -42,7 +42,7 @@ async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: V
     ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
     : { kind: req.source ?? 'solution' };
   const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh, req.sceneText, req.demoLevers);
-  return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view) };
+  return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view, stage) };
 }
 
 export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasElement, catalog: Catalog, page: Page): void {
@@ -107,6 +107,34 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
       handle.delete();
       const lines = info.fragment.text.split('\n');
       return info.fragment.origin.map(([file, line], i) => `${file}:${line}\t${lines[i]}`).join('\n') + '\n';
+    },
+    // Drives the page's own controls as a student does (the page started
+    // without ?test): a stage from the menu, or a demo button; says how long
+    // it took from the choice to the new stage's first frame, and what the
+    // page shows then.
+    async switchTo(req: { stage?: string; demo?: 'lite' | 'pro' | 'fur'; timeoutMs?: number }) {
+      const t0 = performance.now();
+      if (req.demo) {
+        document.getElementById(`demo-${req.demo}`)!.click();
+      } else {
+        const sel = document.getElementById('stage') as HTMLSelectElement;
+        sel.value = stageById(catalog, req.stage!).id;
+        sel.dispatchEvent(new Event('change'));
+      }
+      // The old stage stops drawing at once (the page is building now): the
+      // next frame drawn is the new stage's.
+      const overlayWhileBuilding = document.getElementById('overlay')!.textContent ?? '';
+      const dimmed = canvas.classList.contains('building');
+      const at = await Promise.race([
+        page.firstFrame(),
+        new Promise<number>((r) => setTimeout(() => r(Number.NaN), req.timeoutMs ?? 120_000)),
+      ]);
+      return {
+        ms: at - t0,
+        overlayWhileBuilding, dimmed,
+        overlay: document.getElementById('overlay')!.textContent ?? '',
+        message: document.getElementById('messages')!.textContent ?? '',
+      };
     },
     // Median wall time of FRAMES frames of the demo's fly-through, each waited for by reading one pixel
     // back (the browser's equivalent of glFinish), after one warm-up frame.

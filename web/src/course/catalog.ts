@@ -31,6 +31,7 @@ export interface StageJson {
   track: string;
   builds_on: string | null;
   scene: string;
+  technique?: string;  // the fur technique its pictures show by default
   program: StageProgramJson;
   programs?: Record<string, StageProgramJson>;
   limits: Record<string, number | boolean>;
@@ -46,6 +47,7 @@ export interface Catalog {
   variants: Record<string, string[]>;
   scenes: string[];
   assets: string[];  // under assets/: textures/*.png, meshes/*.obj
+  nativeOnlyScenes: string[];  // ray-tracing scenes with OBJ meshes: the page does not draw them
 }
 
 export async function loadCatalog(url = 'dist/catalog.json'): Promise<Catalog> {

@@ -72,18 +72,18 @@ export class FurRenderer implements TrackRenderer {
     // Built into locals: a failure (a student's compile error) deletes what
     // was built so far, so a watched folder's broken saves leak nothing.
     const programs: Program[] = [];
-    const built = (name: 'shells' | 'fins' | 'strands') => {
+    const built = async (name: 'shells' | 'fins' | 'strands') => {
       const p = info.programs[name];
       if (!p) return null;
-      const program = new Program(gl, core, p.vertex, p.fragment);
+      const program = await Program.build(gl, core, p.vertex, p.fragment);
       programs.push(program);
       return program;
     };
     let shells: Program, fins: Program | null, strands: Program | null;
     try {
-      shells = built('shells')!;
-      fins = built('fins');
-      strands = built('strands');
+      shells = (await built('shells'))!;
+      fins = await built('fins');
+      strands = await built('strands');
     } catch (e) {
       for (const p of programs) p.dispose();
       handle.delete();

@@ -1,6 +1,9 @@
 // A linked WebGL 2 program from two shaders the core assembled; compile and
 // link errors come back with the student's file:line (the core's
-// mapCompilerLog, native's own).
+// mapCompilerLog, native's own). Built without blocking the page where the
+// browser offers KHR_parallel_shader_compile: the driver compiles and links
+// in the background while the page keeps answering (a switch of stage shows
+// what is being built instead of freezing).
 import type { Core, CoreSource } from '../core/core.js';
 
 export class ShaderError extends Error {}
@@ -10,44 +13,45 @@ function mapCompilerLog(core: Core, log: string, source: CoreSource): string {
   return core.mapCompilerLog(log.replace(/\0/g, ''), JSON.stringify(source)).replace(/\n$/, '');
 }
 
-function compile(gl: WebGL2RenderingContext, core: Core, type: number, source: CoreSource, what: string): WebGLShader {
-  const shader = gl.createShader(type)!;
-  gl.shaderSource(shader, source.text);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    const log = mapCompilerLog(core, gl.getShaderInfoLog(shader) ?? '', source);
-    gl.deleteShader(shader);
-    throw new ShaderError(`${what} shader does not compile:\n${log}`);
-  }
-  return shader;
-}
+// How often a background build is asked whether it is done.
+const POLL_MS = 4;
 
 export class Program {
-  readonly id: WebGLProgram;
   private locations = new Map<string, WebGLUniformLocation | null>();
 
-  constructor(private gl: WebGL2RenderingContext, core: Core, vertex: CoreSource, fragment: CoreSource) {
-    const vs = compile(gl, core, gl.VERTEX_SHADER, vertex, 'vertex');
-    let fs: WebGLShader;
-    try {
-      fs = compile(gl, core, gl.FRAGMENT_SHADER, fragment, 'fragment');
-    } catch (e) {
-      gl.deleteShader(vs);
-      throw e;
-    }
+  private constructor(private gl: WebGL2RenderingContext, readonly id: WebGLProgram) {}
+
+  // Throws ShaderError naming the file and line of the first problem.
+  static async build(gl: WebGL2RenderingContext, core: Core, vertex: CoreSource, fragment: CoreSource): Promise<Program> {
+    const shader = (type: number, source: CoreSource) => {
+      const s = gl.createShader(type)!;
+      gl.shaderSource(s, source.text);
+      gl.compileShader(s);
+      return s;
+    };
+    const vs = shader(gl.VERTEX_SHADER, vertex), fs = shader(gl.FRAGMENT_SHADER, fragment);
     const p = gl.createProgram()!;
     gl.attachShader(p, vs);
     gl.attachShader(p, fs);
     gl.bindAttribLocation(p, 0, 'aCorner');
     gl.linkProgram(p);
-    gl.deleteShader(vs);
-    gl.deleteShader(fs);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) {
-      const log = gl.getProgramInfoLog(p) ?? '';
+    const parallel = gl.getExtension('KHR_parallel_shader_compile');
+    if (parallel)
+      while (!gl.getProgramParameter(p, parallel.COMPLETION_STATUS_KHR)) await new Promise((r) => setTimeout(r, POLL_MS));
+    try {
+      for (const [s, source, what] of [[vs, vertex, 'vertex'], [fs, fragment, 'fragment']] as const)
+        if (!gl.getShaderParameter(s, gl.COMPILE_STATUS))
+          throw new ShaderError(`${what} shader does not compile:\n${mapCompilerLog(core, gl.getShaderInfoLog(s) ?? '', source)}`);
+      if (!gl.getProgramParameter(p, gl.LINK_STATUS))
+        throw new ShaderError(`the program does not link:\n${mapCompilerLog(core, gl.getProgramInfoLog(p) ?? '', fragment)}`);
+    } catch (e) {
       gl.deleteProgram(p);
-      throw new ShaderError(`the program does not link:\n${mapCompilerLog(core, log, fragment)}`);
+      throw e;
+    } finally {
+      gl.deleteShader(vs);
+      gl.deleteShader(fs);
     }
-    this.id = p;
+    return new Program(gl, p);
   }
 
   // null when the program does not use NAME (the compiler removed it).

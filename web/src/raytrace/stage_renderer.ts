@@ -106,7 +106,7 @@ export class StageRenderer implements TrackRenderer {
     let program: Program;
     try {
       checkUniformBudget(gl, info);
-      program = new Program(gl, core, info.vertex, info.fragment);
+      program = await Program.build(gl, core, info.vertex, info.fragment);
     } catch (e) {
       handle.delete();
       throw e;

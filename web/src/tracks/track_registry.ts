@@ -46,7 +46,8 @@ export async function loadStage(
     const i = renderer.info, c = i.camera;
     return {
       renderer, camera: { position: c.position, yawDeg: c.yaw, pitchDeg: c.pitch }, fovYDeg: c.fovY,
-      summary: `${i.mesh.triangles} triangles` + (stage.features.includes('shells') ? `, ${i.fur.shells} shells` : ''),
+      // (The shell count is the overlay's: it follows [ and ].)
+      summary: `${i.mesh.triangles} triangles, ${i.mesh.vertices} vertices`,
       sceneShells: i.fur.shells,
     };
   }

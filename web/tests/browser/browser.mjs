@@ -38,14 +38,16 @@ export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl'
 }
 
 // A page of the web build with its console errors and page errors collected.
-export async function openPage(browser, url) {
+// QUERY: ?test=1 (the default) leaves the page's own controls idle, for the
+// test API; '' starts them, as a student's visit does.
+export async function openPage(browser, url, query = '?test=1') {
   const page = await browser.newPage();
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
   page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
-  await page.goto(`${url}?test=1`, { waitUntil: 'load' });
+  await page.goto(`${url}${query}`, { waitUntil: 'load' });
   await page.waitForFunction(() => window.raylab !== undefined, { timeout: 30_000 });
   const renderer = await page.evaluate(() => {
     const gl = document.getElementById('view').getContext('webgl2');

@@ -1,4 +1,5 @@
-// tinyobjloader's implementation, compiled into the WebAssembly core only:
-// natively it comes from Debian's libtinyobjloader (framework/CMakeLists.txt).
+// tinyobjloader's implementation, compiled into the WebAssembly core and the
+// fuzzers (tests/fuzz: so that they see its branches too); the native build
+// links Debian's libtinyobjloader instead (framework/CMakeLists.txt).
 #define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>

@@ -1,0 +1,100 @@
+// The page as a student drives it (its own controls, not the test API's
+// renderers), in Debian's Chromium; part of the `web_browser` test:
+//  1. switching stage: the old picture stops, is dimmed and labelled with
+//     what it is while the new stage builds; then the overlay names the new
+//     one; the switch's time is printed (web/tests/browser/switch_times.mjs
+//     measures every stage);
+//  2. the f4 lab opens on the fur shader (its stage.json "technique"), its
+//     TODOs listed one per entry, each title a whole sentence;
+//  3. the fur track's Ready line leaves the shell count to the overlay,
+//     which follows [ and ];
+//  4. stage 08's scene menu does not offer scenes the page cannot draw
+//     (OBJ meshes);
+//  5. layout: at 1024x768 in a 1280x720 window the messages stay in view
+//     beside the picture; on a 390x844 phone the overlay covers little of it.
+// Usage: node tests/browser/page_ui.mjs   (exit status 1 on a failure)
+import { launchBrowser, openPage, startServer } from './browser.mjs';
+
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+
+const server = await startServer();
+let browser;
+try {
+  browser = await launchBrowser();
+  const { page, problems } = await openPage(browser, server.url, '');
+  await page.setViewport({ width: 1280, height: 720 });
+  const settled = () => page.waitForFunction(() => !document.getElementById('view').classList.contains('building') &&
+    /Ready|Unfinished|error/i.test(document.getElementById('messages').textContent), { timeout: 120_000 });
+  await settled();
+  const choose = (id, value) => page.evaluate((i, v) => {
+    const sel = document.getElementById(i);
+    sel.value = v;
+    sel.dispatchEvent(new Event('change'));
+  }, id, value);
+  const text = (id) => page.$eval(`#${id}`, (e) => e.textContent);
+
+  // 1. Switching from the running demo stage to 05.
+  const first = await text('overlay');
+  const r = await page.evaluate(() => window.raylab.switchTo({ stage: '05' }));
+  check(r.dimmed, 'while 05 builds, the old picture is dimmed');
+  check(/^building 05-primitives \(solution\) on /.test(r.overlayWhileBuilding) && r.overlayWhileBuilding.includes(`showing ${first.split('  ')[0]}`),
+    `the overlay says what is built and what is shown: ${JSON.stringify(r.overlayWhileBuilding)}`);
+  check(Number.isFinite(r.ms) && r.overlay.startsWith('05-primitives (solution) on '),
+    `after ${r.ms.toFixed(0)} ms the overlay names the new stage: ${JSON.stringify(r.overlay.split('\n')[0])}`);
+
+  // 2. The f4 lab.
+  await choose('source', 'lab');
+  await page.evaluate(() => window.raylab.switchTo({ stage: 'f4' }));
+  await settled();
+  const overlay = await text('overlay'), messages = await text('messages');
+  check(overlay.includes('technique fur_shader'), `the f4 lab opens on the fur shader: ${JSON.stringify(overlay)}`);
+  const entries = messages.split(/\n\n|\n(?=• )/).filter((e) => e.startsWith('• '));
+  check(entries.length >= 3, `its TODOs are listed one per entry (${entries.length})`);
+  check(entries.every((e) => /[.!?:]$/.test(e.trim())), `each TODO title is a whole sentence:\n${entries.join('\n')}`);
+
+  // 3. f2's Ready line and the shell count.
+  await choose('source', 'solution');
+  await page.evaluate(() => window.raylab.switchTo({ stage: 'f2' }));
+  await settled();
+  const ready = await text('messages');
+  check(/^Ready: \d+ triangles, \d+ vertices\./.test(ready) && !/shells/.test(ready.split('\n')[0]), `f2's Ready line: ${JSON.stringify(ready.split('\n')[0])}`);
+  const shellsRow = async () => (await text('overlay')).split('\n').find((l) => l.startsWith('shells '));
+  const before = await shellsRow();
+  await page.focus('#view');
+  await page.keyboard.press('[');
+  await new Promise((res) => setTimeout(res, 300));
+  const after = await shellsRow();
+  check(before && after && before !== after, `[ changes the overlay's shell count: ${before} -> ${after}`);
+
+  // 4. Stage 08's scene menu.
+  await page.evaluate(() => window.raylab.switchTo({ stage: '08' }));
+  await settled();
+  const scenes = await page.$$eval('#scene option', (os) => os.map((o) => o.value));
+  check(!scenes.includes('mesh.json') && scenes.includes('pro.json'), `08's scenes: ${scenes.join(', ')}`);
+
+  // 5. Layout.
+  await choose('size', '1024x768');
+  const box = await page.evaluate(() => {
+    const m = document.getElementById('messages').getBoundingClientRect(), c = document.getElementById('view').getBoundingClientRect();
+    return { messagesTop: m.top, messagesLeft: m.left, canvasBottom: c.bottom, canvasRight: c.right };
+  });
+  check(box.messagesTop < 720 && box.canvasBottom <= 720 && box.messagesLeft >= box.canvasRight,
+    `1024x768 in a 1280x720 window: messages beside the picture and in view (${JSON.stringify(box)})`);
+  await page.setViewport({ width: 390, height: 844, isMobile: true, hasTouch: true });
+  await choose('size', '800x600');
+  await new Promise((res) => setTimeout(res, 500));
+  const share = await page.evaluate(() => {
+    const o = document.getElementById('overlay').getBoundingClientRect(), c = document.getElementById('view').getBoundingClientRect();
+    return (o.width * o.height) / (c.width * c.height);
+  });
+  check(share < 0.2, `on a 390x844 phone the overlay covers ${(100 * share).toFixed(0)}% of the picture`);
+  check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+} finally {
+  await browser?.close();
+  server.stop();
+}
+if (failures.length) {
+  console.log(`\n${failures.length} page check(s) failed`);
+  process.exit(1);
+}

@@ -71,8 +71,9 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     s.settings.furLength = o.furLength;
     s.settings.fins = !o.noFins;
     // Without --technique: the stage's own (stage.json "technique").
-    s.settings.furTechnique = o.technique.empty() ? s.stage->furTechnique
-                                                  : choice("--technique", o.technique, kFurTechniques);
+    s.settings.furTechnique = o.technique.empty()
+                                  ? s.stage->furTechnique
+                                  : choice("--technique", o.technique, kFurTechniques);
     return s;
 }
 

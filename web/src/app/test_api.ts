@@ -8,6 +8,7 @@ import { WatchedLab } from './lab_folder.js';
 import type { Page } from './page.js';
 import { ROOT, type Catalog, type Sources, stageById } from '../course/catalog.js';
 import { loadCore } from '../core/core.js';
+import { FUR_TECHNIQUES } from '../raytrace/render_settings.js';
 import { openRayStage } from '../raytrace/stage_renderer.js';
 import { loadStage } from '../tracks/track_registry.js';
 import type { OpenTodo } from '../core/core.js';
@@ -138,10 +139,11 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
     },
     // Median wall time of FRAMES frames of the demo's fly-through, each waited for by reading one pixel
     // back (the browser's equivalent of glFinish), after one warm-up frame.
-    async timeFrames(req: ViewRequest & { frames: number }): Promise<{ medianMs: number; ms: number[] }> {
+    async timeFrames(req: ViewRequest & { frames: number; technique?: string }): Promise<{ medianMs: number; ms: number[] }> {
       canvas.width = req.width;
       canvas.height = req.height;
       const { renderer, frame } = await makeRenderer(gl, catalog, req);
+      if (req.technique) frame.settings.furTechnique = Math.max(0, FUR_TECHNIQUES.indexOf(req.technique));
       const pixel = new Uint8Array(4);
       const ms: number[] = [];
       try {

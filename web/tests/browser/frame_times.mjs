@@ -52,11 +52,39 @@ try {
   console.log(`${rounds} rounds of ${frames} frames each side, alternating; medians`);
   console.log('\n| scene | native llvmpipe (ms) | browser WebGL 2 (ms) | browser / native |');
   console.log('|---|---:|---:|---:|');
+  // The fur track: the fur demo's sphere, both techniques (native: raylab
+  // demo --track fur, which prints both medians per scene).
+  const furNative = (text) => {
+    const m = /shells\+fins \(\d+ shells\) ([\d.]+) ms\s+fur shader ([\d.]+) ms/.exec(text);
+    if (!m) throw new Error(`no fur frame times in raylab demo's output:\n${text}`);
+    return { shells_and_fins: Number(m[1]), fur_shader: Number(m[2]) };
+  };
+  const furCases = [
+    { name: 'fur sphere (shells and fins)', technique: 'shells_and_fins' },
+    { name: 'fur sphere (fur shader)', technique: 'fur_shader' },
+  ];
+  const furStage = (await page.evaluate(() => window.raylab.catalog)).stages.map((s) => s.info)
+    .filter((s) => s.track === 'fur' && s.features.includes('demo')).pop();
   for (const c of cases) {
     const native = [], web = [];
     for (let r = 0; r < rounds; ++r) {
       native.push(nativeMedianMs(c.scene, c.bvh).ms);
       web.push((await page.evaluate((req) => window.raylab.timeFrames(req), { stage: stage.id, scene: `${c.scene}.json`, width, height, frames, bvh: c.bvh, demoLevers: true })).medianMs);
+    }
+    const n = median(native), w = median(web);
+    console.log(`| ${c.name} | ${n.toFixed(1)} | ${w.toFixed(1)} | ${(w / n).toFixed(2)}x |`);
+  }
+  for (const c of furCases) {
+    const native = [], web = [];
+    for (let r = 0; r < rounds; ++r) {
+      const out = mkdtempSync(join(tmpdir(), 'raylab-bench-'));
+      try {
+        const text = execFileSync(raylab, ['demo', '--headless', '--track', 'fur', '--scene', 'sphere', '--size', size, '--frames', String(frames), '--out', join(out, 'frames')], { encoding: 'utf8' });
+        native.push(furNative(text)[c.technique]);
+      } finally {
+        rmSync(out, { recursive: true, force: true });
+      }
+      web.push((await page.evaluate((req) => window.raylab.timeFrames(req), { stage: furStage.id, scene: 'fur/sphere.json', width, height, frames, technique: c.technique })).medianMs);
     }
     const n = median(native), w = median(web);
     console.log(`| ${c.name} | ${n.toFixed(1)} | ${w.toFixed(1)} | ${(w / n).toFixed(2)}x |`);

@@ -1,5 +1,6 @@
 #include "stage_programs.h"
 
+#include "bvh.h"
 #include "error.h"
 #include "eye_cells.h"
 #include "hidden_tori.h"
@@ -132,7 +133,13 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
         // shadow ray meets only behind a shell of triangles (hidden_tori.h).
         if (toriHiddenFromLights(scene)) defines.push_back("RAYLAB_TORI_HIDDEN_FROM_LIGHTS");
     }
-    if (variant.usesEyeCells(scene)) defines.push_back("RAYLAB_EYE_CELLS");
+    if (variant.usesEyeCells(scene)) {
+        defines.push_back("RAYLAB_EYE_CELLS");
+        // Its walk's stack sized to the tree the renderer builds (the same
+        // deterministic build): at most one entry per level.
+        const Bvh tree = buildBvh(scene, 2, BvhObjects::SpheresAndMeshes);
+        defines.push_back("RAYLAB_BVH_STACK_SIZE " + std::to_string(std::max(1, tree.depth)));
+    }
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();
     std::vector<std::filesystem::path> search = searchWithVariants(sources, defines);

@@ -23,7 +23,15 @@
 uniform int uEyeCellsSize;         // cells along a cube face's edge
 uniform vec3 uEyeCellsCentre;      // the point the cells were built around: the eye
 
+// The stack holds at most one node per level of the tree: sized to the
+// tree's depth (stage_programs.cpp), not to the deepest tree any scene may
+// have. A shorter stack is cheaper where locals are zero-filled for every
+// ray (WebGL: ANGLE does it; pro 193 -> 162 ms a frame in the page).
+#ifdef RAYLAB_BVH_STACK_SIZE
+const int BVH_STACK_SIZE = RAYLAB_BVH_STACK_SIZE;
+#else
 const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
+#endif
 
 // Where the ray enters node `node`'s box (T_FAR: misses it, or only beyond
 // tMax). The node is read once: its `first` and `code` come out too, so the

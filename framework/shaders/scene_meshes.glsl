@@ -10,19 +10,18 @@
 // Outside the #ifdef: a file is included once per program, wherever it
 // first appears, so an #include inside it would vanish from other scenes.
 #include "surface.glsl"
+#include "mesh_access.glsl"  // meshTexel(k), meshMaterialOf(i); empty without meshes
 #ifdef RAYLAB_MESHES
 
 // Triangle i: texels 6i .. 6i+2 are its corners (position, u), texels
 // 6i+3 .. 6i+5 their (unit normal, v); counter-clockwise from the front.
-uniform samplerBuffer uMeshCorners;
-uniform isamplerBuffer uMeshMaterials;  // per triangle: its mesh's material
 #ifndef SCENE_BAKED  // else a constant (framework/src/raytrace/scene/scene_baking.cpp)
 uniform int uMeshTriangleCount;
 #endif
 
 vec3 meshCorner(int triangle, int k)
 {
-    return texelFetch(uMeshCorners, 6 * triangle + k).xyz;
+    return meshTexel(6 * triangle + k).xyz;
 }
 
 // The watertight test of intersect_triangle.glsl: neighbouring triangles of
@@ -36,8 +35,8 @@ float intersectMeshTriangle(Ray ray, int triangle)
 // coordinates mixed by the point's barycentric weights (smooth shading).
 Surface meshSurface(vec3 point, int i)
 {
-    vec4 p0 = texelFetch(uMeshCorners, 6 * i), p1 = texelFetch(uMeshCorners, 6 * i + 1), p2 = texelFetch(uMeshCorners, 6 * i + 2);
-    vec4 n0 = texelFetch(uMeshCorners, 6 * i + 3), n1 = texelFetch(uMeshCorners, 6 * i + 4), n2 = texelFetch(uMeshCorners, 6 * i + 5);
+    vec4 p0 = meshTexel(6 * i), p1 = meshTexel(6 * i + 1), p2 = meshTexel(6 * i + 2);
+    vec4 n0 = meshTexel(6 * i + 3), n1 = meshTexel(6 * i + 4), n2 = meshTexel(6 * i + 5);
     // Weights from the areas of the sub-triangles opposite each corner.
     vec3 face = cross(p1.xyz - p0.xyz, p2.xyz - p0.xyz);
     float area2 = dot(face, face);
@@ -52,7 +51,7 @@ Surface meshSurface(vec3 point, int i)
     // Opposite corner normals can cancel out: the face's normal then.
     normal = dot(normal, normal) > 1e-12 ? normalize(normal) : normalize(face);
     vec2 uv = w.x * vec2(p0.w, n0.w) + w.y * vec2(p1.w, n1.w) + w.z * vec2(p2.w, n2.w);
-    Material material = materialAt(texelFetch(uMeshMaterials, i).r);
+    Material material = materialAt(meshMaterialOf(i));
     if (material.texture >= 0) {
         vec3 picture = textureLayer(material.texture, uv).rgb;
         material.ambient *= picture;

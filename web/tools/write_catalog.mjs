@@ -35,9 +35,6 @@ const catalog = {
   variants,
   // The pictures and meshes scenes name (the core's scene reader checks that they exist).
   assets: ['textures', 'meshes'].flatMap((d) => filesIn(join(root, 'assets', d)).map((n) => `${d}/${n}`)),
-  // Ray-tracing scenes with OBJ meshes, which the page refuses (left out of its menu).
-  nativeOnlyScenes: filesIn(join(root, 'assets/scenes')).filter((n) => n.endsWith('.json') &&
-    'meshes' in JSON.parse(readFileSync(join(root, 'assets/scenes', n), 'utf8'))),
   // Ray-tracing scenes at the top, fur scenes under fur/.
   scenes: [
     ...filesIn(join(root, 'assets/scenes')).filter((n) => n.endsWith('.json')),

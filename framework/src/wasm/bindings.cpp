@@ -101,6 +101,8 @@ public:
     val lightCells() const { return typedArray("Int32Array", stage_->lightCells); }
     val lightItems() const { return typedArray("Int32Array", stage_->lightItems); }
     val eyeCells() const { return typedArray("Int32Array", stage_->eyeCells); }
+    val meshCorners() const { return typedArray("Float32Array", stage_->meshCorners); }
+    val meshMaterials() const { return typedArray("Int32Array", stage_->meshMaterials); }
 
     // The eye (scene file units) in the shaders' frame; rebuilds the eye
     // cells when it moved (then bvhItems() and eyeCells() change).
@@ -242,6 +244,8 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("lightCells", &RayStage::lightCells)
         .function("lightItems", &RayStage::lightItems)
         .function("eyeCells", &RayStage::eyeCells)
+        .function("meshCorners", &RayStage::meshCorners)
+        .function("meshMaterials", &RayStage::meshMaterials)
         .function("placeEye", &RayStage::placeEye);
     using raylab::FurStage;
     emscripten::class_<FurStage>("FurStage")

@@ -38,12 +38,6 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     const Scene read =
         loadScene(r.scene.empty() ? projectRoot() / "assets" / "scenes" / stage_->scene
                                   : std::filesystem::path(r.scene));
-    // Stage 08's OBJ meshes sit in buffer textures the page has no
-    // stand-in for yet.
-    if (!read.meshes.empty())
-        throw Error(read.file +
-                    ": meshes: OBJ meshes are drawn by the native build only (build/raylab), not "
-                    "in the web page");
     fileCamera_ = read.camera;
     frame_ = sceneFrame(read);
     scene_ = transformScene(read, frame_);
@@ -77,6 +71,10 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
         bvhItems.assign(bvh.items.begin(), bvh.items.end());
         treeItemCount_ = bvhItems.size();
         if (reads("uEyeCells")) eyeCube_.emplace(kEyeCellResolution);
+    }
+    if (reads("uMeshCorners")) {
+        meshCorners = meshCornerTexels(scene_);
+        meshMaterials = meshTriangleMaterials(scene_);
     }
     if (reads("uLightCells")) {
         lightBuffer = buildLightBuffer(scene_);

@@ -56,8 +56,10 @@ public:
     std::vector<int> bvhItems;    // the tree's items, then the eye cells' lists
     std::vector<int> lightCells;  // RGBA per cell
     std::vector<int> lightItems;
-    LightBuffer lightBuffer;    // its uniforms (resolution, reach, every-object cell)
-    std::vector<int> eyeCells;  // RG per cell: (first in bvhItems, count)
+    LightBuffer lightBuffer;         // its uniforms (resolution, reach, every-object cell)
+    std::vector<int> eyeCells;       // RG per cell: (first in bvhItems, count)
+    std::vector<float> meshCorners;  // six RGBA texels per mesh triangle (scene_meshes.glsl)
+    std::vector<int> meshMaterials;  // per mesh triangle
     bool usesEyeCells() const { return eyeCube_.has_value(); }
     int eyeCellResolution() const { return eyeCube_ ? eyeCube_->resolution() : 0; }
     glm::vec3 eyeCellsCentre() const { return eyeCellsCentre_; }

@@ -123,9 +123,7 @@ export class Page {
     const own = this.stage().scene;
     sel.innerHTML = '';
     const ofTrack = (name: string) => name.startsWith('fur/') === (this.stage().track === 'fur');
-    // Not the scenes the page cannot draw (OBJ meshes in a ray-tracing scene: native only).
-    const drawable = (name: string) => !this.catalog.nativeOnlyScenes.includes(name);
-    for (const name of [own, ...this.catalog.scenes.filter((s) => s !== own && ofTrack(s) && drawable(s))]) sel.add(new Option(name === own ? `${name} (the stage's)` : name, name));
+    for (const name of [own, ...this.catalog.scenes.filter((s) => s !== own && ofTrack(s))]) sel.add(new Option(name === own ? `${name} (the stage's)` : name, name));
   }
 
   private resize(): void {

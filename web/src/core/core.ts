@@ -52,6 +52,8 @@ export interface RayStageHandle {
   lightCells(): Int32Array;
   lightItems(): Int32Array;
   eyeCells(): Int32Array;
+  meshCorners(): Float32Array;
+  meshMaterials(): Int32Array;
   placeEye(x: number, y: number, z: number): { eye: Float32Array; eyeCellsMoved: boolean };
   delete(): void;
 }

@@ -47,7 +47,6 @@ export interface Catalog {
   variants: Record<string, string[]>;
   scenes: string[];
   assets: string[];  // under assets/: textures/*.png, meshes/*.obj
-  nativeOnlyScenes: string[];  // ray-tracing scenes with OBJ meshes: the page does not draw them
 }
 
 export async function loadCatalog(url = 'dist/catalog.json'): Promise<Catalog> {

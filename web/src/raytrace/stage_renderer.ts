@@ -23,7 +23,9 @@ import type { TrackRenderer } from '../tracks/track_renderer.js';
 
 // Texture units, one per sampler (WebGL refuses to draw when samplers of
 // two types share a unit, and unused samplers default to unit 0).
-const UNITS = { uTextures: 0, uSky: 1, uBvhNodes: 2, uBvhItems: 3, uLightCells: 4, uLightItems: 5, uEyeCells: 6 };
+const UNITS = {
+  uTextures: 0, uSky: 1, uBvhNodes: 2, uBvhItems: 3, uLightCells: 4, uLightItems: 5, uEyeCells: 6, uMeshCorners: 7, uMeshMaterials: 8,
+};
 const SPHERE_BINDING_POINT = 0;
 
 export { SceneLimitError };
@@ -119,6 +121,11 @@ export class StageRenderer implements TrackRenderer {
       const nodes = handle.bvhNodes();
       if (nodes.length) r.textures.set('uBvhNodes', dataTexture(gl, nodes, 4));
       if (nodes.length) r.textures.set('uBvhItems', dataTexture(gl, handle.bvhItems(), 1));
+      const corners = handle.meshCorners();
+      if (corners.length) {
+        r.textures.set('uMeshCorners', dataTexture(gl, corners, 4));
+        r.textures.set('uMeshMaterials', dataTexture(gl, handle.meshMaterials(), 1));
+      }
       const cells = handle.lightCells();
       if (cells.length) {
         r.textures.set('uLightCells', dataTexture(gl, cells, 4));

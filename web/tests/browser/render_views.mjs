@@ -69,16 +69,12 @@ try {
   const stages = catalog.stages.map((s) => s.info)
     .filter((s) => (only.length === 0 || only.some((o) => s.id === o || s.id.startsWith(`${o}-`))));
 
-  // Scenes with OBJ meshes are native only: the page refuses them in one
-  // line (the core's web_ray_stage.cpp), so their views are not compared here.
-  const sceneIsNativeOnly = (sceneName) => sceneName && 'meshes' in JSON.parse(readFileSync(join(projectRoot, 'assets/scenes', sceneName), 'utf8'));
   for (const stage of stages) {
     // 1. The solution from every check view against the native reference.
     // Stage 08 also with the demo's levers (the program the page's demo and
     // its solution draw: light buffer, eye cells, shared work, weight cut).
     const leverRuns = stage.id.startsWith('08') ? [false, true] : [false];
     for (const view of stage.check_views) for (const demoLevers of leverRuns) {
-      if (sceneIsNativeOnly(view.scene)) { if (!demoLevers) console.log(`skip ${stage.id}/${view.name}: ${view.scene} has OBJ meshes (native build only)`); continue; }
       const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, view: view.name, width: 160, height: 120, demoLevers });
       const tag = demoLevers ? ' (demo levers)' : '';
       if (!r.ok) { fail(`${stage.id}/${view.name}${tag}: ${r.error}`); continue; }
@@ -94,7 +90,7 @@ try {
 
     // 2. The assembled program, line by line with its origin, against native
     // (`raylab shader` prints ray-tracing programs).
-    for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])].filter((n) => !sceneIsNativeOnly(n))) {
+    for (const sceneName of stage.track !== 'raytrace' ? [] : [...new Set([stage.scene, ...stage.check_views.map((v) => v.scene).filter(Boolean)])]) {
       for (const demoLevers of stage.id.startsWith('08') ? [false, true] : [false]) {
         const web = await page.evaluate((req) => window.raylab.assemble(req), { stage: stage.id, scene: sceneName, demoLevers });
         const native = execFileSync(raylab, ['shader', '--stage', stage.id, '--solution', '--es', '--origins', '--scene', join(projectRoot, 'assets/scenes', sceneName), ...(demoLevers ? ['--demo'] : [])], { encoding: 'utf8', cwd: projectRoot });
@@ -155,7 +151,7 @@ try {
   const wrong = spawnSync(raylab, ['compare', controlFile, join(projectRoot, 'tests/reference', first.id, `${first.check_views[0].name}.png`)], { encoding: 'utf8' });
   if (wrong.status !== 1) fail(`control: the unfinished lab's picture passed as the solution's (${wrong.stdout.trim()})`);
   else console.log('ok   control: an unfinished picture is told apart from the solution\'s');
-  // The first other scene the page takes (it refuses mesh scenes).
+  // The first other scene the page takes.
   let other, webOther;
   for (const n of catalog.scenes.filter((s) => s !== first.scene)) {
     try {

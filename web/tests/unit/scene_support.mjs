@@ -2,7 +2,7 @@
 // native build (build/raylab) to compare with. Tests that need the native
 // binary skip, saying why, when it is missing or lacks a command.
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -10,15 +10,9 @@ import { fileURLToPath } from 'node:url';
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 export const RAYLAB = process.env.RAYLAB ?? path.join(ROOT, 'build/raylab');
 
-// assets/scenes/*.json (not fur/), as the native build shows them; without
-// the scenes with OBJ meshes ("meshes"), which the page refuses (scene_reader.ts;
-// meshSceneFiles lists them).
+// assets/scenes/*.json (not fur/), as the native build shows them.
 export function sceneFiles() {
-    return allSceneFiles().filter((f) => !hasMeshes(f));
-}
-
-export function meshSceneFiles() {
-    return allSceneFiles().filter(hasMeshes);
+    return allSceneFiles();
 }
 
 function allSceneFiles() {
@@ -28,9 +22,6 @@ function allSceneFiles() {
         .map((f) => `assets/scenes/${f}`);
 }
 
-function hasMeshes(rel) {
-    return 'meshes' in JSON.parse(readFileSync(path.join(ROOT, rel), 'utf8'));
-}
 
 export function runRaylab(args) {
     return spawnSync(RAYLAB, args, { cwd: ROOT, encoding: 'utf8', timeout: 60_000, maxBuffer: 64 << 20 });

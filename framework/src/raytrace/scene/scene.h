@@ -135,4 +135,11 @@ Scene loadScene(const std::filesystem::path& file);
 // meshes in order).
 std::size_t meshTriangleCount(const Scene& scene);
 
+// The meshes' triangles as the shaders read them (scene_meshes.glsl): six
+// RGBA texels per triangle, its corners (position, u) then their (normal,
+// v); and per triangle its mesh's material. At least one entry each (an
+// empty buffer texture is not allowed everywhere).
+std::vector<float> meshCornerTexels(const Scene& scene);
+std::vector<int> meshTriangleMaterials(const Scene& scene);
+
 }  // namespace raylab

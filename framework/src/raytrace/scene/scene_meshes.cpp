@@ -71,4 +71,33 @@ std::size_t meshTriangleCount(const Scene& scene) {
     return n;
 }
 
+std::vector<float> meshCornerTexels(const Scene& scene) {
+    std::vector<float> corners;
+    for (const MeshObject& object : scene.meshes) {
+        const Mesh& m = object.mesh;
+        for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = m.indices[3 * t + std::size_t(k)];
+                corners.insert(corners.end(),
+                               {m.positions[v].x, m.positions[v].y, m.positions[v].z, m.uvs[v].x});
+            }
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = m.indices[3 * t + std::size_t(k)];
+                corners.insert(corners.end(),
+                               {m.normals[v].x, m.normals[v].y, m.normals[v].z, m.uvs[v].y});
+            }
+        }
+    }
+    if (corners.empty()) corners.assign(4, 0.0f);
+    return corners;
+}
+
+std::vector<int> meshTriangleMaterials(const Scene& scene) {
+    std::vector<int> materials;
+    for (const MeshObject& object : scene.meshes)
+        materials.insert(materials.end(), object.mesh.triangleCount(), object.material);
+    if (materials.empty()) materials.push_back(0);
+    return materials;
+}
+
 }  // namespace raylab

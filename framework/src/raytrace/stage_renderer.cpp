@@ -39,14 +39,6 @@ void setVec4Array(const ShaderProgram& p, const char* name, const std::vector<gl
                      glm::value_ptr(values[0]));
 }
 
-// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z.
-glm::mat3 torusToLocal(glm::vec3 axis) {
-    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
-    glm::vec3 y = glm::cross(axis, x);
-    return glm::transpose(glm::mat3(x, y, axis));  // rows x, y, axis
-}
-
 // Uploads an array uniform NAME[0..] of vec3s when the program has it.
 void setVec3Array(const ShaderProgram& p, const char* name, const std::vector<glm::vec3>& values) {
     if (!values.empty())

@@ -13,15 +13,6 @@ namespace raylab {
 
 namespace {
 
-// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z
-// (raytrace/stage_renderer.cpp's torusToLocal, column-major).
-glm::mat3 torusRotation(glm::vec3 axis) {
-    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
-    glm::vec3 y = glm::cross(axis, x);
-    return glm::transpose(glm::mat3(x, y, axis));
-}
-
 StageSources sourcesFor(const StageInfo& stage, const std::string& lab) {
     return lab.empty() ? solutionSources(stage) : labSources(stage, lab);
 }
@@ -114,7 +105,7 @@ std::vector<float> WebRayStage::sphereCentres(float t) const {
 std::vector<float> WebRayStage::torusToLocal(float t) const {
     std::vector<float> out;
     for (const Torus& torus : scene_.tori) {
-        const glm::mat3 m = torusRotation(torus.axisAt(t));
+        const glm::mat3 m = raylab::torusToLocal(torus.axisAt(t));
         for (int c = 0; c < 3; ++c) out.insert(out.end(), {m[c].x, m[c].y, m[c].z});
     }
     return out;

@@ -53,7 +53,7 @@ glm::dvec3 torusNormalLocal(const glm::dvec3& p, double R, double r);
 double torusDistance(const glm::dvec3& p, double R, double r);
 
 // World-to-local rotation of a torus whose (unit) axis is AXIS: the rows are
-// x, y, axis, built as stage_renderer.cpp's torusToLocal does.
+// x, y, axis, built as scene.h's torusToLocal (the GPU's) does.
 glm::dmat3 torusToLocal(const glm::dvec3& axis);
 
 }  // namespace raylab::reference

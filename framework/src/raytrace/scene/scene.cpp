@@ -136,4 +136,11 @@ Scene loadScene(const std::filesystem::path& file) {
     return scene;
 }
 
+glm::mat3 torusToLocal(glm::vec3 axis) {
+    glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    glm::vec3 x = glm::normalize(glm::cross(helper, axis));
+    glm::vec3 y = glm::cross(axis, x);
+    return glm::transpose(glm::mat3(x, y, axis));  // rows x, y, axis
+}
+
 }  // namespace raylab

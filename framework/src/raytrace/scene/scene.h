@@ -87,6 +87,10 @@ struct Torus {
     glm::vec3 axisAt(float t) const;
 };
 
+// World-to-local rotation of a torus whose axis is AXIS: the axis becomes +z
+// (the shaders' uTorusToLocal).
+glm::mat3 torusToLocal(glm::vec3 axis);
+
 // A triangle mesh from an OBJ file (stage 08), placed in the world: its
 // positions scaled by `scale` and moved by `translate` when read, so `mesh`
 // is in world coordinates (normals unchanged: the scale is uniform). Its

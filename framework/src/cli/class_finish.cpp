@@ -39,16 +39,12 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
             s.lateNote = note;
         }
     }
-    if (!untimed.empty()) {
-        std::string list;
-        for (std::size_t i = 0; i < untimed.size() && i < 5; ++i)
-            list += (i ? ", " : "") + untimed[i];
+    if (!untimed.empty())
         std::fprintf(stderr,
                      "raylab grade: %zu graded stage%s no submission time in %s (taken as on "
-                     "time): %s%s\n",
+                     "time): %s\n",
                      untimed.size(), untimed.size() == 1 ? " has" : "s have",
-                     times.source().c_str(), list.c_str(), untimed.size() > 5 ? ", ..." : "");
-    }
+                     times.source().c_str(), firstFew(untimed).c_str());
 }
 
 std::vector<std::string> attachRoster(ClassResult& result,
@@ -99,6 +95,12 @@ void matchMistakes(ClassResult& result) {
             result.mistakes.push_back(std::move(match));
         }
     }
+}
+
+std::string firstFew(const std::vector<std::string>& names, std::size_t most) {
+    std::string list;
+    for (std::size_t i = 0; i < names.size() && i < most; ++i) list += (i ? ", " : "") + names[i];
+    return names.size() > most ? list + ", ..." : list;
 }
 
 }  // namespace raylab

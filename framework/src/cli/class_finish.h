@@ -9,6 +9,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -27,5 +28,9 @@ std::vector<std::string> attachRoster(ClassResult& result,
 // result.mistakes: per catalogued mistake of the graded stages, how many
 // graded stages failed exactly the checks it fails (seeded views aside).
 void matchMistakes(ClassResult& result);
+
+// The first MOST of NAMES, joined by ", ", then ", ..." when there are more
+// (warnings about many students stay one line).
+std::string firstFew(const std::vector<std::string>& names, std::size_t most = 5);
 
 }  // namespace raylab

@@ -5,6 +5,7 @@
 // grade --merge OUT SHARD_DIR...` puts the shares together into the report
 // an unsharded run writes (the same scores and files; only timings differ).
 #include "grade_result.h"
+#include "stage_catalog.h"
 
 #include <filesystem>
 #include <optional>
@@ -57,6 +58,9 @@ void finishAndReport(ClassResult result, const GradeOptions& options,
 // cmdGrade writes the reports; the single-submission graders
 // (cmd_prairielearn.cpp) their own results.
 std::optional<ClassResult> gradeClass(const GradeOptions& g);
+
+// The stages --stages names ("01-03,f1"); every stage when LIST is empty.
+std::vector<const StageInfo*> stagesToGrade(const std::string& list);
 
 // `raylab grade --merge OUT SHARD_DIR...` (OPTIONS: the course's workflow
 // options only). Returns the exit code.

@@ -8,6 +8,7 @@
 #include <sodium.h>
 
 #include <cstdio>
+#include <vector>
 
 namespace raylab {
 
@@ -78,6 +79,37 @@ void PseudonymKey::save() const {
     writeTextFileAtomic(file_, doc.dump(1) + "\n");
     std::error_code ec;
     fs::permissions(file_, fs::perms::owner_read | fs::perms::owner_write, ec);
+}
+
+// TEXT with the student's folder (as given, absolute, canonical) and name
+// replaced by the pseudonym: compiler messages name the student's files.
+std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
+                        const fs::path& submissions) {
+    std::error_code ec;
+    const fs::path folder = submissions / name;
+    std::vector<std::string> forms = {fs::weakly_canonical(folder, ec).string(),
+                                      fs::absolute(folder, ec).string(), folder.string(),
+                                      displayPath(folder)};
+    // The bare name too, where it is long enough not to hit ordinary words.
+    if (name.size() >= 4) forms.push_back(name);
+    for (const std::string& form : forms) {
+        if (form.empty()) continue;
+        // On after each replacement: the pseudonym may hold the name
+        // ("stud" in "student-...").
+        for (std::size_t at = text.find(form); at != std::string::npos;
+             at = text.find(form, at + pseudonym.size()))
+            text.replace(at, form.size(), pseudonym);
+    }
+    return text;
+}
+
+void scrubNames(const fs::path& log, const std::string& name, const std::string& pseudonym,
+                const fs::path& submissions) {
+    std::error_code ec;
+    if (!fs::is_regular_file(log, ec)) return;
+    const std::string text = readTextFile(log);
+    const std::string clean = withoutName(text, name, pseudonym, submissions);
+    if (clean != text) writeTextFileAtomic(log, clean);
 }
 
 }  // namespace raylab

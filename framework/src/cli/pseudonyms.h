@@ -31,4 +31,14 @@ private:
     std::map<std::string, std::string> names_;  // pseudonym -> folder name
 };
 
+// TEXT with the student's folder under SUBMISSIONS (as given, absolute,
+// canonical) and NAME replaced by PSEUDONYM: compiler messages and logs
+// name the student's files.
+std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
+                        const std::filesystem::path& submissions);
+
+// The same for the text file LOG, rewritten whole when anything changed.
+void scrubNames(const std::filesystem::path& log, const std::string& name,
+                const std::string& pseudonym, const std::filesystem::path& submissions);
+
 }  // namespace raylab

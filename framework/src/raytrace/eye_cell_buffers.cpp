@@ -10,8 +10,8 @@ void EyeCellBuffers::update(const Scene& scene, glm::vec3 eye, BvhBuffers& bvh) 
     if (built_ && eye == eye_) return;
     const EyeCells built = buildEyeCells(scene, eye, cube_);
     const int base = bvh.setItemTail(built.items);
-    std::vector<GLint> cells;
-    for (glm::ivec2 c : built.cells) cells.insert(cells.end(), {base + c.x, c.y});
+    const std::vector<int> texels = eyeCellTexels(built, base);
+    const std::vector<GLint> cells(texels.begin(), texels.end());
     cells_.fill(GL_RG32I, cells.data(), cells.size() * sizeof(GLint));
     built_ = true;
     eye_ = eye;

@@ -7,8 +7,8 @@ namespace raylab {
 LightBufferBuffers::LightBufferBuffers(const LightBuffer& buffer)
     : resolution_(buffer.resolution), everyObjectCell_(buffer.everyObjectCell()),
       reach_(buffer.reach) {
-    std::vector<GLint> cells;
-    for (glm::ivec4 c : buffer.cells) cells.insert(cells.end(), {c.x, c.y, c.z, c.w});
+    const std::vector<int> texels = lightCellTexels(buffer);
+    const std::vector<GLint> cells(texels.begin(), texels.end());
     std::vector<GLint> items(buffer.items.begin(), buffer.items.end());
     if (items.empty()) items.push_back(-1);  // an empty buffer texture is not allowed everywhere
     textures_.fill(0, GL_RGBA32I, cells.data(), cells.size() * sizeof(GLint));

@@ -69,8 +69,7 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     }
     if (reads("uLightCells")) {
         lightBuffer = buildLightBuffer(scene_);
-        for (glm::ivec4 c : lightBuffer.cells)
-            lightCells.insert(lightCells.end(), {c.x, c.y, c.z, c.w});
+        lightCells = lightCellTexels(lightBuffer);
         lightItems.assign(lightBuffer.items.begin(), lightBuffer.items.end());
         lightBuffer.cells.clear();  // kept for its uniforms only
         lightBuffer.items.clear();
@@ -117,8 +116,7 @@ bool WebRayStage::moveEye(glm::vec3 eye) {
     bvhItems.resize(treeItemCount_);
     const int base = int(bvhItems.size());
     bvhItems.insert(bvhItems.end(), built.items.begin(), built.items.end());
-    eyeCells.clear();
-    for (glm::ivec2 c : built.cells) eyeCells.insert(eyeCells.end(), {base + c.x, c.y});
+    eyeCells = eyeCellTexels(built, base);
     eyeCellsCentre_ = eye;
     eyeBuilt_ = true;
     return true;

@@ -5,7 +5,7 @@
 // `raylab render` itself); a stage with fins gets the web's instanced fin
 // program and still lists the TODOs of the student's geometry shader.
 import assert from 'node:assert/strict';
-import { readdirSync } from 'node:fs';
+import { readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { test } from 'node:test';
 
@@ -168,7 +168,7 @@ test('a sample of them, given to raylab render, gets the same message', { skip: 
         const file = path.join(dir, 'test.json');
         core.FS.mkdirTree(dir);
         core.FS.writeFile(file, text);
-        (await import('node:fs')).writeFileSync(file, text);
+        writeFileSync(file, text);
         const r = runRaylab(['render', '--stage', 'f1', '--solution', '--scene', file, '--out', path.join(dir, 'never.png')]);
         const native = r.stderr.split('\n').find((l) => l.startsWith('raylab: error: '))?.slice('raylab: error: '.length);
         const { error } = openFur(core, { stage: 'f1', scene: file });

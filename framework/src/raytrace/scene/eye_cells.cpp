@@ -67,4 +67,11 @@ EyeCells buildEyeCells(const Scene& scene, glm::vec3 eye, int resolution) {
     return buildEyeCells(scene, eye, CellCube(resolution));
 }
 
+std::vector<int> eyeCellTexels(const EyeCells& cells, int firstItem) {
+    std::vector<int> out;
+    out.reserve(2 * cells.cells.size());
+    for (glm::ivec2 c : cells.cells) out.insert(out.end(), {firstItem + c.x, c.y});
+    return out;
+}
+
 }  // namespace raylab

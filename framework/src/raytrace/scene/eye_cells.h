@@ -52,6 +52,10 @@ bool eyeCellsSuit(const Scene& scene);
 // EYE, on CUBE's cells (a renderer keeps its cube: the cells' geometry is the
 // same for every eye).
 EyeCells buildEyeCells(const Scene& scene, glm::vec3 eye, const CellCube& cube);
+// The cells as the shaders read them: two ints per cell, (first, count),
+// with `first` moved by FIRSTITEM: the lists sit in the tree's item texture
+// after its FIRSTITEM items.
+std::vector<int> eyeCellTexels(const EyeCells& cells, int firstItem);
 EyeCells buildEyeCells(const Scene& scene, glm::vec3 eye, int resolution = kEyeCellResolution);
 
 }  // namespace raylab

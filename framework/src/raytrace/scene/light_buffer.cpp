@@ -74,4 +74,11 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     return buffer;
 }
 
+std::vector<int> lightCellTexels(const LightBuffer& buffer) {
+    std::vector<int> cells;
+    cells.reserve(4 * buffer.cells.size());
+    for (glm::ivec4 c : buffer.cells) cells.insert(cells.end(), {c.x, c.y, c.z, c.w});
+    return cells;
+}
+
 }  // namespace raylab

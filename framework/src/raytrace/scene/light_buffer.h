@@ -63,6 +63,9 @@ int lightBufferCell(int resolution, int light, glm::vec3 direction);
 
 // Builds the lists for every light of SCENE (in the shaders' units).
 // Triangles are listed by a ball around their corners (they never move).
+// The cells as the shaders read them: four ints per cell (RGBA texels).
+std::vector<int> lightCellTexels(const LightBuffer& buffer);
+
 LightBuffer buildLightBuffer(const Scene& scene, int resolution = kLightBufferResolution);
 
 }  // namespace raylab

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the numerics tests: a headless GL context for the whole test
 // program, and error statistics in float ulps.
-#include "function_checks.h"
+#include "function_harness.h"
 #include "stage_sources.h"
 #include "test_support.h"
 

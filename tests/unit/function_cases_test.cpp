@@ -1,6 +1,6 @@
 // The double-precision references behind the function checks agree with
 // values worked out by hand, and the tables hold the hard cases they promise.
-#include "function_checks.h"
+#include "function_harness.h"
 
 #include <gtest/gtest.h>
 

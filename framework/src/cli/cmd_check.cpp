@@ -3,7 +3,7 @@
 #include "command_options.h"
 #include "commands.h"
 #include "error.h"
-#include "function_checks.h"
+#include "function_harness.h"
 #include "image_compare.h"
 #include "paths.h"
 #include "view_renderers.h"

@@ -1,10 +1,12 @@
 // `raylab shader`: prints the GLSL a ray-tracing stage's program is compiled
 // from, assembled exactly as the renderer assembles it (includes resolved,
 // defines, the baked scene). `--es` prints the GLSL ES 3.00 the web build
-// compiles; its tests compare the page's own assembly with this.
+// compiles; its tests compare the page's own assembly with this. `--function
+// NAME` prints the harness program of that function check instead.
 #include "command.h"
 #include "command_options.h"
 #include "error.h"
+#include "harness_program.h"
 #include "scene_transform.h"
 #include "stage_programs.h"
 #include "track_registry.h"
@@ -23,10 +25,30 @@ struct ShaderOptions {
     bool noBvh = false;
     bool origins = false;
     bool demo = false;
+    std::string function;
 };
+
+// The harness program of the function check NAME, one of STAGE's.
+StagePrograms harnessPrograms(const std::string& name, const StageSetup& setup, bool es) {
+    const FunctionSpec& spec = functionSpec(name);  // throws for an unknown name
+    bool checked = false;
+    for (const FunctionSpec* s : functionSpecsFor(*setup.stage)) checked = checked || s == &spec;
+    if (!checked)
+        throw Error("--function " + name + ": stage " + setup.stage->id +
+                    " does not check it (stage " + stageCheckingFunction(name).id + " does)");
+    HarnessProgram h = assembleHarness(spec, *setup.stage, setup.sources, {}, es);
+    return {h.vertex, h.fragment};
+}
+
+int printSource(const StagePrograms& programs, const ShaderOptions& o);
 
 int cmdShader(const ShaderOptions& o) {
     StageSetup setup = resolveStageOptions(o.stage);
+    if (!o.function.empty()) {
+        if (o.demo || o.generic || o.noBvh)
+            throw Error("--function: the harness program takes no --demo, --generic or --no-bvh");
+        return printSource(harnessPrograms(o.function, setup, o.es), o);
+    }
     requireRayTracingStage(*setup.stage, "raylab shader");
     // The scene in the frame the renderer draws it in (scene_transform.h):
     // the numbers its program holds.
@@ -41,8 +63,11 @@ int cmdShader(const ShaderOptions& o) {
                         "solution (add --solution)");
         variant.useDemoLevers();
     }
-    StagePrograms programs = assembleStagePrograms(*setup.stage, setup.sources, scene, variant);
-    ShaderSource source = o.vertex ? programs.vertex : programs.fragment;
+    return printSource(assembleStagePrograms(*setup.stage, setup.sources, scene, variant), o);
+}
+
+int printSource(const StagePrograms& programs, const ShaderOptions& o) {
+    const ShaderSource& source = o.vertex ? programs.vertex : programs.fragment;
     if (!o.origins) {
         std::fputs(source.text.c_str(), stdout);
         return 0;
@@ -79,6 +104,9 @@ Command shaderCommand() {
             cmd.add_flag("--demo", o->demo,
                          "the program raylab demo draws: the solution with the demo's levers "
                          "(weight cut, shared work, light buffer, eye cells)");
+            cmd.add_option("--function", o->function,
+                           "the harness program of this function check of the stage (e.g. "
+                           "intersectSphere), as raylab check and the page compile it");
             cmd.add_flag("--origins", o->origins,
                          "prefix every line with the file:line it came from");
             return std::function<int()>([=] {

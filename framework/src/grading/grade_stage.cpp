@@ -1,7 +1,7 @@
 #include "grade_stage.h"
 
 #include "error.h"
-#include "function_checks.h"
+#include "function_harness.h"
 #include "grade_views.h"
 #include "image_compare.h"
 #include "paths.h"

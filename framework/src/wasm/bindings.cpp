@@ -1,10 +1,11 @@
 // The page's entry into the core (embind): web/src/core/core.ts is its only
-// caller (RayStage: a ray-tracing stage; FurStage: a fur stage). Requests and small answers are
+// caller (RayStage: a ray-tracing stage; FurStage: a fur stage; the checks are
+// in check_bindings.cpp). Requests and small answers are
 // JSON text; arrays of numbers are typed arrays (copies: wasm memory may move when it grows). A
 // constructor never throws into JavaScript: errors, with native's text, are kept and read through
 // error(). Students need not read this file.
+#include "embind_support.h"
 #include "error.h"
-#include "shader_source.h"
 #include "web_fur_stage.h"
 #include "web_ray_stage.h"
 
@@ -22,17 +23,6 @@ using nlohmann::json;
 namespace raylab {
 
 namespace {
-
-template <typename T>
-val typedArray(const char* type, const std::vector<T>& values) {
-    return val::global(type).new_(emscripten::typed_memory_view(values.size(), values.data()));
-}
-
-json sourceJson(const ShaderSource& s) {
-    json origin = json::array();
-    for (const SourceLine& l : s.origin) origin.push_back({l.file, l.line});
-    return {{"text", s.text}, {"origin", origin}};
-}
 
 json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
 

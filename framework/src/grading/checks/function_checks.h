@@ -3,13 +3,15 @@
 // small harness shader, compared with a double-precision C++ version of the
 // same function. The tables include the hard cases (tangent rays, rays that
 // start on the surface, parallel rays, hits from inside) and invariants (unit
-// normals, Fresnel weights within [0, 1], no NaN). Used by `raylab check` and
-// `raylab grade`.
+// normals, Fresnel weights within [0, 1], no NaN). Used by `raylab check`,
+// `raylab grade` and the page. This module needs no GL: the harness program
+// is assembled in harness_program.h, run on a GPU by grading/function_harness.h
+// (native) or the page (WebGL 2).
 #include "stage_catalog.h"
-#include "stage_sources.h"
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <utility>
@@ -60,18 +62,16 @@ struct FunctionOutcome {
     bool compiled = true;      // false: the harness did not compile (message in firstFailure)
 };
 
-// Runs SPEC's table through the stage's shader files in SOURCES. Needs a
-// current GL context.
-FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage,
-                                 const StageSources& sources);
-
-// The raw harness output: one vec4 per case (w = kHarnessTodoMarker when the
-// call reached a labTodo() stub). EXTRADEFINES are added to the stage's
-// (e.g. "TORUS_SOLVER_CLOSED_FORM" for the numerics tests). Throws Error or
-// ShaderError when the harness does not compile.
+// What a harness run wrote: one vec4 per case, w = kHarnessTodoMarker when
+// the call reached a labTodo() stub (every checked call otherwise writes 1
+// there): a stub's answer never earns credit, even where it happens to be
+// right (NO_HIT for a ray that misses).
 inline constexpr float kHarnessTodoMarker = -12345.0f;
-std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& stage,
-                                  const StageSources& sources,
-                                  const std::vector<std::string>& extraDefines = {});
+
+// Judges RESULTS (one per case of SPEC, as the harness wrote them) against
+// the double-precision reference: native's GL run and the page's WebGL run
+// are scored by this one function.
+FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
+                                     const std::vector<glm::vec4>& results);
 
 }  // namespace raylab

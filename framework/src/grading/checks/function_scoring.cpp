@@ -1,0 +1,28 @@
+// Scoring a harness run: each case's result against its double-precision
+// reference, through the spec's own comparison.
+#include "error.h"
+#include "function_checks.h"
+
+namespace raylab {
+
+FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
+                                     const std::vector<glm::vec4>& results) {
+    if (results.size() != spec.cases.size())
+        throw Error("function check " + spec.name + ": " + std::to_string(results.size()) +
+                    " results for " + std::to_string(spec.cases.size()) + " cases");
+    FunctionOutcome out;
+    out.name = spec.name;
+    out.total = int(spec.cases.size());
+    for (std::size_t i = 0; i < spec.cases.size(); ++i) {
+        const FunctionCase& c = spec.cases[i];
+        const glm::vec4& r = results[i];
+        std::string why = r.w == kHarnessTodoMarker
+                              ? c.label + ": reaches an unfinished TODO"
+                              : spec.compare(c, glm::dvec4(r), spec.reference(c));
+        if (why.empty()) ++out.passed;
+        else if (out.firstFailure.empty()) out.firstFailure = why;
+    }
+    return out;
+}
+
+}  // namespace raylab

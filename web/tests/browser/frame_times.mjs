@@ -4,7 +4,8 @@
 // full solution with the demo's program (the same variant and levers on both
 // sides: the page gets them from the C++ core), each frame waited for (native:
 // glFinish; browser: reading one pixel back).
-// Usage: node tests/browser/frame_times.mjs [--raylab PATH] [--size 800x600] [--frames 3] [--rounds 3] [--angle gl-egl|swiftshader]
+// Usage: node tests/browser/frame_times.mjs [--raylab PATH] [--size 800x600] [--frames 3] [--rounds 3] [--angle gl-egl|swiftshader] [--only TEXT]
+// (--only: the rows whose name holds TEXT, e.g. `--only pro` while trying a lever)
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -18,6 +19,7 @@ const size = option('--size', '800x600');
 const frames = Number(option('--frames', '3'));
 const rounds = Number(option('--rounds', '3'));
 const angle = option('--angle', 'gl-egl');
+const only = option('--only', '');
 const [width, height] = size.split('x').map(Number);
 
 function nativeMedianMs(scene, bvh) {
@@ -65,7 +67,7 @@ try {
   ];
   const furStage = (await page.evaluate(() => window.raylab.catalog)).stages.map((s) => s.info)
     .filter((s) => s.track === 'fur' && s.features.includes('demo')).pop();
-  for (const c of cases) {
+  for (const c of cases.filter((x) => x.name.includes(only))) {
     const native = [], web = [];
     for (let r = 0; r < rounds; ++r) {
       native.push(nativeMedianMs(c.scene, c.bvh).ms);
@@ -74,7 +76,7 @@ try {
     const n = median(native), w = median(web);
     console.log(`| ${c.name} | ${n.toFixed(1)} | ${w.toFixed(1)} | ${(w / n).toFixed(2)}x |`);
   }
-  for (const c of furCases) {
+  for (const c of furCases.filter((x) => x.name.includes(only))) {
     const native = [], web = [];
     for (let r = 0; r < rounds; ++r) {
       const out = mkdtempSync(join(tmpdir(), 'raylab-bench-'));

@@ -93,7 +93,8 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
         int count = code / 8, kind = code - 8 * count;
         for (int k = 0; k < (kind == KIND_SPHERE ? count : 0); ++k) {
             int i = bvhItem(first + k);
-            keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+            vec4 sphere = uSpheres[i];  // one read: WebGL clamps every indexed read
+            keepNearer(hit, intersectSphere(ray, sphere.xyz, sphere.w), KIND_SPHERE, i);
         }
         for (int k = 0; k < (kind == KIND_MESH ? count : 0); ++k) {
             int i = bvhItem(first + k);

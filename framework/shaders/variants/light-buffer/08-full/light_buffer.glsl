@@ -38,7 +38,8 @@ bool findLightBlocker(Ray ray, float maxT, int light)
     ivec4 list = lightCellList(cell);
     for (int k = 0; k < list.y && hit.id < 0; ++k) {
         int i = lightItem(list.x + k);
-        keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);
+        vec4 sphere = uSpheres[i];  // one read: WebGL clamps every indexed read
+        keepNearer(hit, intersectSphere(ray, sphere.xyz, sphere.w), KIND_SPHERE, i);
     }
     for (int i = 0; i < uPlaneCount && hit.id < 0; ++i)
         keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);

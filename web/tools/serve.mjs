@@ -1,9 +1,14 @@
-// Serves the web build locally: `npm run serve [-- --port N] [-- --host H]`.
+// Serves the web build locally:
+//   npm run serve [-- --port N] [-- --host H] [-- --with-solutions]
 // Only what the page reads is served (web/ without node_modules, the
-// shaders, solution/, labs/, assets/), read-only, from the project root, so
-// the page loads the very files the native build compiles.
+// shaders, labs/, assets/, each stage's stage.json), read-only, from the
+// project root, so the page loads the very files the native build compiles.
+// The solutions (solution/'s code, and the variant files that replace a file
+// students write) only with --with-solutions: the page then also draws the
+// solution and the demos. Anywhere but on loopback it warns, since anyone who
+// can reach the port reads what it serves.
 import { createServer } from 'node:http';
-import { createReadStream, existsSync, realpathSync, statSync } from 'node:fs';
+import { createReadStream, existsSync, readFileSync, realpathSync, statSync } from 'node:fs';
 import { pipeline } from 'node:stream';
 import { extname, join, normalize, sep, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -17,6 +22,7 @@ const option = (name, fallback) => {
 };
 const port = Number(option('--port', process.env.PORT ?? '8080'));
 const host = option('--host', '127.0.0.1');
+const withSolutions = args.includes('--with-solutions');
 if (!Number.isInteger(port) || port < 0 || port > 65535) {
   console.error(`serve: --port ${option('--port')}: expected a port number 0..65535`);
   process.exit(2);
@@ -27,6 +33,28 @@ if (!existsSync(join(root, 'web/dist/app/main.js'))) {
 }
 
 const ALLOWED = ['web/', 'framework/shaders/', 'solution/', 'labs/', 'assets/'];
+
+// A solution's file: solution/'s code (its stage.json files are data the
+// page needs), or a variant file under framework/shaders/variants/<v>/<stage>/
+// that stands in for a file of labs/<stage>/ (the demo's levers are written
+// in solved code).
+function isSolution(relPath) {
+  const parts = relPath.split('/');
+  if (parts[0] === 'solution') return parts.length !== 3 || parts[2] !== 'stage.json';
+  if (parts.slice(0, 3).join('/') === 'framework/shaders/variants' && parts.length === 6)
+    return existsSync(join(root, 'labs', parts[4], parts[5]));
+  return false;
+}
+
+// The catalog without the solutions: the page then offers labs only.
+function catalogWithoutSolutions(text) {
+  const catalog = JSON.parse(text);
+  catalog.solutions = false;
+  for (const s of catalog.stages) s.solutionFiles = [];
+  for (const [folder, names] of Object.entries(catalog.variants))
+    catalog.variants[folder] = names.filter((n) => !isSolution(`framework/shaders/variants/${folder}/${n}`));
+  return JSON.stringify(catalog);
+}
 const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css',
   '.json': 'application/json', '.map': 'application/json', '.png': 'image/png', '.md': 'text/markdown; charset=utf-8',
@@ -65,7 +93,25 @@ const server = createServer((req, res) => {
     res.writeHead(404, { 'Content-Type': 'text/plain' }).end(`not found: /${path}`);
     return;
   }
-  res.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', 'Cache-Control': 'no-cache' });
+  const relPath = rel.split(sep).join('/');
+  if (!withSolutions && isSolution(relPath)) {
+    res.writeHead(404, { 'Content-Type': 'text/plain' })
+      .end(`not served: /${path} is a solution (start the server with --with-solutions to serve them)`);
+    return;
+  }
+  const type = TYPES[extname(file)] ?? 'application/octet-stream';
+  if (!withSolutions && relPath === 'web/dist/catalog.json') {
+    let body;
+    try {
+      body = catalogWithoutSolutions(readFileSync(real, 'utf8'));
+    } catch (e) {
+      res.writeHead(500, { 'Content-Type': 'text/plain' }).end(`web/dist/catalog.json: ${e.message}`);
+      return;
+    }
+    res.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-cache' });
+    return void res.end(req.method === 'HEAD' ? undefined : body);
+  }
+  res.writeHead(200, { 'Content-Type': type, 'Cache-Control': 'no-cache' });
   if (req.method === 'HEAD') return void res.end();
   // pipeline: a file that cannot be read, or a client that goes away, ends
   // this response only (and closes the file), never the server.
@@ -78,4 +124,10 @@ server.on('error', (e) => {
 server.listen(port, host, () => {
   const { port: actual } = server.address();
   console.log(`RayLab web: http://${host === '0.0.0.0' ? 'localhost' : host}:${actual}/web/  (Ctrl+C stops)`);
+  console.log(withSolutions ? 'serving the solutions too (--with-solutions)'
+    : 'labs only: the solutions are not served (--with-solutions serves them)');
+  if (!['127.0.0.1', 'localhost', '::1'].includes(host)) {
+    console.warn(`serve: warning: listening on ${host}: anyone who can reach port ${actual} reads what this serves` +
+      (withSolutions ? ', every stage\'s solution included' : ', labs/ included (it holds the earlier stages solved)'));
+  }
 });

@@ -29,6 +29,9 @@ for (const variant of readdirSync(variantRoot).filter((n) => isDir(join(variantR
     variants[`${variant}/${stage}`] = shaderFiles(join(variantRoot, variant, stage));
 
 const catalog = {
+  // The solutions are listed (tools/serve.mjs without --with-solutions
+  // serves this file with false here and no solution files).
+  solutions: true,
   stages,
   framework: shaderFiles(join(root, 'framework/shaders')),
   web: shaderFiles(join(root, 'web/shaders')),

@@ -23,6 +23,20 @@ StageSources solutionSources(const StageInfo& stage) {
     return s;
 }
 
+namespace {
+
+// A project without its solutions' code (the web page served labs only:
+// solution/<stage>/ holds its stage.json alone). The files a stage needs are
+// then not known beforehand; assembling the lab names any that is missing.
+bool solutionCodePresent(const StageInfo& stage) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(stage.folder(), ec))
+        if (e.path().filename() != "stage.json") return true;
+    return false;
+}
+
+}  // namespace
+
 StageSources labSources(const StageInfo& stage, const fs::path& labRoot, MissingLabFiles missing) {
     std::error_code ec;
     if (!fs::is_directory(labRoot, ec))
@@ -41,7 +55,9 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot, Missing
     for (const std::string& id : s.chain)
         if (fs::is_directory(labRoot / id, ec)) s.search.push_back(labRoot / id);
     std::vector<std::string> absent;
-    for (const auto& [name, file] : labFileSources(stage)) {
+    const auto needed =
+        solutionCodePresent(stage) ? labFileSources(stage) : std::map<std::string, LabFile>{};
+    for (const auto& [name, file] : needed) {
         bool found = false;
         for (const fs::path& dir : s.search) found = found || fs::is_regular_file(dir / name, ec);
         if (!found) absent.push_back(name);

@@ -56,6 +56,12 @@ export class Page {
     }
     stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ?? '';
     stageSel.onchange = () => { this.demo = false; this.fillScenes(); void this.load(); };
+    if (!this.catalog.solutions) {
+      // Labs only: no solution to draw, and the demos draw the solution.
+      $<HTMLSelectElement>('source').querySelector('option[value="solution"]')?.remove();
+      $<HTMLSelectElement>('source').value = this.sourceShown = 'lab';
+      for (const id of ['demo-lite', 'demo-pro', 'demo-fur']) $(id).hidden = true;
+    }
     $<HTMLSelectElement>('source').onchange = (e) => {
       if ((e.target as HTMLSelectElement).value !== 'disk') {
         this.sourceShown = (e.target as HTMLSelectElement).value;

@@ -41,6 +41,9 @@ export interface StageJson {
 }
 
 export interface Catalog {
+  // False where the server keeps the solutions back (tools/serve.mjs without
+  // --with-solutions): the page offers the labs only.
+  solutions: boolean;
   stages: { info: StageJson; solutionFiles: string[]; labFiles: string[] }[];
   framework: string[];
   web: string[];

@@ -9,9 +9,11 @@ import puppeteer from 'puppeteer-core';
 export const webDir = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const projectRoot = join(webDir, '..');
 
-// `node tools/serve.mjs --port 0`; resolves to the page's address.
-export function startServer() {
-  const child = spawn(process.execPath, [join(webDir, 'tools/serve.mjs'), '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+// `node tools/serve.mjs --port 0 [--with-solutions]` (the tests compare the
+// solution: with, unless asked); resolves to the page's address.
+export function startServer({ withSolutions = true } = {}) {
+  const args = [join(webDir, 'tools/serve.mjs'), '--port', '0', ...(withSolutions ? ['--with-solutions'] : [])];
+  const child = spawn(process.execPath, args, { stdio: ['ignore', 'pipe', 'pipe'] });
   return new Promise((resolve, reject) => {
     let out = '';
     child.stdout.on('data', (d) => {

@@ -11,7 +11,10 @@
 //  4. stage 08's scene menu offers every ray-tracing scene, the OBJ mesh
 //     scene too;
 //  5. layout: at 1024x768 in a 1280x720 window the messages stay in view
-//     beside the picture; on a 390x844 phone the overlay covers little of it.
+//     beside the picture; on a 390x844 phone the overlay covers little of it;
+//  6. a server started without --with-solutions: the page offers the labs
+//     only (no solution in the Code menu, no demo buttons), draws the lab,
+//     and never asks for a solution file.
 // Usage: node tests/browser/page_ui.mjs   (exit status 1 on a failure)
 import { launchBrowser, openPage, startServer } from './browser.mjs';
 
@@ -90,6 +93,27 @@ try {
   });
   check(share < 0.2, `on a 390x844 phone the overlay covers ${(100 * share).toFixed(0)}% of the picture`);
   check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+
+  // 6. Labs only.
+  const labsOnly = await startServer({ withSolutions: false });
+  try {
+    const lab = await openPage(browser, labsOnly.url, '');
+    await lab.page.waitForFunction(() => !document.getElementById('view').classList.contains('building') &&
+      /Ready|Unfinished|error/i.test(document.getElementById('messages').textContent), { timeout: 120_000 });
+    const seen = await lab.page.evaluate(() => ({
+      options: [...document.getElementById('source').options].map((o) => o.value),
+      demos: ['demo-lite', 'demo-pro', 'demo-fur'].filter((id) => !document.getElementById(id).hidden),
+      overlay: document.getElementById('overlay').textContent,
+    }));
+    check(!seen.options.includes('solution') && seen.options.includes('lab'), `labs only: the Code menu offers ${seen.options.join(', ')}`);
+    check(seen.demos.length === 0, `labs only: no demo button shown (${seen.demos.join(', ') || 'none'})`);
+    check(/\(labs\/\) on /.test(seen.overlay), `labs only: the page draws the lab: ${JSON.stringify(seen.overlay.split('\n')[0])}`);
+    check(lab.problems.length === 0, `labs only: no console errors or failed requests${lab.problems.length ? `: ${lab.problems.join('; ')}` : ''}`);
+    const status = await lab.page.evaluate(async () => (await fetch('../solution/01-raycast/intersect_sphere.glsl')).status);
+    check(status === 404, `labs only: a solution file is not served (HTTP ${status})`);
+  } finally {
+    labsOnly.stop();
+  }
 } finally {
   await browser?.close();
   server.stop();

@@ -8,7 +8,7 @@
 
 in vec3 vsRay;           // from canvas.vert: eye -> this pixel on the canvas
 uniform vec3 uEye;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main()
 {

@@ -25,7 +25,7 @@
 
 in vec3 vsRay;
 uniform vec3 uEye;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 // What a pixel shows when its colour is NaN or infinite (a 0/0 or an
 // overflow somewhere in the tracer): magenta, the colour `raylab check`,

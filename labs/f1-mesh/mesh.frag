@@ -10,7 +10,7 @@ in vec3 vNormal;
 in vec2 vUv;
 flat in int vLabTodo;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main()
 {

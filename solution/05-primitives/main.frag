@@ -22,7 +22,7 @@
 
 in vec3 vsRay;
 uniform vec3 uEye;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main()
 {

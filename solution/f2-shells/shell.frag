@@ -11,7 +11,7 @@ in vec2 vUv;
 in float vLayer;
 flat in int vLabTodo;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main()
 {

@@ -11,7 +11,7 @@ in vec3 gNormal;
 in float gFade;
 flat in int gLabTodo;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main()
 {

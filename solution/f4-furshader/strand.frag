@@ -12,7 +12,7 @@ in vec2 gUv;
 in float gS;
 flat in int gLabTodo;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 const float kShininess = 40.0;
 const float kSpecular = 0.35;

@@ -161,10 +161,11 @@ void writeZip(const fs::path& file,
         zip_source_t* src = zip_source_buffer(z, copy, text.size(), 1);
         const zip_int64_t index = zip_file_add(z, name.c_str(), src, ZIP_FL_ENC_UTF_8);
         ASSERT_GE(index, 0) << name;
-        if (link)
+        if (link) {
             ASSERT_EQ(zip_file_set_external_attributes(z, zip_uint64_t(index), 0, ZIP_OPSYS_UNIX,
                                                        zip_uint32_t(0120777) << 16),
                       0);
+        }
     }
     ASSERT_EQ(zip_close(z), 0);
 }

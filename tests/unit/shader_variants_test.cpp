@@ -82,7 +82,9 @@ const Variant kVariants[] = {
      {"return !findBlocker(Ray(offsetRayOrigin(point, normal), dir), distanceToLight);"}},
     {"solution/08-full/test_spheres.glsl",
      "framework/shaders/variants/eye-cells/08-full/test_spheres.glsl",
-     {"if (enterNode(0, ray.origin, invDir, hit.t, first, code) == T_FAR) return;"}},
+     {"if (enterNode(0, ray.origin, invDir, hit.t, first, code) == T_FAR) return;",
+      // One read of the sphere: WebGL clamps every indexed read.
+      "keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);"}},
     {"solution/02-shading/blinn_phong.glsl",
      "framework/shaders/variants/shared-work/02-shading/blinn_phong.glsl",
      {"for (int i = 0; i < uLightCount; ++i) {"}},

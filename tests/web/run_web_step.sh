@@ -2,10 +2,12 @@
 # One step of the web build's tests (ctest label `web`), run from the project
 # root: build (tsc, the catalog, the core in WebAssembly), unit (node's test
 # runner), browser (the pages in Debian's Chromium against the native renders,
-# then the page driven through its own controls).
-#   run_web_step.sh build|unit|browser RAYLAB_EXE OUT_DIR
+# then the page driven through its own controls), parity (the page's Check
+# against native's verdicts: every stage, every catalogued mistake; ctest
+# labels web and web-parity).
+#   run_web_step.sh build|unit|browser|parity RAYLAB_EXE OUT_DIR LABGEN_EXE
 set -euo pipefail
-step=$1 raylab=$2 out=$3
+step=$1 raylab=$2 out=$3 labgen=${4:-}
 cd "$(dirname "$0")/../.."
 if ! command -v node >/dev/null || [ ! -d web/node_modules/typescript ]; then
   echo "web tests: node or web/node_modules is missing: run 'bash install.sh' (it runs 'npm ci' in web/)" >&2
@@ -19,5 +21,6 @@ case "$step" in
       { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs ;;
+  parity) node web/tests/browser/check_parity.mjs --all --labgen "$labgen" ;;
   *) echo "run_web_step.sh: unknown step '$step'" >&2; exit 2 ;;
 esac

@@ -1,7 +1,8 @@
 // Serves the web build locally:
 //   npm run serve [-- --port N] [-- --host H] [-- --with-solutions]
 // Only what the page reads is served (web/ without node_modules, the
-// shaders, labs/, assets/, each stage's stage.json), read-only, from the
+// shaders, labs/, assets/, each stage's stage.json, the check views'
+// reference pictures), read-only, from the
 // project root, so the page loads the very files the native build compiles.
 // The solutions (solution/'s code, and the variant files that replace a file
 // students write) only with --with-solutions: the page then also draws the
@@ -32,7 +33,8 @@ if (!existsSync(join(root, 'web/dist/app/main.js'))) {
   process.exit(2);
 }
 
-const ALLOWED = ['web/', 'framework/shaders/', 'solution/', 'labs/', 'assets/'];
+// tests/reference/: the check views' pictures, which the page's Check compares with.
+const ALLOWED = ['web/', 'framework/shaders/', 'solution/', 'labs/', 'assets/', 'tests/reference/'];
 
 // A solution's file: solution/'s code (its stage.json files are data the
 // page needs), or a variant file under framework/shaders/variants/<v>/<stage>/

@@ -1,3 +1,4 @@
+#include "check_report.h"
 #include "check_sandbox.h"
 #include "command.h"
 #include "command_options.h"
@@ -43,31 +44,25 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         students.forView(stage.checkViews.front()).openTodos();  // a compile error stops here
     reportOpenTodos(todos);
 
-    const CompareTolerance tolerance;
     std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(),
                 setup.sources.label.c_str(),
                 against.empty() ? "the solution rendered here" : displayPath(against).c_str(), w, h,
                 context->backendName().c_str());
+    // The wording is check_report.h's, shared with the page.
     int passed = 0, failed = 0;
     // Function checks first: a failing one names the one input, the
     // expected and the actual value, the cheapest hint there is.
     const auto functions = functionSpecsFor(stage);
-    if (!functions.empty())
-        std::printf("  function checks: each function on a table of inputs (hard cases included) "
-                    "against double precision\n");
+    if (!functions.empty()) std::fputs(formatFunctionsHeading().c_str(), stdout);
     std::vector<std::string> failedFunctions;
     for (const FunctionSpec* spec : functions) {
         FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
         bool ok = f.passed == f.total;
         (ok ? passed : failed) += 1;
         if (!ok) failedFunctions.push_back(f.name);
-        std::printf("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
-                    f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
+        std::fputs(formatFunctionLine(f).c_str(), stdout);
     }
-    std::printf("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 from "
-                "every pixel of the\n"
-                "  reference's 3x3 neighbourhood\n",
-                tolerance.maxBadShare * 100.0, tolerance.channel);
+    std::fputs(formatViewsHeading().c_str(), stdout);
     for (const CheckView& view : stage.checkViews) {
         long nonFinite = 0, todoPixels = 0;
         Image mine = students.render(view, &nonFinite, &todoPixels);
@@ -79,44 +74,19 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         }
         if (!check.saveDir.empty())
             writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
-        ImageDiff diff = compareImages(mine, expected, tolerance.channel);
-        bool ok = imagesAgree(diff, tolerance) && nonFinite == 0;
-        (ok ? passed : failed) += 1;
-        std::printf(
-            "  %s %-14s %s%s\n", ok ? "PASS" : "FAIL", view.name.c_str(), describe(diff).c_str(),
-            nonFinite
-                ? ("; " + std::to_string(nonFinite) + " pixels are NaN or Inf (shown magenta)")
-                      .c_str()
-                : "");
-        if (!ok) {
-            std::printf("       this view checks: %s\n", view.why.c_str());
-            std::string hint =
-                diagnose(mine, expected, tolerance.channel,
-                         {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
-            if (!hint.empty()) std::printf("       hint: %s\n", hint.c_str());
-            if (hint.empty() && !failedFunctions.empty())
-                std::printf("       note: the function check %s failed above, with its first "
-                            "wrong input\n",
-                            failedFunctions.front().c_str());
-            // A fact, not a guess: unfinished stubs change the picture.
-            if (!todos.empty() && hint.find("unfinished TODO") == std::string::npos)
-                std::printf("       note: %zu TODO%s of this lab %s still open (listed above)\n",
-                            todos.size(), todos.size() == 1 ? "" : "s",
-                            todos.size() == 1 ? "is" : "are");
-        }
+        const ViewOutcome v = judgeView(stage, view, mine, expected, nonFinite, todoPixels);
+        (v.passed ? passed : failed) += 1;
+        std::fputs(formatViewLines(v, failedFunctions, todos.size()).c_str(), stdout);
     }
 
     for (const std::string& name : stage.countChecks) {
         // Counted from the check views' cameras: a number the GPU produced
         // against the same number worked out on the CPU.
         CountOutcome c = runCountCheck(students, name, stage.checkViews);
-        bool ok = c.total > 0 && c.passed == c.total;
-        (ok ? passed : failed) += 1;
-        std::printf("  %s %-18s %d/%d views%s%s\n", ok ? "PASS" : "FAIL", c.name.c_str(), c.passed,
-                    c.total,
-                    ok ? "; " : "; first failure: ", (ok ? c.example : c.firstFailure).c_str());
+        (countPassed(c) ? passed : failed) += 1;
+        std::fputs(formatCountLine(c).c_str(), stdout);
     }
-    std::printf("%d passed, %d failed\n", passed, failed);
+    std::fputs(formatSummary(passed, failed).c_str(), stdout);
     return failed == 0 ? 0 : 1;
 }
 

@@ -227,6 +227,9 @@ ShaderSource asGlslEs300(ShaderSource s) {
         "precision highp sampler2DArray;",
         "precision highp isampler2D;",
         "precision highp samplerCube;",
+        // sampler2D defaults to lowp in fragment shaders: a float texture
+        // (the function checks' inputs) would be read at 10 bits.
+        "precision highp sampler2D;",
     };
     const std::size_t firstLineEnd = s.text.find('\n');
     std::string text;

@@ -1,5 +1,6 @@
 #include "stage_setup.h"
 
+#include "check_report.h"
 #include "error.h"
 #include "json_reader.h"
 #include "paths.h"
@@ -100,12 +101,7 @@ void reportOpenTodos(const std::vector<OpenTodo>& todos) {
     static bool reported = false;
     if (todos.empty() || reported) return;
     reported = true;
-    std::fprintf(stderr,
-                 "raylab: %zu open TODO%s in this lab (in colour frames their pixels show magenta "
-                 "stripes):\n",
-                 todos.size(), todos.size() == 1 ? "" : "s");
-    for (const OpenTodo& t : todos)
-        std::fprintf(stderr, "  %s:%d: %s\n", t.file.c_str(), t.line, t.title.c_str());
+    std::fputs(formatOpenTodos(todos).c_str(), stderr);
 }
 
 }  // namespace raylab

@@ -3,6 +3,7 @@
 // track per scene the views of a stage use (most views use the stage's
 // scene; some name another), built when first needed, drawing into float
 // targets so that a NaN is seen rather than turned black.
+#include "check_report.h"
 #include "json_reader.h"
 #include "scene_transform.h"
 #include "stage_catalog.h"
@@ -55,12 +56,6 @@ private:
 };
 
 // A count check over several views: how many of the views it applies to agree.
-struct CountOutcome {
-    std::string name;
-    int passed = 0, total = 0;
-    std::string firstFailure;  // "view side: the geometry shader emitted ..."
-    std::string example;       // the first view's detail, for a passing report
-};
 CountOutcome runCountCheck(ViewRenderers& renderers, const std::string& name,
                            const std::vector<CheckView>& views);
 

@@ -39,6 +39,7 @@ public:
             q.demoLevers = r.value("demoLevers", false);
             q.bvh = r.value("bvh", -1);
             q.maxBlockBytes = r.value("maxBlockBytes", 0);
+            q.todoMarks = r.value("todoMarks", false);
             stage_ = std::make_unique<WebRayStage>(q);
         } catch (const std::exception& e) { error_ = e.what(); }
     }
@@ -134,8 +135,9 @@ public:
     explicit FurStage(const std::string& requestJson) {
         try {
             const json r = json::parse(requestJson);
-            stage_ = std::make_unique<WebFurStage>(r.value("stage", ""), r.value("lab", ""),
-                                                   r.value("scene", ""));
+            stage_ =
+                std::make_unique<WebFurStage>(r.value("stage", ""), r.value("lab", ""),
+                                              r.value("scene", ""), r.value("todoMarks", false));
         } catch (const std::exception& e) { error_ = e.what(); }
     }
     std::string error() const { return error_; }

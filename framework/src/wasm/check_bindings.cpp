@@ -3,6 +3,7 @@
 // a check view with its reference picture (core/image_compare.h), so the page
 // judges with native's tables, references, thresholds and hints. The page
 // only draws (web/src). Students need not read this file.
+#include "check_report.h"
 #include "embind_support.h"
 #include "error.h"
 #include "function_checks.h"
@@ -15,6 +16,7 @@
 #include <emscripten/val.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -132,6 +134,147 @@ std::string compareView(const val& mine, const val& expected, int width, int hei
     } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
 }
 
+// A picture as the page reads it back from a check's float target (RGBA
+// floats, rows bottom-up) with its TODO marks (one byte per pixel, the
+// same rows; may be empty): top-down RGBA bytes converted as natively
+// (imageFromFloats), the NaN/Inf pixels and the marked ones counted.
+// Answers {rgba: Uint8Array, nonFinite, todoPixels}.
+val viewImage(const val& floats, const val& marks, int width, int height) {
+    const std::vector<float> bottomUp = emscripten::convertJSArrayToNumberVector<float>(floats);
+    const std::size_t row = std::size_t(width) * 4;
+    if (bottomUp.size() != row * std::size_t(height)) {
+        val error = val::object();
+        error.set("error", "viewImage: " + std::to_string(bottomUp.size()) + " floats for " +
+                               std::to_string(width) + "x" + std::to_string(height));
+        return error;
+    }
+    std::vector<float> rows(bottomUp.size());
+    for (int y = 0; y < height; ++y)
+        std::copy_n(bottomUp.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row), row,
+                    rows.begin() + std::ptrdiff_t(std::size_t(y) * row));
+    long nonFinite = 0;
+    const Image image = imageFromFloats(rows, width, height, &nonFinite);
+    long todoPixels = 0;
+    for (std::uint8_t m : emscripten::convertJSArrayToNumberVector<std::uint8_t>(marks))
+        todoPixels += m > 127;
+    val out = val::object();
+    out.set("rgba", typedArray("Uint8Array", image.rgba));
+    out.set("nonFinite", double(nonFinite));
+    out.set("todoPixels", double(todoPixels));
+    return out;
+}
+
+// One `raylab check` in the page: the page runs the harnesses and draws the
+// views; this judges each result as natively and writes the report in
+// native's words (check_report.h).
+class CheckSession {
+public:
+    // HEADER: the report's first line ("raylab check: stage ..."); TODOSJSON:
+    // the lab's open TODOs [{file, line, title}].
+    CheckSession(const std::string& stage, const std::string& header, const std::string& todosJson)
+        : header_(header) {
+        try {
+            stage_ = &findStage(stage);
+            for (const json& t : json::parse(todosJson))
+                todos_.push_back({t.at("file"), t.at("line"), t.at("title")});
+        } catch (const std::exception& e) { error_ = e.what(); }
+    }
+    std::string error() const { return error_; }
+
+    // What a harness wrote for function NAME; answers the outcome as JSON.
+    std::string addFunction(const std::string& name, const val& floats) {
+        try {
+            return scoreInto(name, floats);
+        } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
+    }
+    // A harness that did not build: MESSAGE says why (mapped to file:line).
+    std::string addFunctionNotBuilt(const std::string& name, const std::string& message) {
+        try {
+            FunctionOutcome f;
+            f.name = name;
+            f.total = int(functionSpec(name).cases.size());
+            f.compiled = false;
+            f.firstFailure = "does not compile: " + message;
+            return record(f);
+        } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
+    }
+
+    // View VIEWNAME: the student's picture and the reference (top-down RGBA
+    // bytes, WIDTH x HEIGHT). Answers {passed, description, hint}.
+    std::string addView(const std::string& viewName, const val& mine, const val& expected,
+                        int width, int height, double nonFinite, double todoPixels) {
+        try {
+            return judgeInto(viewName, mine, expected, width, height, nonFinite, todoPixels);
+        } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
+    }
+
+    // A count check the page cannot run, and why.
+    void addCountNotRun(const std::string& name, const std::string& why) {
+        notRun_.push_back("  ---- " + name + ": not checked here: " + why + "\n");
+    }
+
+    int passed() const { return count(true); }
+    int failed() const { return count(false); }
+    // The report as `raylab check` prints it: the TODOs, the header, the
+    // function checks, the views, the count checks, the summary.
+    std::string report() const {
+        std::string out = formatOpenTodos(todos_) + header_ + "\n";
+        std::vector<std::string> failedFunctions;
+        if (!functions_.empty()) out += formatFunctionsHeading();
+        for (const FunctionOutcome& f : functions_) {
+            if (f.passed != f.total) failedFunctions.push_back(f.name);
+            out += formatFunctionLine(f);
+        }
+        out += formatViewsHeading();
+        for (const ViewOutcome& v : views_)
+            out += formatViewLines(v, failedFunctions, todos_.size());
+        for (const std::string& line : notRun_) out += line;
+        return out + formatSummary(passed(), failed());
+    }
+
+private:
+    std::string scoreInto(const std::string& name, const val& floats) {
+        const std::vector<float> raw = emscripten::convertJSArrayToNumberVector<float>(floats);
+        std::vector<glm::vec4> results;
+        for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
+            results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
+        return record(scoreFunctionResults(functionSpec(name), results));
+    }
+    std::string judgeInto(const std::string& viewName, const val& mine, const val& expected,
+                          int width, int height, double nonFinite, double todoPixels) {
+        const CheckView* view = nullptr;
+        for (const CheckView& v : stage_->checkViews)
+            if (v.name == viewName) view = &v;
+        if (!view) throw Error("stage " + stage_->id + " has no check view '" + viewName + "'");
+        views_.push_back(judgeView(*stage_, *view, imageFrom(mine, width, height),
+                                   imageFrom(expected, width, height), long(nonFinite),
+                                   long(todoPixels)));
+        const ViewOutcome& v = views_.back();
+        return json{{"passed", v.passed}, {"description", describe(v.diff)}, {"hint", v.hint}}
+            .dump();
+    }
+    std::string record(const FunctionOutcome& f) {
+        functions_.push_back(f);
+        return json{{"name", f.name},
+                    {"passed", f.passed},
+                    {"total", f.total},
+                    {"firstFailure", f.firstFailure}}
+            .dump();
+    }
+    int count(bool ok) const {
+        int n = 0;
+        for (const FunctionOutcome& f : functions_) n += (f.passed == f.total) == ok;
+        for (const ViewOutcome& v : views_) n += v.passed == ok;
+        return n;
+    }
+    const StageInfo* stage_ = nullptr;
+    std::string header_, error_;
+    std::vector<OpenTodo> todos_;
+    std::vector<FunctionOutcome> functions_;
+    std::vector<ViewOutcome> views_;
+    std::vector<std::string> notRun_;
+};
+
 // Native's heat map of the difference (black = equal, red = max), RGBA bytes.
 val heatMap(const val& mine, const val& expected, int width, int height) {
     return typedArray(
@@ -146,6 +289,18 @@ val heatMap(const val& mine, const val& expected, int width, int height) {
 EMSCRIPTEN_BINDINGS(raylab_checks) {
     emscripten::function("compareView", &raylab::compareView);
     emscripten::function("heatMap", &raylab::heatMap);
+    emscripten::function("viewImage", &raylab::viewImage);
+    using raylab::CheckSession;
+    emscripten::class_<CheckSession>("CheckSession")
+        .constructor<std::string, std::string, std::string>()
+        .function("error", &CheckSession::error)
+        .function("addFunction", &CheckSession::addFunction)
+        .function("addFunctionNotBuilt", &CheckSession::addFunctionNotBuilt)
+        .function("addView", &CheckSession::addView)
+        .function("addCountNotRun", &CheckSession::addCountNotRun)
+        .function("passed", &CheckSession::passed)
+        .function("failed", &CheckSession::failed)
+        .function("report", &CheckSession::report);
     using raylab::FunctionChecks;
     emscripten::class_<FunctionChecks>("FunctionChecks")
         .constructor<std::string>()

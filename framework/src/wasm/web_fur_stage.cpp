@@ -21,7 +21,7 @@ constexpr int kMinTotalComponents = 1024;
 }  // namespace
 
 WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
-                         const std::string& sceneFile)
+                         const std::string& sceneFile, bool todoMarks)
     : stage_(&findStage(stageId)),
       sources_(lab.empty() ? solutionSources(*stage_) : labSources(*stage_, lab)) {
     const StageInfo& stage = *stage_;
@@ -49,6 +49,7 @@ WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
                                        scene_.fur.strandSegments);
         for (const std::string& d : budget_->defines()) defines.push_back(d);
     }
+    if (todoMarks) defines.push_back("RAYLAB_TODO_MARK");  // a check's target, as natively
     std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
     search.insert(search.begin(), projectRoot() / "web" / "shaders");
     std::set<std::pair<std::string, int>> seen;

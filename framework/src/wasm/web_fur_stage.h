@@ -30,7 +30,10 @@ class WebFurStage {
 public:
     // LAB: the lab's folder (laid out like labs/), empty for the solution;
     // SCENE: a fur scene file, empty for the stage's own. Throws Error.
-    WebFurStage(const std::string& stage, const std::string& lab, const std::string& scene);
+    // TODOMARKS: the programs also mark the pixels that reach a TODO stub
+    // (a check's second target, RAYLAB_TODO_MARK).
+    WebFurStage(const std::string& stage, const std::string& lab, const std::string& scene,
+                bool todoMarks = false);
 
     const StageInfo& stage() const { return *stage_; }
     const FurScene& scene() const { return scene_; }

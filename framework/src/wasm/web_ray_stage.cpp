@@ -45,6 +45,7 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     }
     variant_.webGl2 = true;
     variant_.maxBlockBytes = r.maxBlockBytes;
+    variant_.todoMarks = r.todoMarks;
     if (r.maxBlockBytes > 0 && int(scene_.spheres.size()) > r.maxBlockBytes / kSphereBlockStride)
         throw Error(scene_.file + ": spheres: " + std::to_string(scene_.spheres.size()) +
                     " spheres, but this browser's uniform blocks hold at most " +

@@ -26,6 +26,7 @@ struct WebRayRequest {
     bool demoLevers = false;  // the demo's levers (solution only), as `raylab demo`
     int bvh = -1;             // 1 or 0: with or without the BVH; -1: the fastest choice
     int maxBlockBytes = 0;    // the browser's MAX_UNIFORM_BLOCK_SIZE
+    bool todoMarks = false;   // also mark the pixels that reach a TODO stub (a check's target)
 };
 
 class WebRayStage {

@@ -2,6 +2,7 @@
 // handed out, or the student's own folder from disk) and a scene; fly
 // around with the native window's keys; read the frame time and the switches
 // in the overlay; save a screenshot.
+import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
 import { canWatchFolders, labFromFiles, WatchedLab } from './lab_folder.js';
@@ -44,7 +45,11 @@ export class Page {
   private firstFrameWaiters: ((at: number) => void)[] = [];
   private overlayHidden = false;  // key H
 
-  constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {}
+  private checks: CheckPanel;
+
+  constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {
+    this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'));
+  }
 
   start(): void {
     const stageSel = $<HTMLSelectElement>('stage');
@@ -104,6 +109,7 @@ export class Page {
     $('demo-pro').onclick = () => this.startDemo('pro.json');
     $('demo-fur').onclick = () => this.startDemo('fur/sphere.json', 'fur');
     $('shot').onclick = () => this.screenshot();
+    $('check').onclick = () => void this.check();
     this.bindInput();
     this.fillScenes();
     this.resize();
@@ -270,6 +276,7 @@ export class Page {
       else if (e.key === 'p' || e.key === 'P') { this.paused = !this.paused; this.note = this.paused ? 'paused' : 'running'; }
       else if (e.key === 'v' || e.key === 'V') { this.vsync = !this.vsync; this.note = `vsync ${this.vsync ? 'on' : 'off'}`; }
       else if (e.key === 'F12') this.screenshot();
+      else if (e.key === 'c' || e.key === 'C') void this.check();
       else if (e.key === 'h' || e.key === 'H') {
         this.overlayHidden = !this.overlayHidden;
         $('overlay').hidden = this.overlayHidden;
@@ -332,8 +339,18 @@ export class Page {
     return new Promise((resolve) => this.firstFrameWaiters.push(resolve));
   }
 
+  // `raylab check` for what is on screen; the picture pauses meanwhile.
+  private async check(): Promise<void> {
+    if (this.busy || this.checks.running) return;
+    try {
+      await this.checks.run(this.stage(), await this.sources());
+    } catch (e) {
+      this.showError((e as Error).message, true);
+    }
+  }
+
   private drawFrame(now: number): void {
-    if (this.building) return this.updateOverlay();
+    if (this.building || this.checks.running) return this.updateOverlay();
     if (this.renderer) {
       const camera = this.demo ? new Camera(flyThroughPose(this.camera.pose, this.time * 10), this.camera.fovYDeg) : this.camera;
       this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);

@@ -11,6 +11,7 @@ import { loadCore } from '../core/core.js';
 import { FUR_TECHNIQUES } from '../raytrace/render_settings.js';
 import { openRayStage } from '../raytrace/stage_renderer.js';
 import { loadStage } from '../tracks/track_registry.js';
+import { backendName, runCheck, sourceLabel } from '../check/run_check.js';
 import type { OpenTodo } from '../core/core.js';
 
 export interface ViewRequest {
@@ -98,6 +99,20 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
         editSeen: text(second, edited) === req.edit[edited] && text(first, edited) !== req.edit[edited],
         wrongStage,
       };
+    },
+    // `raylab check` in the page for a stage's solution, its lab as handed
+    // out, or lab files "opened from disk" (LABFILES: name -> text).
+    async check(req: { stage: string; source?: 'solution' | 'lab'; labFiles?: Record<string, string> }) {
+      const stage = stageById(catalog, req.stage);
+      const sources: Sources = req.labFiles
+        ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
+        : { kind: req.source ?? 'solution' };
+      try {
+        const run = await runCheck(gl, catalog, stage, sources, sourceLabel(sources), backendName(gl));
+        return { ok: true, report: run.report, passed: run.passed, failed: run.failed, failedChecks: run.failedChecks };
+      } catch (e) {
+        return { ok: false, error: (e as Error).message };
+      }
     },
     // The fragment program as `raylab shader --es --origins [--demo]` prints it.
     async assemble(req: { stage: string; scene: string; demoLevers?: boolean }): Promise<string> {

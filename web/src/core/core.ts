@@ -76,6 +76,7 @@ export interface FurStageInfo {
   bounds: { centre: [number, number, number]; radius: number };
   strands: { perTriangle: number; vertices: number } | null;
   mesh: { name: string; vertices: number; triangles: number };
+  todoMarks?: boolean;  // the programs mark TODO pixels (a check's target)
 }
 export interface FurStageHandle {
   error(): string;
@@ -98,10 +99,43 @@ interface CoreFs {
   unlink(path: string): void;
   chdir(path: string): void;
 }
+// The checks (framework/src/wasm/check_bindings.cpp).
+export interface FunctionCheckInfo {
+  name: string;
+  cases: number;
+  perCase: boolean;                      // some case sets uniforms: one pixel at a time
+  uniforms: [string, number][][];        // per case
+  vertex?: CoreSource;
+  fragment?: CoreSource;
+  error?: string;                        // the harness could not be assembled
+}
+export interface FunctionChecksHandle {
+  error(): string;
+  list(): string;                        // FunctionCheckInfo[] as JSON
+  texels(name: string): Float32Array;    // uCases: RGBA floats, cases wide, 4 rows
+  delete(): void;
+}
+export interface CheckSessionHandle {
+  error(): string;
+  addFunction(name: string, results: Float32Array): string;
+  addFunctionNotBuilt(name: string, message: string): string;
+  addView(view: string, mine: Uint8Array, expected: Uint8Array, width: number, height: number, nonFinite: number, todoPixels: number): string;
+  addCountNotRun(name: string, why: string): void;
+  passed(): number;
+  failed(): number;
+  report(): string;
+  delete(): void;
+}
 export interface Core {
   FS: CoreFs;
   RayStage: new (request: string) => RayStageHandle;
   FurStage: new (request: string) => FurStageHandle;
+  FunctionChecks: new (request: string) => FunctionChecksHandle;
+  CheckSession: new (stage: string, header: string, todosJson: string) => CheckSessionHandle;
+  // A check target's read-back as natively converted (rows bottom-up in, top-down out).
+  viewImage(floats: Float32Array, marks: Uint8Array, width: number, height: number):
+    { rgba: Uint8Array; nonFinite: number; todoPixels: number; error?: string };
+  heatMap(mine: Uint8Array, expected: Uint8Array, width: number, height: number): Uint8Array;
   // A driver's log with its line references turned into file:line (native's mapCompilerLog).
   mapCompilerLog(log: string, sourceJson: string): string;
 }

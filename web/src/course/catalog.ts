@@ -38,6 +38,7 @@ export interface StageJson {
   features: string[];
   defines?: string[];
   check_views: CheckViewJson[];
+  count_checks?: string[];     // fin_count: a number the GPU produced against the CPU's
 }
 
 export interface Catalog {

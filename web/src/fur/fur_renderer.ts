@@ -29,6 +29,7 @@ export interface FurStageRequest {
   sources: Sources;
   sceneName: string;   // under assets/scenes/ ("fur/torus.json")
   sceneText?: string;  // that file's text, made up by a test
+  todoMarks?: boolean; // a check's target: also mark the pixels that reach a TODO stub
 }
 
 // The core's fur stage for REQUEST. Throws Error with native's message.
@@ -37,13 +38,16 @@ export async function openFurStage(core: Core, catalog: Catalog, r: FurStageRequ
   if (r.sceneText !== undefined) writeProjectFile(core, `assets/scenes/${r.sceneName}`, r.sceneText);
   const handle = new core.FurStage(JSON.stringify({
     stage: r.stage.id, lab: labForCore(core, r.stage.id, r.sources), scene: `${CORE_ROOT}/assets/scenes/${r.sceneName}`,
+    todoMarks: r.todoMarks ?? false,
   }));
   const error = handle.error();
   if (error) {
     handle.delete();
     throw new Error(error);
   }
-  return { handle, info: JSON.parse(handle.info()) as FurStageInfo };
+  const info = JSON.parse(handle.info()) as FurStageInfo;
+  info.todoMarks = r.todoMarks ?? false;
+  return { handle, info };
 }
 
 export class FurRenderer implements TrackRenderer {
@@ -156,6 +160,8 @@ export class FurRenderer implements TrackRenderer {
     gl.viewport(0, 0, width, height);
     gl.clearColor(s.background[0], s.background[1], s.background[2], 1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    // A check's target: its TODO marks start at zero, not at the background.
+    if (this.info.todoMarks) gl.clearBufferfv(gl.COLOR, 1, [0, 0, 0, 0]);
     gl.colorMask(true, true, true, false);  // the picture's alpha stays 1
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LEQUAL);

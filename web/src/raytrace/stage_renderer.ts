@@ -49,6 +49,7 @@ export interface RayStageRequest {
   sceneText?: string;      // that file's text, made up by a test
   bvh?: boolean;           // stage 08: with or without the BVH; default: the fastest choice
   demoLevers?: boolean;    // the demo's levers (the solution only), as `raylab demo`
+  todoMarks?: boolean;     // a check's target: also mark the pixels that reach a TODO stub
 }
 
 // The core's stage for REQUEST, after the files it reads are in its file
@@ -61,6 +62,7 @@ export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catal
     stage: r.stage.id, lab, scene: `${CORE_ROOT}/assets/scenes/${r.sceneName}`,
     demoLevers: r.demoLevers ?? false, bvh: r.bvh === undefined ? -1 : r.bvh ? 1 : 0,
     maxBlockBytes: Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)),
+    todoMarks: r.todoMarks ?? false,
   }));
   const error = handle.error();
   if (error) {

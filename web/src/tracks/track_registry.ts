@@ -22,14 +22,16 @@ export interface LoadedStage {
 // scenes, window.raylab.renderView); it is still shown as assets/scenes/SCENENAME.
 // DEMOLEVERS: the ray tracer's program with the demo's levers (the solution
 // only), as `raylab demo` and the native window showing the solution draw it.
+// TODOMARKS: for a check's target (check/check_target.ts): the programs also
+// mark the pixels that reach a TODO stub, in a second colour attachment.
 export async function loadStage(
   gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
-  sceneText?: string, demoLevers = false,
+  sceneText?: string, demoLevers = false, todoMarks = false,
 ): Promise<LoadedStage> {
   if (stage.track === 'raytrace') {
     const core = await loadCore();
     const renderer = await StageRenderer.create(gl, core, catalog, {
-      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution',
+      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution', todoMarks,
     });
     const c = renderer.info.camera;
     return {
@@ -42,7 +44,7 @@ export async function loadStage(
   }
   if (stage.track === 'fur') {
     const core = await loadCore();
-    const renderer = await FurRenderer.create(gl, core, catalog, { stage, sources, sceneName, sceneText });
+    const renderer = await FurRenderer.create(gl, core, catalog, { stage, sources, sceneName, sceneText, todoMarks });
     const i = renderer.info, c = i.camera;
     return {
       renderer, camera: { position: c.position, yawDeg: c.yaw, pitchDeg: c.pitch }, fovYDeg: c.fovY,

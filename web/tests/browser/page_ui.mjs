@@ -14,7 +14,10 @@
 //     beside the picture; on a 390x844 phone the overlay covers little of it;
 //  6. a server started without --with-solutions: the page offers the labs
 //     only (no solution in the Code menu, no demo buttons), draws the lab,
-//     and never asks for a solution file.
+//     and never asks for a solution file;
+//  7. Check (key C) on the lab of stage 01: `raylab check`'s report in the
+//     messages, each failing view as yours / difference / reference; on the
+//     solution every check passes and no view is shown.
 // Usage: node tests/browser/page_ui.mjs   (exit status 1 on a failure)
 import { launchBrowser, openPage, startServer } from './browser.mjs';
 
@@ -93,6 +96,33 @@ try {
   });
   check(share < 0.2, `on a 390x844 phone the overlay covers ${(100 * share).toFixed(0)}% of the picture`);
   check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+
+  // 7. Check, as a student presses it.
+  await page.setViewport({ width: 1280, height: 720 });
+  await choose('source', 'lab');
+  await settled();
+  await page.evaluate(() => window.raylab.switchTo({ stage: '01' }));
+  await settled();
+  const checked = async () => {
+    await page.focus('#view');
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => /\d+ passed, \d+ failed/.test(document.getElementById('messages').textContent), { timeout: 120_000 });
+    return page.evaluate(() => ({
+      report: document.getElementById('messages').textContent,
+      views: [...document.querySelectorAll('#check-views .check-view')].map((v) => ({ view: v.dataset.view, pictures: v.querySelectorAll('canvas').length })),
+    }));
+  };
+  const labCheck = await checked();
+  check(/^raylab check: stage 01-raycast, lab labs\/ against the reference pictures/m.test(labCheck.report) &&
+    /FAIL intersectSphere +0\/36 cases; first failure: .*reaches an unfinished TODO/.test(labCheck.report) &&
+    /0 passed, 8 failed/.test(labCheck.report), `Check on the 01 lab: native's report (${JSON.stringify(labCheck.report.split('\n').slice(-1)[0])})`);
+  check(labCheck.views.length === 6 && labCheck.views.every((v) => v.pictures === 3),
+    `Check shows each failing view as three pictures: ${labCheck.views.map((v) => v.view).join(', ')}`);
+  await choose('source', 'solution');
+  await settled();
+  const solutionCheck = await checked();
+  check(/8 passed, 0 failed/.test(solutionCheck.report) && solutionCheck.views.length === 0,
+    `Check on the 01 solution: every check passes, no view shown (${solutionCheck.views.length})`);
 
   // 6. Labs only.
   const labsOnly = await startServer({ withSolutions: false });

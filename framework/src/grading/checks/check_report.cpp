@@ -1,0 +1,98 @@
+#include "check_report.h"
+
+#include <cstdio>
+
+namespace raylab {
+
+namespace {
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args) {
+    const int n = std::snprintf(nullptr, 0, pattern, args...);
+    std::string out(std::size_t(n) + 1, '\0');
+    std::snprintf(out.data(), out.size(), pattern, args...);
+    out.pop_back();
+    return out;
+}
+
+}  // namespace
+
+ViewOutcome judgeView(const StageInfo& stage, const CheckView& view, const Image& mine,
+                      const Image& expected, long nonFinite, long todoPixels) {
+    const CompareTolerance tolerance;
+    ViewOutcome v;
+    v.name = view.name;
+    v.why = view.why;
+    v.nonFinite = nonFinite;
+    v.diff = compareImages(mine, expected, tolerance.channel);
+    v.passed = imagesAgree(v.diff, tolerance) && nonFinite == 0;
+    if (!v.passed)
+        v.hint = diagnose(mine, expected, tolerance.channel,
+                          {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
+    return v;
+}
+
+std::string formatOpenTodos(const std::vector<OpenTodo>& todos) {
+    if (todos.empty()) return "";
+    std::string out = format("raylab: %zu open TODO%s in this lab (in colour frames their pixels "
+                             "show magenta stripes):\n",
+                             todos.size(), todos.size() == 1 ? "" : "s");
+    for (const OpenTodo& t : todos)
+        out += "  " + t.file + ":" + std::to_string(t.line) + ": " + t.title + "\n";
+    return out;
+}
+
+std::string formatFunctionsHeading() {
+    return "  function checks: each function on a table of inputs (hard cases included) "
+           "against double precision\n";
+}
+
+std::string formatFunctionLine(const FunctionOutcome& f) {
+    const bool ok = f.passed == f.total;
+    return format("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
+                  f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
+}
+
+std::string formatViewsHeading() {
+    const CompareTolerance tolerance;
+    return format("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 "
+                  "from every pixel of the\n"
+                  "  reference's 3x3 neighbourhood\n",
+                  tolerance.maxBadShare * 100.0, tolerance.channel);
+}
+
+std::string formatViewLines(const ViewOutcome& v, const std::vector<std::string>& failedFunctions,
+                            std::size_t openTodos) {
+    std::string out = format(
+        "  %s %-14s %s%s\n", v.passed ? "PASS" : "FAIL", v.name.c_str(), describe(v.diff).c_str(),
+        v.nonFinite
+            ? ("; " + std::to_string(v.nonFinite) + " pixels are NaN or Inf (shown magenta)")
+                  .c_str()
+            : "");
+    if (v.passed) return out;
+    out += "       this view checks: " + v.why + "\n";
+    if (!v.hint.empty()) out += "       hint: " + v.hint + "\n";
+    if (v.hint.empty() && !failedFunctions.empty())
+        out += "       note: the function check " + failedFunctions.front() +
+               " failed above, with its first wrong input\n";
+    // A fact, not a guess: unfinished stubs change the picture.
+    if (openTodos > 0 && v.hint.find("unfinished TODO") == std::string::npos)
+        out += format("       note: %zu TODO%s of this lab %s still open (listed above)\n",
+                      openTodos, openTodos == 1 ? "" : "s", openTodos == 1 ? "is" : "are");
+    return out;
+}
+
+bool countPassed(const CountOutcome& c) { return c.total > 0 && c.passed == c.total; }
+
+std::string formatCountLine(const CountOutcome& c) {
+    const bool ok = countPassed(c);
+    return format("  %s %-18s %d/%d views%s%s\n", ok ? "PASS" : "FAIL", c.name.c_str(), c.passed,
+                  c.total,
+                  ok ? "; " : "; first failure: ", (ok ? c.example : c.firstFailure).c_str());
+}
+
+std::string formatSummary(int passed, int failed) {
+    return format("%d passed, %d failed\n", passed, failed);
+}
+
+}  // namespace raylab

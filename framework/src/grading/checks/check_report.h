@@ -1,0 +1,58 @@
+#pragma once
+// What `raylab check` reports, and how it words it: the verdict of each
+// function check, check view and count check, the hints, the summary line.
+// One wording for native (cli/cmd_check.cpp) and the page (through the
+// WebAssembly core), so a student reads the same report in both.
+#include "function_checks.h"
+#include "image_compare.h"
+#include "shader_source.h"
+#include "stage_catalog.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// A check view judged: its picture against the reference.
+struct ViewOutcome {
+    std::string name;
+    std::string why;  // what the view checks (stage.json)
+    ImageDiff diff;
+    long nonFinite = 0;  // NaN or Inf pixels of the student's picture
+    bool passed = false;
+    std::string hint;  // diagnose()'s, for a failing view; else empty
+};
+
+// MINE (the student's picture of VIEW, NONFINITE and TODOPIXELS counted by
+// the renderer) against EXPECTED, with the graders' tolerance and hints.
+ViewOutcome judgeView(const StageInfo& stage, const CheckView& view, const Image& mine,
+                      const Image& expected, long nonFinite, long todoPixels);
+
+// A count check over the check views: a number the GPU produced against the
+// same number worked out on the CPU (the fur track's fin_count).
+struct CountOutcome {
+    std::string name;
+    int passed = 0, total = 0;
+    std::string firstFailure;  // "view side: the geometry shader emitted ..."
+    std::string example;       // the first view's detail, for a passing report
+};
+
+// "raylab: 2 open TODOs in this lab (...):" and one line per TODO; empty
+// for none.
+std::string formatOpenTodos(const std::vector<OpenTodo>& todos);
+
+// The report's lines, each ending in a newline, as `raylab check` prints
+// them in this order.
+std::string formatFunctionsHeading();  // before the first function check
+std::string formatFunctionLine(const FunctionOutcome& f);
+std::string formatViewsHeading();  // the tolerance, before the first view
+// FAILEDFUNCTIONS: the function checks that failed above (a note points at
+// the first when the view has no hint); OPENTODOS: the lab's open TODOs.
+std::string formatViewLines(const ViewOutcome& v, const std::vector<std::string>& failedFunctions,
+                            std::size_t openTodos);
+std::string formatCountLine(const CountOutcome& c);
+std::string formatSummary(int passed, int failed);  // "3 passed, 1 failed"
+
+bool countPassed(const CountOutcome& c);
+
+}  // namespace raylab

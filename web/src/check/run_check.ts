@@ -1,0 +1,112 @@
+// `raylab check` in the page (native: framework/src/cli/cmd_check.cpp): the
+// stage's function checks, then each check view drawn at 160x120 into a
+// float target and compared with the shipped reference picture. The core
+// judges every result with native's tables, thresholds, weights and hints
+// and words the report as native does; the page only draws.
+import { frameOfView, sceneOfView } from '../app/frame.js';
+import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';
+import { ensureProjectFiles, labForCore, loadCore, projectFiles } from '../core/core.js';
+import { loadStage, type LoadedStage } from '../tracks/track_registry.js';
+import { CheckTarget } from './check_target.js';
+import { runFunctionChecks } from './function_checks.js';
+import { referencePicture } from './reference_pictures.js';
+
+export const CHECK_WIDTH = 160, CHECK_HEIGHT = 120;
+
+export interface ViewVerdict {
+  name: string;
+  passed: boolean;
+  description: string;
+  hint: string;
+  mine: Uint8Array;      // RGBA, top-down, CHECK_WIDTH x CHECK_HEIGHT
+  expected: Uint8Array;
+  heatMap: Uint8Array;   // native's, black = equal
+}
+
+export interface CheckRun {
+  report: string;        // as `raylab check` prints it
+  passed: number;
+  failed: number;
+  failedChecks: string[];  // the names of the failing checks, for the tests
+  views: ViewVerdict[];
+}
+
+// Where the code comes from, in the words of the report's first line
+// (native: "lab labs/", "solution").
+export function sourceLabel(sources: Sources): string {
+  if (sources.kind === 'solution') return 'solution';
+  if (sources.kind === 'lab') return 'lab labs/';
+  return `lab ${sources.shown.replace(/\/[^/]*$/, '')}/`;
+}
+
+// "WebGL 2 (ANGLE (...llvmpipe...))": what drew the pictures.
+export function backendName(gl: WebGL2RenderingContext): string {
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  return `WebGL 2 (${gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)})`;
+}
+
+// Why a count check does not run in the page.
+const COUNT_NOT_RUN: Record<string, string> = {
+  fin_count: 'WebGL 2 has no geometry shader whose output the page could count; run `raylab check` natively for it',
+};
+
+// LABEL: where the code comes from, as the report's first line names it.
+export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources,
+  label: string, backend: string): Promise<CheckRun> {
+  const core = await loadCore();
+  await ensureProjectFiles(core, projectFiles(catalog));
+  // One renderer per scene the views use, as natively; the first one built
+  // lists the lab's open TODOs (a compile error stops the check there).
+  const renderers = new Map<string, LoadedStage>();
+  const rendererFor = async (scene: string) => {
+    let r = renderers.get(scene);
+    if (!r) {
+      r = await loadStage(gl, catalog, stage, sources, scene, undefined, undefined, false, true);
+      renderers.set(scene, r);
+    }
+    return r;
+  };
+  try {
+    const first = await rendererFor(sceneOfView(stage, stage.check_views[0]));
+    const header = `raylab check: stage ${stage.id}, ${label} against the reference pictures ` +
+      `(tests/reference/${stage.id}), ${CHECK_WIDTH}x${CHECK_HEIGHT}, ${backend}`;
+    const session = new core.CheckSession(stage.id, header, JSON.stringify(first.renderer.todos));
+    try {
+      if (session.error()) throw new Error(session.error());
+      const failedChecks: string[] = [];
+      const lab = labForCore(core, stage.id, sources);
+      await runFunctionChecks(gl, core, session, stage.id, lab);
+      const views: ViewVerdict[] = [];
+      const target = new CheckTarget(gl, CHECK_WIDTH, CHECK_HEIGHT, true);
+      try {
+        for (const view of stage.check_views) {
+          const loaded = await rendererFor(sceneOfView(stage, view));
+          const frame = frameOfView(loaded.camera, loaded.fovYDeg, view, stage);
+          target.bind();
+          loaded.renderer.render(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT);
+          target.unbind();
+          const read = core.viewImage(target.readFloats(), target.readMarks(), CHECK_WIDTH, CHECK_HEIGHT);
+          if (read.error) throw new Error(read.error);
+          const expected = await referencePicture(stage.id, view.name);
+          const verdict = JSON.parse(session.addView(view.name, read.rgba, expected.rgba, expected.width, expected.height,
+            read.nonFinite, read.todoPixels)) as { passed: boolean; description: string; hint: string; error?: string };
+          if (verdict.error) throw new Error(verdict.error);
+          views.push({
+            name: view.name, passed: verdict.passed, description: verdict.description, hint: verdict.hint,
+            mine: read.rgba, expected: expected.rgba, heatMap: core.heatMap(read.rgba, expected.rgba, CHECK_WIDTH, CHECK_HEIGHT),
+          });
+        }
+      } finally {
+        target.dispose();
+      }
+      for (const name of stage.count_checks ?? []) session.addCountNotRun(name, COUNT_NOT_RUN[name] ?? 'not available in the page');
+      const report = session.report();
+      for (const m of report.matchAll(/^ {2}FAIL (\S+)/gm)) failedChecks.push(m[1]!);
+      return { report, passed: session.passed(), failed: session.failed(), failedChecks, views };
+    } finally {
+      session.delete();
+    }
+  } finally {
+    for (const r of renderers.values()) r.renderer.dispose();
+  }
+}

@@ -1,0 +1,91 @@
+// `raylab check` in the page against native's verdicts (issue: the browser as
+// a student's whole workstation). For each stage of both tracks:
+//  - the solution passes every check the page runs;
+//  - the lab as handed out fails;
+//  - each catalogued mistake (tests/mistakes/<stage>/*.json: text
+//    replacements in a solved lab, "caught_by" the exact set of checks native
+//    `raylab check` fails, which tests/e2e/stage_checks_test.cpp holds it to)
+//    fails exactly the same checks in the page, but for what WebGL 2 cannot
+//    run, listed as native only: the count checks (fin_count: no geometry
+//    shader whose output could be counted) and mistakes in a geometry shader
+//    (fin.geom, strand.geom: the page draws fins and strands instanced, from
+//    the student's functions but not from their geometry shader), which the
+//    page must then pass.
+// Default: the first two mistakes of each stage, for trying a change;
+// --all: every mistake (ctest web_parity, labels web and web-parity).
+// Usage: node tests/browser/check_parity.mjs [--all] [--stages 01,f3] [--labgen PATH]
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
+const all = args.includes('--all');
+const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
+const onlyStages = option('--stages', '').split(',').filter(Boolean);
+const NATIVE_ONLY = new Set(['fin_count']);
+
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+const sorted = (xs) => [...xs].sort();
+const same = (a, b) => JSON.stringify(sorted(a)) === JSON.stringify(sorted(b));
+
+const solved = mkdtempSync(join(tmpdir(), 'raylab-solved-'));
+execFileSync(labgen, ['--solved', solved], { stdio: 'pipe' });
+const server = await startServer();
+let browser;
+const started = Date.now();
+let mistakesChecked = 0;
+const nativeOnly = [];
+try {
+  browser = await launchBrowser();
+  const { page, problems } = await openPage(browser, server.url);
+  const stages = (await page.evaluate(() => window.raylab.catalog)).stages.map((s) => s.info)
+    .filter((s) => !onlyStages.length || onlyStages.some((id) => s.id === id || s.id.startsWith(`${id}-`)));
+  const runCheck = (req) => page.evaluate((r) => window.raylab.check(r), req);
+  for (const stage of stages) {
+    const solution = await runCheck({ stage: stage.id, source: 'solution' });
+    check(solution.ok && solution.failed === 0, `${stage.id}: the solution passes${solution.ok ? ` (${solution.passed} checks)` : `: ${solution.error}`}` +
+      (solution.ok && solution.failed ? `\n${solution.report}` : ''));
+    const lab = await runCheck({ stage: stage.id, source: 'lab' });
+    check(lab.ok && lab.failed > 0, `${stage.id}: the lab as handed out fails (${lab.ok ? `${lab.failed} checks` : lab.error})`);
+    const dir = join(projectRoot, 'tests/mistakes', stage.id);
+    const files = readdirSync(dir).filter((n) => n.endsWith('.json')).sort();
+    const solvedFiles = Object.fromEntries(readdirSync(join(solved, stage.id))
+      .filter((n) => /\.(glsl|vert|frag|geom)$/.test(n))
+      .map((n) => [n, readFileSync(join(solved, stage.id, n), 'utf8')]));
+    for (const file of all ? files : files.slice(0, 2)) {
+      const m = JSON.parse(readFileSync(join(dir, file), 'utf8'));
+      const labFiles = { ...solvedFiles };
+      for (const [from, to] of m.replace) {
+        if (!labFiles[m.file].includes(from)) throw new Error(`${file}: '${from}' is not in ${stage.id}/${m.file}`);
+        labFiles[m.file] = labFiles[m.file].replace(from, to);
+      }
+      const r = await runCheck({ stage: stage.id, labFiles });
+      const inGeometryShader = m.file.endsWith('.geom');
+      const expected = inGeometryShader ? [] : m.caught_by.filter((c) => !NATIVE_ONLY.has(c));
+      const missed = m.caught_by.filter((c) => !expected.includes(c));
+      if (missed.length) {
+        nativeOnly.push(`${stage.id}/${file}: ${missed.join(', ')}` + (inGeometryShader ? ` (a mistake in ${m.file})` : '') +
+          (expected.length ? '' : '; the page passes it'));
+      }
+      check(r.ok && same(r.failedChecks, expected),
+        `${stage.id}/${file}: the page fails ${r.ok ? `[${sorted(r.failedChecks).join(', ')}]` : r.error}, native [${sorted(m.caught_by).join(', ')}]` +
+        (r.ok && !same(r.failedChecks, expected) ? `\n${r.report}` : ''));
+      ++mistakesChecked;
+    }
+  }
+  check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+} finally {
+  await browser?.close();
+  server.stop();
+  rmSync(solved, { recursive: true, force: true });
+}
+console.log(`\n${mistakesChecked} mistakes checked in ${((Date.now() - started) / 1000).toFixed(0)} s`);
+if (nativeOnly.length) console.log(`caught natively only (WebGL 2 has no geometry shader):\n  ${nativeOnly.join('\n  ')}`);
+if (failures.length) {
+  console.log(`\n${failures.length} parity check(s) failed`);
+  process.exit(1);
+}

@@ -3,22 +3,30 @@
 // web's shader folders, the variant folders, the labs shipped in labs/ and the
 // scene files. The page never asks the server for a file that is not listed,
 // so a missing file is an error message of ours, not a 404 in the console.
-// Run by `npm run build`.
+// Run by `npm run build`; `raylab web-bundle` runs it on its bundle:
+//   node tools/write_catalog.mjs [--root DIR] [--stages 01-raycast,...] [--no-solutions]
+// (--root: a tree laid out like the project's; --stages: only those stages in
+// the page's menu; --no-solutions: the page offers the labs only.)
 import { readdirSync, readFileSync, statSync, writeFileSync, mkdirSync, renameSync } from 'node:fs';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const args = process.argv.slice(2);
+const option = (name) => (args.includes(name) ? args[args.indexOf(name) + 1] : undefined);
+const root = option('--root') ?? join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const only = option('--stages')?.split(',');
+const solutions = !args.includes('--no-solutions');
 const isDir = (p) => { try { return statSync(p).isDirectory(); } catch { return false; } };
 const filesIn = (dir) => (isDir(dir) ? readdirSync(dir).filter((n) => !isDir(join(dir, n))).sort() : []);
 const shaderFiles = (dir) => filesIn(dir).filter((n) => /\.(glsl|vert|frag|geom)$/.test(n));
 
 const stages = readdirSync(join(root, 'solution'))
   .filter((id) => isDir(join(root, 'solution', id)) && filesIn(join(root, 'solution', id)).includes('stage.json'))
+  .filter((id) => !only || only.includes(id))
   .sort()
   .map((id) => ({
     info: JSON.parse(readFileSync(join(root, 'solution', id, 'stage.json'), 'utf8')),
-    solutionFiles: shaderFiles(join(root, 'solution', id)),
+    solutionFiles: solutions ? shaderFiles(join(root, 'solution', id)) : [],
     labFiles: shaderFiles(join(root, 'labs', id)),
   }));
 
@@ -31,7 +39,7 @@ for (const variant of readdirSync(variantRoot).filter((n) => isDir(join(variantR
 const catalog = {
   // The solutions are listed (tools/serve.mjs without --with-solutions
   // serves this file with false here and no solution files).
-  solutions: true,
+  solutions,
   stages,
   framework: shaderFiles(join(root, 'framework/shaders')),
   web: shaderFiles(join(root, 'web/shaders')),

@@ -10,6 +10,7 @@
 #include "course_file.h"
 #include "error.h"
 #include "handout.h"
+#include "handout_folder.h"
 #include "paths.h"
 #include "stage_list.h"
 #include "stage_sources.h"
@@ -22,34 +23,6 @@ namespace raylab {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool isShaderFile(const fs::path& p) {
-    const std::string e = p.extension().string();
-    return e == ".glsl" || e == ".frag" || e == ".vert" || e == ".geom";
-}
-
-std::string readme(const std::vector<HandoutStage>& plan) {
-    std::string text = "# Your labs\n\nThe stages released so far, one folder each, with its guide "
-                       "(README.md):\n\n";
-    bool reads = false;
-    for (const HandoutStage& h : plan) {
-        text += "- [" + h.stage->id + "](" + h.stage->id + "/README.md): " + h.stage->title + "\n";
-        reads = reads || !h.fromStudent.empty();
-    }
-    const std::string first = plan.front().stage->number();
-    text += "\nWork in the TODO blocks of each stage's files. From the RayLab folder:\n\n"
-            "    build/raylab run --stage " +
-            first + " --lab THIS_FOLDER\n    build/raylab check --stage " + first +
-            " --lab THIS_FOLDER\n\n";
-    if (reads)
-        text += "A stage folder holds only the files that stage adds. The files of the stages it "
-                "builds on are read from your own folders of those stages, here beside it, so "
-                "keep every stage folder you have been given in one folder: what you fix in an "
-                "earlier stage shows in the later ones too. Each guide says which files come "
-                "from where.\n\n";
-    text += "Later stages arrive as new folders; copy them in beside these.\n";
-    return text;
-}
 
 // --out as given, without a trailing separator ("week3/" is the folder week3).
 fs::path outFolder(const std::string& outDir) {
@@ -70,12 +43,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     const fs::path out = outFolder(outDir);
     if (out.empty() || out == "." || out == "..")
         throw Error("--out " + outDir + ": give a new folder's name");
+    checkHandoutSources(plan, labs);
     std::error_code ec;
-    for (const HandoutStage& h : plan)
-        for (const std::string& name : h.files())
-            if (!fs::is_regular_file(labs / h.stage->id / name, ec))
-                throw Error("lab file " + (labs / h.stage->id / name).string() +
-                            " does not exist (regenerate labs/ with raylab-labgen)");
     if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
         throw Error("--out " + outDir + ": exists and is not an empty folder (nothing written)");
     const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
@@ -87,24 +56,7 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     const fs::path temp =
         parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
     try {
-        fs::create_directories(temp);
-        for (const HandoutStage& h : plan) {
-            const fs::path from = labs / h.stage->id, to = temp / h.stage->id;
-            fs::create_directories(to);
-            // The guide and its pictures; the shader files the plan names.
-            for (const fs::directory_entry& e : fs::directory_iterator(from)) {
-                const std::string name = e.path().filename().string();
-                if (!e.is_regular_file() || isShaderFile(e.path()) || name == "README.md") continue;
-                fs::copy_file(e.path(), to / name);
-            }
-            for (const std::string& name : h.files()) fs::copy_file(from / name, to / name);
-            if (fs::is_regular_file(from / "README.md", ec))
-                writeTextFileAtomic(
-                    to / "README.md",
-                    withGradingSection(handoutGuide(readTextFile(from / "README.md"), h, labFolder),
-                                       *h.stage, course.gradingOf(*h.stage)));
-        }
-        writeTextFileAtomic(temp / "README.md", readme(plan));
+        writeHandoutFolder(plan, labs, temp, labFolder, course);
         if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above
         fs::rename(temp, out);
     } catch (const fs::filesystem_error& e) {

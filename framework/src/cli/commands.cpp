@@ -22,6 +22,7 @@ Command checkCommand();
 Command shaderCommand();
 Command compareCommand();
 Command handoutCommand();
+Command webBundleCommand();
 Command prairieLearnCommand();
 Command gradescopeCommand();
 Command autograderCommand();
@@ -32,7 +33,7 @@ const std::vector<Command>& commandTable() {
         stagesCommand(),     runCommand(),     renderCommand(),       raysCommand(),
         traceCommand(),      gradeCommand(),   gradeItemCommand(),    gradeReferenceCommand(),
         demoCommand(),       benchCommand(),   checkCommand(),        shaderCommand(),
-        compareCommand(),    handoutCommand(), prairieLearnCommand(), gradescopeCommand(),
+        compareCommand(),    handoutCommand(), webBundleCommand(), prairieLearnCommand(), gradescopeCommand(),
         autograderCommand(), mutantsCommand()};
     return table;
 }

@@ -59,7 +59,9 @@ export class Page {
       o.title = info.title;
       stageSel.add(o);
     }
-    stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ?? '';
+    // The demo's stage where there is one; a bundle of early stages opens on its first.
+    stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ??
+      this.catalog.stages[0]?.info.id ?? '';
     stageSel.onchange = () => { this.demo = false; this.fillScenes(); void this.load(); };
     if (!this.catalog.solutions) {
       // Labs only: no solution to draw, and the demos draw the solution.

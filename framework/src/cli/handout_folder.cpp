@@ -1,0 +1,76 @@
+#include "handout_folder.h"
+
+#include "atomic_file.h"
+#include "error.h"
+#include "paths.h"
+#include "stage_grading.h"
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool isShaderFile(const fs::path& p) {
+    const std::string e = p.extension().string();
+    return e == ".glsl" || e == ".frag" || e == ".vert" || e == ".geom";
+}
+
+std::string readme(const std::vector<HandoutStage>& plan) {
+    std::string text = "# Your labs\n\nThe stages released so far, one folder each, with its guide "
+                       "(README.md):\n\n";
+    bool reads = false;
+    for (const HandoutStage& h : plan) {
+        text += "- [" + h.stage->id + "](" + h.stage->id + "/README.md): " + h.stage->title + "\n";
+        reads = reads || !h.fromStudent.empty();
+    }
+    const std::string first = plan.front().stage->number();
+    text += "\nWork in the TODO blocks of each stage's files. From the RayLab folder:\n\n"
+            "    build/raylab run --stage " +
+            first + " --lab THIS_FOLDER\n    build/raylab check --stage " + first +
+            " --lab THIS_FOLDER\n\n";
+    if (reads)
+        text += "A stage folder holds only the files that stage adds. The files of the stages it "
+                "builds on are read from your own folders of those stages, here beside it, so "
+                "keep every stage folder you have been given in one folder: what you fix in an "
+                "earlier stage shows in the later ones too. Each guide says which files come "
+                "from where.\n\n";
+    text += "Later stages arrive as new folders; copy them in beside these.\n";
+    return text;
+}
+
+}  // namespace
+
+void checkHandoutSources(const std::vector<HandoutStage>& plan, const fs::path& labs) {
+    std::error_code ec;
+    for (const HandoutStage& h : plan)
+        for (const std::string& name : h.files())
+            if (!fs::is_regular_file(labs / h.stage->id / name, ec))
+                throw Error("lab file " + (labs / h.stage->id / name).string() +
+                            " does not exist (regenerate labs/ with raylab-labgen)");
+}
+
+void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& labs,
+                        const fs::path& to, const std::string& labFolder,
+                        const CourseSettings& course) {
+    std::error_code ec;
+    for (const HandoutStage& h : plan) {
+        const fs::path from = labs / h.stage->id, stageTo = to / h.stage->id;
+        fs::create_directories(stageTo);
+        // The guide and its pictures; the shader files the plan names.
+        for (const fs::directory_entry& e : fs::directory_iterator(from)) {
+            const std::string name = e.path().filename().string();
+            if (!e.is_regular_file() || isShaderFile(e.path()) || name == "README.md") continue;
+            fs::copy_file(e.path(), stageTo / name);
+        }
+        for (const std::string& name : h.files()) fs::copy_file(from / name, stageTo / name);
+        if (fs::is_regular_file(from / "README.md", ec))
+            writeTextFileAtomic(
+                stageTo / "README.md",
+                withGradingSection(handoutGuide(readTextFile(from / "README.md"), h, labFolder),
+                                   *h.stage, course.gradingOf(*h.stage)));
+    }
+    writeTextFileAtomic(to / "README.md", readme(plan));
+}
+
+}  // namespace raylab

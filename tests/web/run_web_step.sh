@@ -3,7 +3,7 @@
 # root: build (tsc, the catalog, the core in WebAssembly), unit (node's test
 # runner), browser (the pages in Debian's Chromium against the native renders,
 # then the page driven through its own controls, then a students' bundle
-# served statically), parity (the page's Check
+# served statically, then a submission downloaded from the page and graded), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake; ctest
 # labels web and web-parity).
 #   run_web_step.sh build|unit|browser|parity RAYLAB_EXE OUT_DIR LABGEN_EXE
@@ -22,7 +22,8 @@ case "$step" in
       { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs
-    node web/tests/browser/bundle.mjs --raylab "$raylab" ;;
+    node web/tests/browser/bundle.mjs --raylab "$raylab"
+    node web/tests/browser/submission.mjs --raylab "$raylab" --labgen "$labgen" ;;
   parity) node web/tests/browser/check_parity.mjs --all --labgen "$labgen" ;;
   *) echo "run_web_step.sh: unknown step '$step'" >&2; exit 2 ;;
 esac

@@ -8,6 +8,7 @@
 //  - Elsewhere (Firefox, Safari) <input type="file" webkitdirectory> reads a
 //    snapshot; picking the folder again reloads it.
 import type { Sources } from '../course/catalog.js';
+import type { ZipEntry } from './submission_zip.js';
 
 const SHADER = /\.(glsl|vert|frag|geom)$/;
 
@@ -49,6 +50,29 @@ export async function labFromFiles(files: FileList | File[], stageId: string, st
     }
   if (texts.size === 0) throw noShaders(root, stageId);
   return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: texts };
+}
+
+// What a submission holds (submission_zip.ts): each stage folder of a
+// labs/ folder, or one stage's folder (ROOT: a stage's name, else CURRENT),
+// its own shader files under <stage>/. FILES: [path below the picked
+// folder's parent, file].
+async function submissionEntries(files: [string, File][], current: string, stageIds: string[]): Promise<ZipEntry[]> {
+  if (files.length === 0) throw new Error('the folder is empty');
+  const root = files[0]![0].split('/')[0]!;
+  const nested = files.some(([p]) => p.split('/').length === 3 && stageIds.includes(p.split('/')[1]!));
+  const entries: ZipEntry[] = [];
+  for (const [path, file] of files) {
+    const parts = path.split('/');
+    if (!SHADER.test(path)) continue;
+    if (nested && parts.length === 3 && stageIds.includes(parts[1]!)) entries.push({ path: `${parts[1]}/${parts[2]}`, data: new Uint8Array(await file.arrayBuffer()) });
+    else if (!nested && parts.length === 2) entries.push({ path: `${stageIds.includes(root) ? root : current}/${parts[1]}`, data: new Uint8Array(await file.arrayBuffer()) });
+  }
+  if (entries.length === 0) throw new Error(`${root}/ has no shader files to submit`);
+  return entries.sort((a, b) => (a.path < b.path ? -1 : 1));
+}
+
+export function submissionFromFiles(files: FileList | File[], current: string, stageIds: string[]): Promise<ZipEntry[]> {
+  return submissionEntries(Array.from(files).map((f) => [f.webkitRelativePath || f.name, f]), current, stageIds);
 }
 
 // The File System Access API's folder picker (not yet in TypeScript's DOM types).
@@ -101,6 +125,19 @@ export class WatchedLab {
         }
     files.sort(([a], [b]) => (a < b ? -1 : 1));
     return { shown, files };
+  }
+
+  // The folder's files for a submission (submissionEntries).
+  async submission(current: string): Promise<ZipEntry[]> {
+    const files: [string, File][] = [];
+    const walk = async (dir: FileSystemDirectoryHandle, prefix: string, depth: number) => {
+      for await (const [name, handle] of (dir as unknown as AsyncIterable<[string, FileSystemHandle]>)) {
+        if (handle.kind === 'file') files.push([`${prefix}/${name}`, await (handle as FileSystemFileHandle).getFile()]);
+        else if (depth === 0) await walk(handle as FileSystemDirectoryHandle, `${prefix}/${name}`, 1);
+      }
+    };
+    await walk(this.root, this.root.name, 0);
+    return submissionEntries(files, current, this.stageIds);
   }
 
   async read(stageId: string, earlier: string[] = []): Promise<Sources> {

@@ -5,7 +5,8 @@
 import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
-import { canWatchFolders, labFromFiles, WatchedLab } from './lab_folder.js';
+import { canWatchFolders, labFromFiles, submissionFromFiles, WatchedLab } from './lab_folder.js';
+import { downloadZip } from './submission_zip.js';
 import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
 import { defaultSettings, type RenderSettings } from '../raytrace/render_settings.js';
 import { applySettingsKey, settingsRows } from './settings_keys.js';
@@ -112,6 +113,7 @@ export class Page {
     $('demo-fur').onclick = () => this.startDemo('fur/sphere.json', 'fur');
     $('shot').onclick = () => this.screenshot();
     $('check').onclick = () => void this.check();
+    $('submit').onclick = () => void this.downloadSubmission();
     this.bindInput();
     this.fillScenes();
     this.resize();
@@ -339,6 +341,29 @@ export class Page {
   // load's first frame was drawn.
   firstFrame(): Promise<number> {
     return new Promise((resolve) => this.firstFrameWaiters.push(resolve));
+  }
+
+  // The student's lab folder as the zip the graders take (submission_zip.ts).
+  private async downloadSubmission(): Promise<void> {
+    try {
+      const current = this.stage().id;
+      const entries = this.watched ? await this.watched.submission(current)
+        : this.picked ? await submissionFromFiles(this.picked, current, this.stageIds())
+          : null;
+      if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…): the submission is made from it');
+      this.showMessage(downloadZip(entries));
+    } catch (e) {
+      this.showError((e as Error).message, true);
+    }
+  }
+
+  // Watches LAB as if picked (the tests: a folder in the browser's private file system).
+  watchForTest(lab: WatchedLab): void {
+    this.watched = lab;
+    this.picked = null;
+    this.sourceShown = 'disk';
+    $<HTMLSelectElement>('source').value = 'disk';
+    void this.load();
   }
 
   // `raylab check` for what is on screen; the picture pauses meanwhile.

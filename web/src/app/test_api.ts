@@ -100,6 +100,22 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
         wrongStage,
       };
     },
+    // FILES (path below labs/ -> text) written to labs/ in the browser's
+    // private file system, which the page then watches as if picked.
+    async openFolder(req: { files: Record<string, string> }) {
+      const root = await navigator.storage.getDirectory();
+      await root.removeEntry('labs', { recursive: true }).catch(() => undefined);
+      const labs = await root.getDirectoryHandle('labs', { create: true });
+      for (const [path, text] of Object.entries(req.files)) {
+        const parts = path.split('/');
+        let dir = labs;
+        for (const p of parts.slice(0, -1)) dir = await dir.getDirectoryHandle(p, { create: true });
+        const w = await (await dir.getFileHandle(parts[parts.length - 1]!, { create: true })).createWritable();
+        await w.write(text);
+        await w.close();
+      }
+      page.watchForTest(new WatchedLab(labs, catalog.stages.map((x) => x.info.id)));
+    },
     // `raylab check` in the page for a stage's solution, its lab as handed
     // out, or lab files "opened from disk" (LABFILES: name -> text).
     async check(req: { stage: string; source?: 'solution' | 'lab'; labFiles?: Record<string, string> }) {

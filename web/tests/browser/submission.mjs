@@ -1,0 +1,88 @@
+// "Download for submission" (issue: the browser as a student's whole
+// workstation). Part of the `web_browser` test: a lab folder opened in the
+// page (the browser's private file system, watched as a picked folder would
+// be), the button pressed, the zip caught from the browser's downloads and
+// graded natively as the course engines grade uploads: PrairieLearn keeps the
+// zip as a file (`raylab prairielearn`), Gradescope unpacks it
+// (`raylab gradescope`). Stage 01 solved scores full marks on both, the lab
+// as handed out zero.
+// Usage: node tests/browser/submission.mjs [--raylab PATH] [--labgen PATH]
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
+const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
+const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
+const STAGE = '01-raycast';
+
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+const shaderFiles = (dir) => Object.fromEntries(readdirSync(dir).filter((n) => /\.(glsl|vert|frag|geom)$/.test(n))
+  .map((n) => [`${STAGE}/${n}`, readFileSync(join(dir, n), 'utf8')]));
+
+function gradePrairieLearn(zip, root) {
+  mkdirSync(join(root, 'student'), { recursive: true });
+  writeFileSync(join(root, 'student', 'raylab-submission.zip'), zip);
+  const r = spawnSync(raylab, ['prairielearn', '--stages', '01', '--root', root], { encoding: 'utf8' });
+  if (r.status !== 0) throw new Error(`raylab prairielearn: ${r.stderr}`);
+  return JSON.parse(readFileSync(join(root, 'results', 'results.json'), 'utf8'));
+}
+
+function gradeGradescope(zip, root) {
+  mkdirSync(join(root, 'submission'), { recursive: true });
+  mkdirSync(join(root, 'source'), { recursive: true });
+  writeFileSync(join(root, 'upload.zip'), zip);
+  execFileSync('unzip', ['-q', join(root, 'upload.zip'), '-d', join(root, 'submission')]);  // as Gradescope does
+  // The settings `raylab autograder` writes into its bundle (the stages, the seed).
+  writeFileSync(join(root, 'source', 'raylab-autograder.json'), JSON.stringify({ stages: [STAGE], seed: 1234 }));
+  const r = spawnSync(raylab, ['gradescope', '--root', root], { encoding: 'utf8' });
+  if (r.status !== 0) throw new Error(`raylab gradescope: ${r.stderr}`);
+  return JSON.parse(readFileSync(join(root, 'results', 'results.json'), 'utf8'));
+}
+
+const work = mkdtempSync(join(tmpdir(), 'raylab-submit-'));
+const server = await startServer();
+let browser;
+try {
+  execFileSync(labgen, ['--solved', join(work, 'solved')], { stdio: 'pipe' });
+  browser = await launchBrowser();
+  const { page, problems } = await openPage(browser, server.url, '');
+  const downloads = join(work, 'downloads');
+  mkdirSync(downloads);
+  const cdp = await page.target().createCDPSession();
+  await cdp.send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  await page.evaluate((id) => window.raylab.switchTo({ stage: id }), STAGE);
+  for (const [name, dir, full] of [['solved', join(work, 'solved', STAGE), true], ['as handed out', join(projectRoot, 'labs', STAGE), false]]) {
+    await page.evaluate((files) => window.raylab.openFolder({ files }), shaderFiles(dir));
+    await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 120_000 });
+    for (const f of readdirSync(downloads)) rmSync(join(downloads, f));
+    await page.click('#submit');
+    const zipPath = join(downloads, 'raylab-submission.zip');
+    for (let i = 0; i < 100 && !existsSync(zipPath); ++i) await new Promise((r) => setTimeout(r, 100));
+    check(existsSync(zipPath), `${name}: the page downloads raylab-submission.zip`);
+    if (!existsSync(zipPath)) continue;
+    const zip = readFileSync(zipPath);
+    const listed = execFileSync('unzip', ['-Z1', zipPath], { encoding: 'utf8' }).trim().split('\n');
+    check(listed.every((p) => p.startsWith(`${STAGE}/`)) && listed.length === Object.keys(shaderFiles(dir)).length,
+      `${name}: the zip holds the stage folder's ${listed.length} shader files (${listed.join(', ')})`);
+    const pl = gradePrairieLearn(zip, join(work, `pl-${full}`));
+    check(pl.gradable && pl.score === (full ? 1 : 0), `${name}: raylab prairielearn scores it ${pl.score} (${pl.message})`);
+    const gs = gradeGradescope(zip, join(work, `gs-${full}`));
+    const points = gs.score ?? gs.tests?.reduce((a, t) => a + t.score, 0);
+    const max = gs.tests?.reduce((a, t) => a + (t.max_score ?? 0), 0);
+    check(full ? points > 0 && Math.abs(points - max) < 1e-6 : points === 0, `${name}: raylab gradescope scores it ${points} of ${max}`);
+  }
+  check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+} finally {
+  await browser?.close();
+  server.stop();
+  rmSync(work, { recursive: true, force: true });
+}
+if (failures.length) {
+  console.log(`\n${failures.length} submission check(s) failed`);
+  process.exit(1);
+}

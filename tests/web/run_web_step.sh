@@ -5,7 +5,8 @@
 # then the page driven through its own controls, then a students' bundle
 # served statically, then a submission downloaded from the page and graded), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake; ctest
-# labels web and web-parity).
+# labels web and web-parity). RAYLAB_BROWSER=firefox: in Firefox ESR instead
+# of Chromium (ctest's web_browser_firefox, web_parity_firefox).
 #   run_web_step.sh build|unit|browser|parity RAYLAB_EXE OUT_DIR LABGEN_EXE
 set -euo pipefail
 step=$1 raylab=$2 out=$3 labgen=${4:-}
@@ -17,9 +18,18 @@ fi
 case "$step" in
   build) npm --prefix web run --silent build ;;
   unit) node --test web/tests/unit/ ;;
+  browser|parity)
+    if [ "${RAYLAB_BROWSER:-}" = firefox ]; then
+      [ -x /usr/bin/firefox-esr ] || [ -n "${RAYLAB_FIREFOX:-}" ] ||
+        { echo "web tests: /usr/bin/firefox-esr is missing: run 'bash install.sh'" >&2; exit 1; }
+    else
+      [ -x /usr/bin/chromium ] || [ -n "${RAYLAB_CHROMIUM:-}" ] ||
+        { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
+    fi ;;
+esac
+case "$step" in
+  build|unit) ;;
   browser)
-    [ -x /usr/bin/chromium ] || [ -n "${RAYLAB_CHROMIUM:-}" ] ||
-      { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs
     node web/tests/browser/bundle.mjs --raylab "$raylab"

@@ -115,6 +115,9 @@ export class Page {
     $('check').onclick = () => void this.check();
     $('submit').onclick = () => void this.downloadSubmission();
     this.bindInput();
+    // The picture's height limit follows the header's (page.css): its buttons wrap on narrow windows.
+    const header = document.querySelector('header')!;
+    new ResizeObserver(() => document.documentElement.style.setProperty('--header-height', `${header.offsetHeight}px`)).observe(header);
     this.fillScenes();
     this.resize();
     void this.load();

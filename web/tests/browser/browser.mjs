@@ -26,9 +26,32 @@ export function startServer({ withSolutions = true } = {}) {
   });
 }
 
-// ANGLE selects the back end: gl-egl (Mesa llvmpipe, about 8x faster here) or
-// swiftshader. RAYLAB_CHROMIUM overrides the browser's path.
-export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl') {
+// The browser the tests drive: RAYLAB_BROWSER=firefox for Debian's Firefox ESR
+// (WebDriver BiDi; WebGL 2 on Mesa llvmpipe through EGL), else Chromium.
+export const browserName = process.env.RAYLAB_BROWSER === 'firefox' ? 'firefox' : 'chromium';
+
+// Chromium: ANGLE selects the back end: gl-egl (Mesa llvmpipe, about 8x
+// faster here) or swiftshader. RAYLAB_CHROMIUM overrides the browser's path.
+// Firefox: headless with WebGL forced on (it blocks software GL otherwise)
+// and EGL (MOZ_WEBGL_FORCE_EGL), so it draws with llvmpipe too;
+// RAYLAB_FIREFOX overrides its path.
+// DOWNLOADS: a folder the page's downloads are saved to, unasked (Firefox:
+// from its start; Chromium: allowDownloads() on the page).
+export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl', { downloads } = {}) {
+  if (browserName === 'firefox') {
+    const saveTo = downloads ? {
+      'browser.download.folderList': 2, 'browser.download.dir': downloads, 'browser.download.useDownloadDir': true,
+      'browser.download.always_ask_before_handling_new_types': false, 'browser.helperApps.neverAsk.saveToDisk': 'application/zip',
+    } : {};
+    return puppeteer.launch({
+      browser: 'firefox',
+      executablePath: process.env.RAYLAB_FIREFOX ?? '/usr/bin/firefox-esr',
+      headless: true,
+      extraPrefsFirefox: { 'webgl.force-enabled': true, ...saveTo },
+      env: { ...process.env, MOZ_WEBGL_FORCE_EGL: '1' },
+      protocolTimeout: 600_000,
+    });
+  }
   const args = [`--use-angle=${angle}`, '--ignore-gpu-blocklist', '--enable-unsafe-swiftshader'];
   if (process.getuid?.() === 0) args.push('--no-sandbox');  // Chromium refuses root with its sandbox
   return puppeteer.launch({
@@ -37,6 +60,13 @@ export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl'
     args,
     protocolTimeout: 600_000,
   });
+}
+
+// Chromium: PAGE's downloads saved to DOWNLOADS unasked (Firefox: launchBrowser's).
+export async function allowDownloads(page, downloads) {
+  if (browserName === 'firefox') return;
+  const cdp = await page.target().createCDPSession();
+  await cdp.send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
 }
 
 // A page of the web build with its console errors and page errors collected.

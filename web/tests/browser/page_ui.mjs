@@ -1,5 +1,6 @@
 // The page as a student drives it (its own controls, not the test API's
-// renderers), in Debian's Chromium; part of the `web_browser` test:
+// renderers), in Debian's Chromium (or Firefox ESR: RAYLAB_BROWSER=firefox);
+// part of the `web_browser` test:
 //  1. switching stage: the old picture stops, is dimmed and labelled with
 //     what it is while the new stage builds; then the overlay names the new
 //     one; the switch's time is printed (web/tests/browser/switch_times.mjs

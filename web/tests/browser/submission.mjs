@@ -11,7 +11,7 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import { launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
+import { allowDownloads, launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
@@ -49,12 +49,11 @@ const server = await startServer();
 let browser;
 try {
   execFileSync(labgen, ['--solved', join(work, 'solved')], { stdio: 'pipe' });
-  browser = await launchBrowser();
-  const { page, problems } = await openPage(browser, server.url, '');
   const downloads = join(work, 'downloads');
   mkdirSync(downloads);
-  const cdp = await page.target().createCDPSession();
-  await cdp.send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  browser = await launchBrowser(undefined, { downloads });
+  const { page, problems } = await openPage(browser, server.url, '');
+  await allowDownloads(page, downloads);
   await page.evaluate((id) => window.raylab.switchTo({ stage: id }), STAGE);
   for (const [name, dir, full] of [['solved', join(work, 'solved', STAGE), true], ['as handed out', join(projectRoot, 'labs', STAGE), false]]) {
     await page.evaluate((files) => window.raylab.openFolder({ files }), shaderFiles(dir));
@@ -62,6 +61,7 @@ try {
     for (const f of readdirSync(downloads)) rmSync(join(downloads, f));
     await page.click('#submit');
     const zipPath = join(downloads, 'raylab-submission.zip');
+    // (Firefox writes NAME.part first, then renames it.)
     for (let i = 0; i < 100 && !existsSync(zipPath); ++i) await new Promise((r) => setTimeout(r, 100));
     check(existsSync(zipPath), `${name}: the page downloads raylab-submission.zip`);
     if (!existsSync(zipPath)) continue;

@@ -34,6 +34,7 @@ packages=(
   clang libclang-rt-14-dev clang-format            # tests: libFuzzer targets (ctest -L fuzz), tools/check-format.sh
   chromium                                         # the web build's tests (ctest -L web): WebGL 2 headless
   firefox-esr                                      # the same tests in a second engine (ctest -L firefox)
+  webkit2gtk-driver                                # the page's Check in WebKitGTK, Safari's engine (ctest -L webkit)
   emscripten                                       # the web page's core: the C++ CPU modules in WebAssembly
   slurm-wlm munge                                  # the cluster test (ctest -L cluster): a one-node Slurm cluster
   zip unzip                                        # `raylab autograder` (Gradescope's zip) and its test

@@ -6,7 +6,8 @@
 # served statically, then a submission downloaded from the page and graded), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake; ctest
 # labels web and web-parity). RAYLAB_BROWSER=firefox: in Firefox ESR instead
-# of Chromium (ctest's web_browser_firefox, web_parity_firefox).
+# of Chromium (ctest's web_browser_firefox, web_parity_firefox); webkit: in
+# WebKitGTK, under an X display (web_parity_webkit).
 #   run_web_step.sh build|unit|browser|parity RAYLAB_EXE OUT_DIR LABGEN_EXE
 set -euo pipefail
 step=$1 raylab=$2 out=$3 labgen=${4:-}
@@ -19,7 +20,10 @@ case "$step" in
   build) npm --prefix web run --silent build ;;
   unit) node --test web/tests/unit/ ;;
   browser|parity)
-    if [ "${RAYLAB_BROWSER:-}" = firefox ]; then
+    if [ "${RAYLAB_BROWSER:-}" = webkit ]; then
+      command -v WebKitWebDriver >/dev/null ||
+        { echo "web tests: WebKitWebDriver is missing: run 'bash install.sh' (webkit2gtk-driver)" >&2; exit 1; }
+    elif [ "${RAYLAB_BROWSER:-}" = firefox ]; then
       [ -x /usr/bin/firefox-esr ] || [ -n "${RAYLAB_FIREFOX:-}" ] ||
         { echo "web tests: /usr/bin/firefox-esr is missing: run 'bash install.sh'" >&2; exit 1; }
     else

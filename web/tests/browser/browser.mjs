@@ -4,6 +4,7 @@
 import { spawn } from 'node:child_process';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { launchWebKit } from './webdriver_browser.mjs';
 import puppeteer from 'puppeteer-core';
 
 export const webDir = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -27,8 +28,9 @@ export function startServer({ withSolutions = true } = {}) {
 }
 
 // The browser the tests drive: RAYLAB_BROWSER=firefox for Debian's Firefox ESR
-// (WebDriver BiDi; WebGL 2 on Mesa llvmpipe through EGL), else Chromium.
-export const browserName = process.env.RAYLAB_BROWSER === 'firefox' ? 'firefox' : 'chromium';
+// (WebDriver BiDi; WebGL 2 on Mesa llvmpipe through EGL), webkit for
+// WebKitGTK (webdriver_browser.mjs: under an X display), else Chromium.
+export const browserName = ['firefox', 'webkit'].includes(process.env.RAYLAB_BROWSER) ? process.env.RAYLAB_BROWSER : 'chromium';
 
 // Chromium: ANGLE selects the back end: gl-egl (Mesa llvmpipe, about 8x
 // faster here) or swiftshader. RAYLAB_CHROMIUM overrides the browser's path.
@@ -38,6 +40,7 @@ export const browserName = process.env.RAYLAB_BROWSER === 'firefox' ? 'firefox' 
 // DOWNLOADS: a folder the page's downloads are saved to, unasked (Firefox:
 // from its start; Chromium: allowDownloads() on the page).
 export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl', { downloads } = {}) {
+  if (browserName === 'webkit') return launchWebKit();
   if (browserName === 'firefox') {
     const saveTo = downloads ? {
       'browser.download.folderList': 2, 'browser.download.dir': downloads, 'browser.download.useDownloadDir': true,

@@ -252,3 +252,20 @@ TEST(PrairieLearn, AZipUploadIsUnpackedAndAHostileOneRefused) {
     EXPECT_NE(question.find("optional-file-patterns=\""), std::string::npos);
     EXPECT_EQ(question.find(" file-patterns="), std::string::npos);
 }
+
+// `raylab function-tables --check`: web/function_tables.json (the page's
+// expected values) is current; a copy with one value changed is not.
+TEST(FunctionTablesCommand, ChecksTheShippedFile) {
+    const fs::path shipped = sourceDir() / "web/function_tables.json";
+    CommandResult r = runRaylab("function-tables --check " + quote(shipped));
+    EXPECT_EQ(r.exitCode, 0) << r.all();
+    ScratchDir dir;
+    std::string text = readFile(shipped);
+    const auto at = text.find("\"want\":[");
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + std::string("\"want\":[").size(), "0.5,");  // five numbers
+    writeFile(dir / "tables.json", text);
+    r = runRaylab("function-tables --check " + quote(dir / "tables.json"));
+    EXPECT_NE(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.err.find("tables.json: "), std::string::npos) << r.err;
+}

@@ -2,8 +2,9 @@
 // course hosts for its students (any web server; no raylab server): the
 // page and its WebAssembly core, the released stages' labs exactly as
 // `raylab handout` gives them, the framework's shaders, the scenes and their
-// pictures, each stage's stage.json (data, no code) and the check views'
-// reference pictures, which the page's Check compares with. No solution code:
+// pictures, each stage's stage.json (data, no code), the check views'
+// reference pictures and the function checks' expected values, which the
+// page's Check compares with. No solution code:
 // not solution/'s files, not the variant files that stand in for a file
 // students write (web/tools/serve.mjs keeps the same ones back). The folder
 // appears whole or not at all.
@@ -102,10 +103,10 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
     try {
         fs::create_directories(temp / "labs");
         writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course);
-        for (const char* file : {"web/index.html", "web/page.css"})
+        for (const char* file : {"web/index.html", "web/page.css", "web/function_tables.json"})
             copyTree(root / file, temp / file);
-        for (const char* dir : {"web/dist", "web/shaders", "assets/scenes", "assets/textures",
-                                "assets/meshes"})
+        for (const char* dir :
+             {"web/dist", "web/shaders", "assets/scenes", "assets/textures", "assets/meshes"})
             copyTree(root / dir, temp / dir);
         copyFrameworkShaders(temp / "framework" / "shaders");
         // Every stage.json (the core reads the course from them; data, no

@@ -23,6 +23,7 @@ Command shaderCommand();
 Command compareCommand();
 Command handoutCommand();
 Command webBundleCommand();
+Command functionTablesCommand();
 Command prairieLearnCommand();
 Command gradescopeCommand();
 Command autograderCommand();
@@ -30,11 +31,11 @@ Command mutantsCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
-        stagesCommand(),     runCommand(),     renderCommand(),       raysCommand(),
-        traceCommand(),      gradeCommand(),   gradeItemCommand(),    gradeReferenceCommand(),
-        demoCommand(),       benchCommand(),   checkCommand(),        shaderCommand(),
-        compareCommand(),    handoutCommand(), webBundleCommand(), prairieLearnCommand(), gradescopeCommand(),
-        autograderCommand(), mutantsCommand()};
+        stagesCommand(),       runCommand(),        renderCommand(),     raysCommand(),
+        traceCommand(),        gradeCommand(),      gradeItemCommand(),  gradeReferenceCommand(),
+        demoCommand(),         benchCommand(),      checkCommand(),      shaderCommand(),
+        compareCommand(),      handoutCommand(),    webBundleCommand(),  functionTablesCommand(),
+        prairieLearnCommand(), gradescopeCommand(), autograderCommand(), mutantsCommand()};
     return table;
 }
 

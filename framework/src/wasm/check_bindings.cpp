@@ -7,8 +7,10 @@
 #include "embind_support.h"
 #include "error.h"
 #include "function_checks.h"
+#include "function_tables.h"
 #include "harness_program.h"
 #include "image_compare.h"
+#include "paths.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 
@@ -26,6 +28,18 @@ using nlohmann::json;
 namespace raylab {
 
 namespace {
+
+// The expected values the checks score against (no reference code here):
+// web/function_tables.json, read once.
+const FunctionTables& tables() {
+    static const FunctionTables t = [] {
+        const auto file = projectRoot() / "web" / "function_tables.json";
+        return parseFunctionTables(readTextFile(file), displayPath(file));
+    }();
+    return t;
+}
+
+std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) { return tables().at(spec.name).wants; }
 
 // A stage's function checks, for the lab in LAB (empty: the solution).
 class FunctionChecks {
@@ -76,7 +90,8 @@ public:
             std::vector<glm::vec4> results;
             for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
                 results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
-            const FunctionOutcome o = scoreFunctionResults(spec(name), results);
+            const FunctionOutcome o =
+                scoreFunctionResults(spec(name), results, wantsOf(spec(name)));
             return json{{"name", o.name},
                         {"passed", o.passed},
                         {"total", o.total},
@@ -238,7 +253,8 @@ private:
         std::vector<glm::vec4> results;
         for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
             results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
-        return record(scoreFunctionResults(functionSpec(name), results));
+        const FunctionSpec& s = functionSpec(name);
+        return record(scoreFunctionResults(s, results, wantsOf(s)));
     }
     std::string judgeInto(const std::string& viewName, const val& mine, const val& expected,
                           int width, int height, double nonFinite, double todoPixels) {

@@ -234,6 +234,8 @@ export function projectFiles(catalog: Catalog): string[] {
   }
   files.push(...catalog.framework.map((n) => `framework/shaders/${n}`));
   files.push(...catalog.web.map((n) => `web/shaders/${n}`));
+  // The function checks' expected values (the core has no reference code).
+  files.push('web/function_tables.json');
   for (const [folder, names] of Object.entries(catalog.variants))
     files.push(...names.map((n) => `framework/shaders/variants/${folder}/${n}`));
   files.push(...catalog.scenes.map((n) => `assets/scenes/${n}`));

@@ -8,7 +8,7 @@
 // as handed out zero.
 // Usage: node tests/browser/submission.mjs [--raylab PATH] [--labgen PATH]
 import { execFileSync, spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { allowDownloads, launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
@@ -61,8 +61,16 @@ try {
     for (const f of readdirSync(downloads)) rmSync(join(downloads, f));
     await page.click('#submit');
     const zipPath = join(downloads, 'raylab-submission.zip');
-    // (Firefox writes NAME.part first, then renames it.)
-    for (let i = 0; i < 100 && !existsSync(zipPath); ++i) await new Promise((r) => setTimeout(r, 100));
+    // Finished: there, no NAME.part beside it (Firefox), and its size the
+    // same twice in a row.
+    let size = -1;
+    for (let i = 0; i < 200; ++i) {
+      await new Promise((r) => setTimeout(r, 100));
+      if (!existsSync(zipPath) || readdirSync(downloads).some((f) => f.endsWith('.part'))) continue;
+      const now = statSync(zipPath).size;
+      if (now > 0 && now === size) break;
+      size = now;
+    }
     check(existsSync(zipPath), `${name}: the page downloads raylab-submission.zip`);
     if (!existsSync(zipPath)) continue;
     const zip = readFileSync(zipPath);

@@ -26,6 +26,7 @@ export function loadCore() {
         preRun: [(m) => { m.ENV.RAYLAB_ROOT = '/raylab'; }],
     }).then((core) => {
         for (const d of ['framework/shaders', 'solution', 'labs', 'assets', 'web/shaders']) copyTree(core, d);
+        core.FS.writeFile('/raylab/web/function_tables.json', readFileSync(path.join(ROOT, 'web/function_tables.json')));
         // The pictures also at their absolute host paths: made-up scenes in
         // temporary folders name them so.
         copyTree(core, 'assets', `${ROOT}/assets`);

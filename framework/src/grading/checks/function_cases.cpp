@@ -52,9 +52,9 @@ FunctionSpec fresnelDielectricSpec() {
     above.label = "ior 1.5, cos a float step above 1 (rounding): clamp 1 - cos before pow()";
     above.in = {dvec4(kCosAboveOne, 1.5, 0, 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
     s.cases.push_back(above);
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::fresnelDielectric(c.in[0].x, c.in[0].y), 0, 0, 1);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (std::isfinite(got.x) && (got.x < 0.0 || got.x > 1.0))
             return c.label + ": F = " + num(got.x) +
@@ -83,9 +83,9 @@ FunctionSpec fresnelConductorSpec() {
         c.in = {dvec4(cosine, 0, 0, 0), dvec4(silverN, 0), dvec4(silverK, 0), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::fresnelConductor(c.in[0].x, xyz(c.in[1]), xyz(c.in[2])), 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareVector(c, got, want, 3, 1e-4);
     };
@@ -127,9 +127,9 @@ FunctionSpec refractGlassSpec() {
         glassCase("out of diamond beyond the critical angle: total internal reflection", 30, false,
                   2.4),
     };
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return reference::refractGlass(xyz(c.in[0]), xyz(c.in[1]), c.in[2].x > 0.5, c.in[2].y);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
         if (!finite(got)) return c.label + ": got NaN or Inf";
         const bool gotTir = xyz(got) == dvec3(0.0), wantTir = xyz(want) == dvec3(0.0);
@@ -198,9 +198,8 @@ FunctionSpec sphereUvSpec() {
         c.in = {dvec4(0, y, 0, 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) {
-        return dvec4(reference::sphereUV(xyz(c.in[0])), 0, 1);
-    };
+    RAYLAB_REFERENCE(
+        s, [](const FunctionCase& c) { return dvec4(reference::sphereUV(xyz(c.in[0])), 0, 1); });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         // At the poles every u is right.
         if (std::fabs(xyz(c.in[0]).y) > 1.0 - 1e-9)
@@ -234,9 +233,9 @@ FunctionSpec planeUvSpec() {
         c.in = {dvec4(r.point, 0), dvec4(r.origin, 0), dvec4(r.n, r.tile), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::planeUV(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]), c.in[2].w), 0, 1);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareVector(c, got, want, 2,
                              1e-4 * std::max(1.0, std::fabs(want.x) + std::fabs(want.y)));

@@ -46,6 +46,20 @@ struct FunctionSpec {
         compare;
 };
 
+// A spec's double-precision reference: `RAYLAB_REFERENCE(s, lambda);`. The
+// page's WebAssembly core is built with RAYLAB_REFERENCES_AS_DATA: without
+// them (nothing of the reference module is linked, so no solution code
+// reaches students in raylab_core.js); it scores against the expected values
+// shipped as data (web/function_tables.json, function_tables.h).
+// RAYLAB_REFERENCE_FUNCTION(f): a reference passed as an argument.
+#ifdef RAYLAB_REFERENCES_AS_DATA
+#define RAYLAB_REFERENCE(spec, ...) ((void)(spec))
+#define RAYLAB_REFERENCE_FUNCTION(...) nullptr
+#else
+#define RAYLAB_REFERENCE(spec, ...) ((spec).reference = __VA_ARGS__)
+#define RAYLAB_REFERENCE_FUNCTION(...) __VA_ARGS__
+#endif
+
 // Every checked function. A stage runs those its stage.json lists under
 // "function_checks" (by name).
 const std::vector<FunctionSpec>& functionSpecs();
@@ -69,8 +83,15 @@ struct FunctionOutcome {
 inline constexpr float kHarnessTodoMarker = -12345.0f;
 
 // Judges RESULTS (one per case of SPEC, as the harness wrote them) against
-// the double-precision reference: native's GL run and the page's WebGL run
-// are scored by this one function.
+// WANTS (the reference's value for each case): native's GL run and the
+// page's WebGL run are scored by this one function.
+FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
+                                     const std::vector<glm::vec4>& results,
+                                     const std::vector<glm::dvec4>& wants);
+// The reference's value for every case of SPEC (native builds only; throws
+// Error in the page's core, which reads them from function_tables.h).
+std::vector<glm::dvec4> referenceWants(const FunctionSpec& spec);
+// Scored against referenceWants(SPEC).
 FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
                                      const std::vector<glm::vec4>& results);
 

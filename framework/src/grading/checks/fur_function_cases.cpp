@@ -44,31 +44,32 @@ struct TwoNumbers {
 // with ARGS as the GLSL arguments (shellLayer takes ints).
 FunctionSpec twoNumberSpec(const char* name, const char* file, const std::string& args,
                            const std::vector<TwoNumbers>& rows,
-                           double (*reference)(double, double)) {
+                           [[maybe_unused]] double (*reference)(double, double)) {
     FunctionSpec s;
     s.name = name;
     s.includes = {file};
     s.call = "vec4(" + std::string(name) + "(" + args + "), 0.0, 0.0, 1.0)";
     for (const TwoNumbers& r : rows) s.cases.push_back(row(r.label, dvec4(r.x, r.y, 0, 0)));
-    s.reference = [reference](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [reference](const FunctionCase& c) {
         return dvec4(reference(c.in[0].x, c.in[0].y), 0, 0, 1);
-    };
+    });
     s.compare = compareScalar;
     return s;
 }
 
 FunctionSpec shellLayerSpec() {
-    return twoNumberSpec(
-        "shellLayer", "shell_layer.glsl", "int(a0.x), int(a0.y)",
-        {{"first of 30 draws: the skin", 0, 30},
-         {"second of 30", 1, 30},
-         {"middle of 30", 15, 30},
-         {"last of 30: the tips", 29, 30},
-         {"last of 2", 1, 2},
-         {"one shell: only the skin", 0, 1},
-         {"third of 4", 2, 4},
-         {"last of 256", 255, 256}},
-        [](double draw, double count) { return fur_reference::shellLayer(int(draw), int(count)); });
+    return twoNumberSpec("shellLayer", "shell_layer.glsl", "int(a0.x), int(a0.y)",
+                         {{"first of 30 draws: the skin", 0, 30},
+                          {"second of 30", 1, 30},
+                          {"middle of 30", 15, 30},
+                          {"last of 30: the tips", 29, 30},
+                          {"last of 2", 1, 2},
+                          {"one shell: only the skin", 0, 1},
+                          {"third of 4", 2, 4},
+                          {"last of 256", 255, 256}},
+                         RAYLAB_REFERENCE_FUNCTION([](double draw, double count) {
+                             return fur_reference::shellLayer(int(draw), int(count));
+                         }));
 }
 
 FunctionSpec shellAlphaSpec() {
@@ -80,7 +81,7 @@ FunctionSpec shellAlphaSpec() {
                           {"a gap half way up", 0.0, 0.5},
                           {"the tips: nothing left", 0.9, 1.0},
                           {"just above the skin", 0.6, 1.0 / 29.0}},
-                         fur_reference::shellAlpha);
+                         RAYLAB_REFERENCE_FUNCTION(fur_reference::shellAlpha));
 }
 
 FunctionSpec shellShadowSpec() {
@@ -91,7 +92,7 @@ FunctionSpec shellShadowSpec() {
                           {"no shadow at all", 0.3, 0.0},
                           {"full shadow at the skin", 0.0, 1.0},
                           {"a quarter up, intensity 0.3", 0.25, 0.3}},
-                         fur_reference::shellShadow);
+                         RAYLAB_REFERENCE_FUNCTION(fur_reference::shellShadow));
 }
 
 FunctionSpec shellOffsetSpec() {
@@ -111,9 +112,9 @@ FunctionSpec shellOffsetSpec() {
                 {"diagonal normal", {-1, 1, -1}, 0.25, 1.0}};
     for (const auto& r : rows)
         s.cases.push_back(row(r.label, dvec4(r.normal, 0), dvec4(r.layer, r.length, 0, 0)));
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(fur_reference::shellOffset(dvec3(c.in[0]), c.in[1].x, c.in[1].y), 1);
-    };
+    });
     s.compare = compareVec3;
     return s;
 }
@@ -163,14 +164,14 @@ FunctionSpec silhouetteSpec() {
                     caseNumber(eye.y) + ", " + caseNumber(eye.z) + ")",
                 eye, sphere.positions[adj.indices[e]], sphere.positions[adj.indices[e + 1]],
                 sphere.positions[adj.indices[e + 2]], sphere.positions[adj.indices[e + 3]]));
-    s.reference = [](const FunctionCase& row) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& row) {
         const dvec3 eye(row.in[0].w, row.in[1].w, row.in[2].w);
         return dvec4(silhouetteProduct(eye, dvec3(row.in[0]), dvec3(row.in[1]), dvec3(row.in[2]),
                                        dvec3(row.in[3])) < 0.0
                          ? 1.0
                          : 0.0,
                      0, 0, 1);
-    };
+    });
     s.compare = [](const FunctionCase& row, const dvec4& got, const dvec4& want) -> std::string {
         if (!allFinite(got)) return row.label + ": got NaN or Inf";
         const bool g = got.x > 0.5, w = want.x > 0.5;
@@ -201,11 +202,11 @@ FunctionSpec strandPointSpec() {
     for (const auto& r : rows)
         s.cases.push_back(row(r.label, dvec4(r.root, 0), dvec4(r.normal, 0),
                               dvec4(r.at, r.length, 0, 0), dvec4(r.gravity, 0)));
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(fur_reference::strandPoint(dvec3(c.in[0]), dvec3(c.in[1]), c.in[2].x,
                                                 c.in[2].y, dvec3(c.in[3])),
                      1);
-    };
+    });
     s.compare = compareVec3;
     return s;
 }
@@ -257,11 +258,11 @@ FunctionSpec kajiyaKaySpec() {
     for (const auto& w : rows)
         s.cases.push_back(
             row(w.label, dvec4(w.t, 0), dvec4(w.l, 0), dvec4(w.e, 0), dvec4(w.shininess, 0, 0, 0)));
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(
             fur_reference::kajiyaKay(dvec3(c.in[0]), dvec3(c.in[1]), dvec3(c.in[2]), c.in[3].x), 0,
             1);
-    };
+    });
     // pow(x, 40) multiplies the error of x by 40: 1e-4 still rejects a wrong formula.
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareVector(c, got, want, 2, 1e-4);

@@ -45,7 +45,10 @@ std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& wan
 dvec3 xyz(const dvec4& v) { return dvec3(v); }
 
 // The ray of a case whose a0.xyz is the origin and a1.xyz the direction.
-reference::DRay rayOf(const FunctionCase& c) { return {xyz(c.in[0]), xyz(c.in[1])}; }
+// (maybe_unused: only the references use it, and the page's core has none.)
+[[maybe_unused]] reference::DRay rayOf(const FunctionCase& c) {
+    return {xyz(c.in[0]), xyz(c.in[1])};
+}
 
 // The references are the reference tracer's own (reference_intersect.h,
 // reference_shading.h): one double-precision version of each GLSL function.
@@ -97,15 +100,22 @@ FunctionSpec sphereSpec() {
     };
     Lcg rng{1};
     for (int i = 0; i < 24; ++i) {
-        dvec3 center(rng.in(-3, 3), rng.in(-3, 3), rng.in(-3, 3));
-        dvec3 o(rng.in(-6, 6), rng.in(-6, 6), rng.in(-6, 6));
-        dvec3 aim = center + rng.direction() * rng.in(0.0, 1.5) - o;  // about half of them hit
+        // One draw per statement: the order in which a call's arguments are
+        // evaluated is the compiler's choice (GCC's natively, clang's in the
+        // page's core), and both must build the same cases. (This is the
+        // order GCC gave the arguments, so the cases are those of before.)
+        const double cz = rng.in(-3, 3), cy = rng.in(-3, 3), cx = rng.in(-3, 3);
+        const dvec3 center(cx, cy, cz);
+        const double oz = rng.in(-6, 6), oy = rng.in(-6, 6), ox = rng.in(-6, 6);
+        const dvec3 o(ox, oy, oz);
+        const double reach = rng.in(0.0, 1.5);
+        const dvec3 aim = center + rng.direction() * reach - o;  // about half of them hit
         s.cases.push_back(rayCase("random ray " + std::to_string(i + 1), o, aim,
                                   dvec4(center, rng.in(0.3, 1.2))));
     }
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::intersectSphere(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1);
-    };
+    });
     s.compare = compareHit;
     return s;
 }
@@ -128,9 +138,9 @@ FunctionSpec planeSpec() {
         rayCase("tilted plane, offset", {0, 0, 0}, {1, 1, 1},
                 dvec4(glm::normalize(dvec3(1, 2, 3)), 4.0)),
     };
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::intersectPlane(rayOf(c), xyz(c.in[2]), c.in[2].w), 0, 0, 1);
-    };
+    });
     s.compare = compareHit;
     return s;
 }
@@ -161,10 +171,10 @@ FunctionSpec discSpec() {
         rayCase("tilted disc", {0, 0, 5}, {0.05, 0.02, -1}, dvec4(0, 0, 0, 0.5),
                 dvec4(glm::normalize(dvec3(0.2, 0.1, 1)), 0)),
     };
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::intersectDisc(rayOf(c), xyz(c.in[2]), xyz(c.in[3]), c.in[2].w), 0,
                      0, 1);
-    };
+    });
     s.compare = compareHit;
     return s;
 }
@@ -201,11 +211,11 @@ FunctionSpec triangleSpec() {
         triangleCase("slanted triangle", {0, 0, 0}, {1, 1, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
         triangleCase("the parallelogram's other half", {1.5, 1.5, 3}, {0, 0, -1}, a, b, c),
     };
-    s.reference = [](const FunctionCase& k) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& k) {
         dvec3 first(k.in[0].w, k.in[1].w, k.in[2].w);
         return dvec4(reference::intersectTriangle(rayOf(k), first, xyz(k.in[2]), xyz(k.in[3])), 0,
                      0, 1);
-    };
+    });
     s.compare = compareHit;
     return s;
 }
@@ -225,9 +235,9 @@ FunctionSpec torusNormalSpec() {
         c.in = {dvec4(p, R), dvec4(r, 0, 0, 0), dvec4(0.0), dvec4(0.0)};
         s.cases.push_back(c);
     }
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::torusNormalLocal(xyz(c.in[0]), c.in[0].w, c.in[1].x), 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (!finite(got)) return c.label + ": got NaN or Inf";
         if (std::fabs(glm::length(xyz(got)) - 1.0) > 1e-3)

@@ -49,8 +49,11 @@ const char* kLightsPrelude = "// Stand-ins for the scene's lights, set by the ca
 
 // The material and light colours of every blinnPhong case: each channel
 // different, so a colour forgotten or taken from the wrong term shows.
-const dvec3 kAmbient(0.1, 0.05, 0.02), kDiffuse(0.5, 0.6, 0.7), kSpecular(0.9, 0.8, 0.7);
-const dvec3 kLightColor[2] = {{1.0, 0.8, 0.6}, {0.3, 0.5, 0.9}};
+// (maybe_unused here and below: only the references use them, and the
+// page's core is built without them.)
+[[maybe_unused]] const dvec3 kAmbient(0.1, 0.05, 0.02), kDiffuse(0.5, 0.6, 0.7),
+    kSpecular(0.9, 0.8, 0.7);
+[[maybe_unused]] const dvec3 kLightColor[2] = {{1.0, 0.8, 0.6}, {0.3, 0.5, 0.9}};
 
 // a0: the unit normal, a0.w the shininess; a1: the unit direction to the eye;
 // a2: light 0's position; a3: light 1's, a3.w = 0 for one light only. The
@@ -108,7 +111,7 @@ FunctionSpec blinnPhongSpec() {
         blinnCase("one light in front, one behind the surface", up, {-1, 0.6, 0}, 4, {-2, 4, 1},
                   5.0 * glm::normalize(dvec3(1, -0.2, 0)), true),
     };
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         const dvec3 normal = xyz(c.in[0]), toEye = xyz(c.in[1]);
         dvec3 color = kAmbient;
         const int lights = c.in[3].w > 0.0 ? 2 : 1;
@@ -119,7 +122,7 @@ FunctionSpec blinnPhongSpec() {
             color += t.diffuse + t.specular;
         }
         return dvec4(color, 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareColor(c, got, want, 2e-4);
     };
@@ -145,8 +148,8 @@ FunctionCase visibilityCase(std::string label, dvec3 center, double radius, dvec
 
 // Does the open segment from P (on the sphere CENTER, RADIUS) to the light
 // at distance DIST along the unit direction D cross a sphere?
-bool crosses(const dvec3& p, const dvec3& d, double dist, const dvec3& center, double radius,
-             bool pointOnIt) {
+[[maybe_unused]] bool crosses(const dvec3& p, const dvec3& d, double dist, const dvec3& center,
+                              double radius, bool pointOnIt) {
     const dvec3 oc = p - center;
     const double b = glm::dot(oc, d);
     if (pointOnIt) {  // roots 0 and -2b: the other one is where the segment leaves or enters
@@ -243,7 +246,7 @@ FunctionSpec lightVisibilitySpec() {
                                              f.center, f.radius, outward, false, light));
         }
     for (FunctionCase& c : s.cases) c.uniforms = {{"uShadows", 1}};
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         const dvec3 p = xyz(c.in[0]), toLight = xyz(c.in[2]) - p;
         const double dist = glm::length(toLight);
         const dvec3 d = toLight / dist;
@@ -252,7 +255,7 @@ FunctionSpec lightVisibilitySpec() {
             blocked = blocked ||
                       crosses(p, d, dist, glm::mix(p, xyz(c.in[2]), c.in[1].w), c.in[0].w, false);
         return dvec4(blocked ? 0.0 : 1.0, 0.0, 0.0, 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
         auto text = [](double v) { return v > 0.5 ? "visible" : "blocked"; };
         if (!allFinite(got)) return c.label + ": got NaN or Inf";
@@ -321,10 +324,10 @@ FunctionSpec applyNormalMapSpec() {
                 text(r.tangent) + ", texel " + text(r.texel) + "]",
             dvec4(glm::normalize(r.normal), 0.0), dvec4(r.tangent, 0.0), dvec4(r.texel, 0.0)));
     for (FunctionCase& c : s.cases) c.uniforms = {{"uNormalMaps", 1}};
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(
             reference::applyNormalMap(xyz(c.in[0]), xyz(c.in[1]), xyz(c.in[2]) * 2.0 - 1.0), 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
         if (!allFinite(got)) return c.label + ": got NaN or Inf";
         std::string why = compareVector(c, got, want, 3, 1e-4);
@@ -351,9 +354,9 @@ FunctionSpec applyColorModeSpec() {
             c.uniforms = {{"uColorMode", mode}};
             s.cases.push_back(c);
         }
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(reference::applyColorMode(xyz(c.in[0]), c.uniforms.front().second), 1.0);
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         return compareVector(c, got, want, 3, 1e-6);
     };
@@ -404,7 +407,7 @@ FunctionSpec findClosestSpec() {
                     {-5, 0, 0, 1}),
         closestCase("from inside sphere 0: its exit", {0, 0, 0}, {1, 0, 0}, 1, {0, 0, 0, 2}),
     };
-    s.reference = [](const FunctionCase& c) {
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         const dvec3 o = xyz(c.in[0]), d = xyz(c.in[1]);
         dvec4 best(0.0, 0.0, -1.0, 1.0);
         for (int i = 0; i < int(c.in[0].w); ++i) {
@@ -414,7 +417,7 @@ FunctionSpec findClosestSpec() {
                 best = dvec4(1.0, t, i, 1.0);
         }
         return best;
-    };
+    });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
         auto text = [](const dvec4& v) {
             return v.x > 0.5 ? "sphere " + std::to_string(int(std::lround(v.z))) +

@@ -1,0 +1,110 @@
+#include "function_tables.h"
+
+#include "error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+using nlohmann::json;
+
+namespace {
+
+// JSON has no NaN or infinity: those values are written as text.
+json number(double v) {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return v;
+}
+
+double numberFrom(const json& v, const std::string& where) {
+    if (v.is_number()) return v.get<double>();
+    if (v == "nan") return std::nan("");
+    if (v == "inf") return INFINITY;
+    if (v == "-inf") return -INFINITY;
+    throw Error(where + ": expected a number, \"nan\", \"inf\" or \"-inf\"");
+}
+
+}  // namespace
+
+std::string functionTablesJson() {
+    // One line per case (compact, yet a changed case shows as one line in a diff).
+    std::string text = "{\"about\": \"the function checks' inputs and expected values (raylab "
+                       "function-tables)\",\n \"functions\": {\n";
+    bool firstSpec = true;
+    for (const FunctionSpec& spec : functionSpecs()) {
+        const std::vector<glm::dvec4> wants = referenceWants(spec);
+        text += std::string(firstSpec ? "" : ",\n") + "  " + json(spec.name).dump() + ": [\n";
+        firstSpec = false;
+        for (std::size_t i = 0; i < spec.cases.size(); ++i) {
+            json in = json::array();
+            for (const glm::dvec4& a : spec.cases[i].in)
+                in.push_back({number(a.x), number(a.y), number(a.z), number(a.w)});
+            const json c = {
+                {"case", spec.cases[i].label},
+                {"in", in},
+                {"want",
+                 {number(wants[i].x), number(wants[i].y), number(wants[i].z), number(wants[i].w)}}};
+            text += "   " + c.dump() + (i + 1 < spec.cases.size() ? ",\n" : "\n");
+        }
+        text += "  ]";
+    }
+    return text + "\n }\n}\n";
+}
+
+FunctionTables parseFunctionTables(const std::string& text, const std::string& file) {
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::exception& e) { throw Error(file + ": not JSON: " + e.what()); }
+    if (!doc.contains("functions") || !doc["functions"].is_object())
+        throw Error(file + ": expected an object \"functions\"");
+    FunctionTables tables;
+    for (const FunctionSpec& spec : functionSpecs()) {
+        const std::string where = file + ": " + spec.name;
+        if (!doc["functions"].contains(spec.name))
+            throw Error(where + ": missing (write the file again: raylab function-tables)");
+        const json& cases = doc["functions"][spec.name];
+        if (!cases.is_array() || cases.size() != spec.cases.size())
+            throw Error(where + ": " + std::to_string(cases.is_array() ? cases.size() : 0) +
+                        " cases, the check has " + std::to_string(spec.cases.size()) +
+                        " (write the file again: raylab function-tables)");
+        FunctionTable& t = tables[spec.name];
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const json& c = cases[i];
+            const std::string at = where + "[" + std::to_string(i) + "]";
+            if (!c.is_object() || !c.contains("case") || !c.contains("want") ||
+                !c["want"].is_array() || c["want"].size() != 4)
+                throw Error(at + ": expected {\"case\": label, \"want\": [4 numbers]}");
+            if (c["case"] != spec.cases[i].label)
+                throw Error(at + ": case \"" + c["case"].dump() + "\", the check's is \"" +
+                            spec.cases[i].label +
+                            "\" (write the file again: raylab function-tables)");
+            // The inputs this build made must be the table's: a case built
+            // differently (an argument order left to the compiler, a libm
+            // one step apart) would be scored against another case's answer.
+            if (!c.contains("in") || !c["in"].is_array() || c["in"].size() != 4)
+                throw Error(at + ": expected \"in\": [4 vectors of 4 numbers]");
+            for (std::size_t k = 0; k < 4; ++k)
+                for (int j = 0; j < 4; ++j) {
+                    const double mine = spec.cases[i].in[k][j];
+                    const double theirs = numberFrom(c["in"][k].at(std::size_t(j)), at);
+                    if (!(std::fabs(mine - theirs) <= 1e-9 * std::max(1.0, std::fabs(mine))) &&
+                        !(std::isnan(mine) && std::isnan(theirs)))
+                        throw Error(at + ": input a" + std::to_string(k) + "[" + std::to_string(j) +
+                                    "] is " + std::to_string(mine) + " here, " +
+                                    std::to_string(theirs) +
+                                    " in the table: this build makes another case");
+                }
+            t.labels.push_back(spec.cases[i].label);
+            t.wants.emplace_back(numberFrom(c["want"][0], at), numberFrom(c["want"][1], at),
+                                 numberFrom(c["want"][2], at), numberFrom(c["want"][3], at));
+        }
+    }
+    return tables;
+}
+
+}  // namespace raylab

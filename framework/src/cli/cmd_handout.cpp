@@ -16,7 +16,6 @@
 #include "stage_sources.h"
 
 #include <cstdio>
-#include <unistd.h>
 
 namespace raylab {
 
@@ -24,48 +23,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// --out as given, without a trailing separator ("week3/" is the folder week3).
-fs::path outFolder(const std::string& outDir) {
-    fs::path out = fs::path(outDir).lexically_normal();
-    if (out.filename().empty() && out.has_parent_path()) out = out.parent_path();
-    return out;
-}
-
 int cmdHandout(const std::string& list, const std::string& outDir, const std::string& labDir,
                const std::string& carryName, const std::string& courseFile) {
-    if (outDir.empty()) throw Error("--out DIR is required");
     const Carry carry = parseCarry(carryName);
     // The guides' "How you are graded" with the course's weights.
     const CourseSettings course =
         courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
     const std::vector<HandoutStage> plan = planHandout(parseStageList(list), carry);
     const fs::path labs = labDir.empty() ? defaultLabRoot() : fs::path(labDir);
-    const fs::path out = outFolder(outDir);
-    if (out.empty() || out == "." || out == "..")
-        throw Error("--out " + outDir + ": give a new folder's name");
+    const fs::path out = newOutputFolder(outDir);
     checkHandoutSources(plan, labs);
-    std::error_code ec;
-    if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
-        throw Error("--out " + outDir + ": exists and is not an empty folder (nothing written)");
-    const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
-    if (!fs::is_directory(parent, ec))
-        throw Error("--out " + outDir + ": folder " + parent.string() + " does not exist");
-
     // How the guides' commands name the handout: as --out did, from the RayLab folder.
     const std::string labFolder = out.generic_string() + "/";
-    const fs::path temp =
-        parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
-    try {
-        writeHandoutFolder(plan, labs, temp, labFolder, course);
-        if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above
-        fs::rename(temp, out);
-    } catch (const fs::filesystem_error& e) {
-        fs::remove_all(temp, ec);
-        throw Error("cannot write the handout: " + std::string(e.what()));
-    } catch (...) {
-        fs::remove_all(temp, ec);
-        throw;
-    }
+    writeWhole(out, "the handout",
+               [&](const fs::path& to) { writeHandoutFolder(plan, labs, to, labFolder, course); });
     std::string ids;
     bool reads = false;
     for (const HandoutStage& h : plan) {

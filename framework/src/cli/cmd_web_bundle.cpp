@@ -76,7 +76,6 @@ const char* const kIndex =
 
 int cmdWebBundle(const std::string& list, const std::string& outDir, const std::string& carryName,
                  const std::string& courseFile) {
-    if (outDir.empty()) throw Error("--out DIR is required");
     const Carry carry = parseCarry(carryName);
     const CourseSettings course =
         courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
@@ -88,19 +87,8 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
         if (!fs::is_regular_file(root / built, ec))
             throw Error(std::string(built) +
                         " is missing: build the page first (npm --prefix web run build)");
-    fs::path out = fs::path(outDir).lexically_normal();
-    if (out.filename().empty() && out.has_parent_path()) out = out.parent_path();
-    if (out.empty() || out == "." || out == "..")
-        throw Error("--out " + outDir + ": give a new folder's name");
-    if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
-        throw Error("--out " + outDir + ": exists and is not an empty folder (nothing written)");
-    const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
-    if (!fs::is_directory(parent, ec))
-        throw Error("--out " + outDir + ": folder " + parent.string() + " does not exist");
-
-    const fs::path temp =
-        parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
-    try {
+    const fs::path out = newOutputFolder(outDir);
+    writeWhole(out, "the bundle", [&](const fs::path& temp) {
         fs::create_directories(temp / "labs");
         writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course);
         for (const char* file : {"web/index.html", "web/page.css", "web/function_tables.json"})
@@ -118,15 +106,7 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
                      temp / "tests" / "reference" / h.stage->id);
         writeTextFileAtomic(temp / "index.html", kIndex);
         writeCatalog(temp, plan);
-        if (fs::exists(out, ec)) fs::remove(out);  // the empty folder checked above
-        fs::rename(temp, out);
-    } catch (const fs::filesystem_error& e) {
-        fs::remove_all(temp, ec);
-        throw Error("cannot write the bundle: " + std::string(e.what()));
-    } catch (...) {
-        fs::remove_all(temp, ec);
-        throw;
-    }
+    });
     std::string ids;
     for (const HandoutStage& h : plan) ids += (ids.empty() ? "" : ", ") + h.stage->id;
     std::printf("raylab web-bundle: wrote %s (%s): host it with any web server, e.g. "

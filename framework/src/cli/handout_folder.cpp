@@ -5,6 +5,8 @@
 #include "paths.h"
 #include "stage_grading.h"
 
+#include <unistd.h>
+
 namespace raylab {
 
 namespace fs = std::filesystem;
@@ -71,6 +73,41 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
                                    *h.stage, course.gradingOf(*h.stage)));
     }
     writeTextFileAtomic(to / "README.md", readme(plan));
+}
+
+fs::path newOutputFolder(const std::string& outDir) {
+    if (outDir.empty()) throw Error("--out DIR is required");
+    fs::path out = fs::path(outDir).lexically_normal();
+    if (out.filename().empty() && out.has_parent_path()) out = out.parent_path();
+    if (out.empty() || out == "." || out == "..")
+        throw Error("--out " + outDir + ": give a new folder's name");
+    std::error_code ec;
+    if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
+        throw Error("--out " + outDir + ": exists and is not an empty folder (nothing written)");
+    const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    if (!fs::is_directory(parent, ec))
+        throw Error("--out " + outDir + ": folder " + parent.string() + " does not exist");
+    return out;
+}
+
+void writeWhole(const fs::path& out, const std::string& what,
+                const std::function<void(const fs::path&)>& write) {
+    const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    const fs::path temp =
+        parent / ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()));
+    std::error_code ec;
+    try {
+        fs::create_directories(temp);
+        write(temp);
+        if (fs::exists(out, ec)) fs::remove(out);  // empty: newOutputFolder checked it
+        fs::rename(temp, out);
+    } catch (const fs::filesystem_error& e) {
+        fs::remove_all(temp, ec);
+        throw Error("cannot write " + what + ": " + std::string(e.what()));
+    } catch (...) {
+        fs::remove_all(temp, ec);
+        throw;
+    }
 }
 
 }  // namespace raylab

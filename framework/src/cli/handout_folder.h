@@ -7,6 +7,7 @@
 #include "handout.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,15 @@ void checkHandoutSources(const std::vector<HandoutStage>& plan, const std::files
 void writeHandoutFolder(const std::vector<HandoutStage>& plan, const std::filesystem::path& labs,
                         const std::filesystem::path& to, const std::string& labFolder,
                         const CourseSettings& course);
+
+// --out OUTDIR as a folder to write: a name ("week3/" is week3), new or
+// empty, in a folder that exists. Throws Error("--out ...: why").
+std::filesystem::path newOutputFolder(const std::string& outDir);
+
+// OUT appears whole or not at all: WRITE fills a temporary folder beside it,
+// which is then renamed to OUT (an empty OUT is replaced). WHAT names the
+// folder in errors ("the handout").
+void writeWhole(const std::filesystem::path& out, const std::string& what,
+                const std::function<void(const std::filesystem::path&)>& write);
 
 }  // namespace raylab

@@ -1,7 +1,7 @@
 // `raylab check` in the page (native: framework/src/cli/cmd_check.cpp): the
 // stage's function checks, then each check view drawn at 160x120 into a
 // float target and compared with the shipped reference picture. The core
-// judges every result with native's tables, thresholds, weights and hints
+// judges every result with native's tables, thresholds and hints
 // and words the report as native does; the page only draws.
 import { frameOfView, sceneOfView } from '../app/frame.js';
 import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';

@@ -41,6 +41,22 @@ const FunctionTables& tables() {
 
 std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) { return tables().at(spec.name).wants; }
 
+// What a harness wrote (RGBA floats, one pixel per case), one vec4 per case.
+std::vector<glm::vec4> harnessResults(const val& floats) {
+    const std::vector<float> raw = emscripten::convertJSArrayToNumberVector<float>(floats);
+    std::vector<glm::vec4> results;
+    for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
+        results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
+    return results;
+}
+
+json outcomeJson(const FunctionOutcome& o) {
+    return {{"name", o.name},
+            {"passed", o.passed},
+            {"total", o.total},
+            {"firstFailure", o.firstFailure}};
+}
+
 // A stage's function checks, for the lab in LAB (empty: the solution).
 class FunctionChecks {
 public:
@@ -86,17 +102,8 @@ public:
     // natively: {name, passed, total, firstFailure}.
     std::string score(const std::string& name, const val& floats) const {
         try {
-            const std::vector<float> raw = emscripten::convertJSArrayToNumberVector<float>(floats);
-            std::vector<glm::vec4> results;
-            for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
-                results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
-            const FunctionOutcome o =
-                scoreFunctionResults(spec(name), results, wantsOf(spec(name)));
-            return json{{"name", o.name},
-                        {"passed", o.passed},
-                        {"total", o.total},
-                        {"firstFailure", o.firstFailure}}
-                .dump();
+            const FunctionSpec& f = spec(name);
+            return outcomeJson(scoreFunctionResults(f, harnessResults(floats), wantsOf(f))).dump();
         } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
     }
 
@@ -133,18 +140,16 @@ std::string compareView(const val& mine, const val& expected, int width, int hei
     try {
         const json c = json::parse(contextJson);
         const StageInfo& stage = findStage(c.value("stage", ""));
-        const Image a = imageFrom(mine, width, height), b = imageFrom(expected, width, height);
-        const CompareTolerance tolerance;
-        const ImageDiff diff = compareImages(a, b, tolerance.channel);
-        const long nonFinite = c.value("nonFinite", 0L);
-        const bool passed = imagesAgree(diff, tolerance) && nonFinite == 0;
-        const std::string hint = passed ? std::string()
-                                        : diagnose(a, b, tolerance.channel,
-                                                   {stage.hintDarker, stage.hintBrighter,
-                                                    c.value("todoPixels", 0L), nonFinite});
-        return json{
-            {"passed", passed},          {"badShare", diff.badShare},     {"maxDiff", diff.maxDiff},
-            {"sameSize", diff.sameSize}, {"description", describe(diff)}, {"hint", hint}}
+        CheckView view;  // any view: only its name and "why" go into the verdict
+        const ViewOutcome v = judgeView(stage, view, imageFrom(mine, width, height),
+                                        imageFrom(expected, width, height),
+                                        c.value("nonFinite", 0L), c.value("todoPixels", 0L));
+        return json{{"passed", v.passed},
+                    {"badShare", v.diff.badShare},
+                    {"maxDiff", v.diff.maxDiff},
+                    {"sameSize", v.diff.sameSize},
+                    {"description", describe(v.diff)},
+                    {"hint", v.hint}}
             .dump();
     } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
 }
@@ -249,12 +254,8 @@ public:
 
 private:
     std::string scoreInto(const std::string& name, const val& floats) {
-        const std::vector<float> raw = emscripten::convertJSArrayToNumberVector<float>(floats);
-        std::vector<glm::vec4> results;
-        for (std::size_t i = 0; i + 3 < raw.size(); i += 4)
-            results.emplace_back(raw[i], raw[i + 1], raw[i + 2], raw[i + 3]);
         const FunctionSpec& s = functionSpec(name);
-        return record(scoreFunctionResults(s, results, wantsOf(s)));
+        return record(scoreFunctionResults(s, harnessResults(floats), wantsOf(s)));
     }
     std::string judgeInto(const std::string& viewName, const val& mine, const val& expected,
                           int width, int height, double nonFinite, double todoPixels) {
@@ -271,11 +272,7 @@ private:
     }
     std::string record(const FunctionOutcome& f) {
         functions_.push_back(f);
-        return json{{"name", f.name},
-                    {"passed", f.passed},
-                    {"total", f.total},
-                    {"firstFailure", f.firstFailure}}
-            .dump();
+        return outcomeJson(f).dump();
     }
     int count(bool ok) const {
         int n = 0;

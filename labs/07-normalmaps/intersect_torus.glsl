@@ -31,6 +31,21 @@ float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
     return t;
 }
 
+// The quartic in t whose roots are where the ray o + t d (|d| = 1, torus
+// frame) meets the torus: f(o + t d) = t^4 + c3 t^3 + c2 t^2 + c1 t + c0,
+// returned as (c3, c2, c1, c0), as solveQuartic takes them.
+vec4 torusQuartic(vec3 o, vec3 d, float R, float r)
+{
+    float m = dot(o, o);
+    float n = dot(o, d);
+    float k = m + R * R - r * r;
+    float R4 = 4.0 * R * R;
+    return vec4(4.0 * n,
+                4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y),
+                4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
+                k * k - R4 * (o.x * o.x + o.y * o.y));
+}
+
 // The nearest t > tMin where the ray (in the torus frame, in units where
 // 1 <= R < 2) meets the torus, or NO_HIT. (Provided.)
 float intersectTorusUnit(Ray ray, float R, float r, float tMin)
@@ -56,16 +71,8 @@ float intersectTorusUnit(Ray ray, float R, float r, float tMin)
     vec3 o = ray.origin + tEnter * ray.dir;
     vec3 d = ray.dir;
 
-    float m = dot(o, o);
-    float n = dot(o, d);
-    float k = m + R * R - r * r;
-    float R4 = 4.0 * R * R;
-    vec4 coefficients = vec4(4.0 * n,
-                             4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y),
-                             4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
-                             k * k - R4 * (o.x * o.x + o.y * o.y));
     vec4 roots;
-    int count = solveQuartic(coefficients, roots);
+    int count = solveQuartic(torusQuartic(o, d, R, r), roots);
     // Nearest first; each root polished and kept only if the point really
     // lies on the surface (near a double root, rounding can invent a root).
     for (int i = 0; i < count; ++i)

@@ -22,6 +22,16 @@ out vec3 gNormal;  // world space
 out float gFade;   // 1 where the eye grazes the surface, less where it looks down on it
 flat out int gLabTodo;
 
+// How much of a fin shows: 1 where the eye grazes the surface, less where
+// it looks down on it (a fin seen face-on looks like a flat card), from the
+// edge B-C and its vertex normals. (Provided.)
+float finFade(vec3 b, vec3 c, vec3 normalB, vec3 normalC)
+{
+    vec3 n = normalB + normalC;
+    vec3 toEye = normalize(uEye - 0.5 * (b + c));
+    return dot(n, n) > 1e-12 ? 1.0 - abs(dot(toEye, normalize(n))) : 1.0;
+}
+
 void corner(vec3 p, vec2 finUv, int vertex, float fade)
 {
     gl_Position = toClip(vec4(p, 1.0));
@@ -41,11 +51,7 @@ void main()
     vec3 topB = b + vNormal[1] * uFurLength;
     vec3 topC = c + vNormal[2] * uFurLength;
 
-    // A fin seen face-on looks like a flat card: fade it where the eye looks
-    // down on the surface, keep it where the view grazes it.
-    vec3 n = vNormal[1] + vNormal[2];
-    vec3 toEye = normalize(uEye - 0.5 * (b + c));
-    float fade = dot(n, n) > 1e-12 ? 1.0 - abs(dot(toEye, normalize(n))) : 1.0;
+    float fade = finFade(b, c, vNormal[1], vNormal[2]);
     // The strands keep their proportions: one repeat of the fin texture per
     // fur length along the edge.
     float u = length(c - b) / uFurLength;

@@ -3,6 +3,16 @@
 // hit, false otherwise.
 bool findClosest(Ray ray, out Hit hit)
 {
+    //@open
+    //@ // TODO(01.b): fill `hit` with the nearest sphere the ray meets: its distance
+    //@ // t (from intersectSphere) and its index i (uSpheres[i].xyz is the centre,
+    //@ // .w the radius, i < uSphereCount). Return true when the ray meets a
+    //@ // sphere; otherwise false, with hit = Hit(T_FAR, -1).
+    //@ // Checked by: raylab check --stage 01 (function findClosest; views front, close-overlap).
+    //@ labTodo();
+    //@ hit = Hit(T_FAR, -1);
+    //@ return hit.id >= 0;
+    //@guided
     hit = Hit(T_FAR, -1);
     // TODO(01.b): test every sphere (uSpheres[i].xyz is its centre, .w its
     // radius, i < uSphereCount) and keep the hit with the smallest t.
@@ -16,4 +26,5 @@ bool findClosest(Ray ray, out Hit hit)
     //@ labTodo();
     //@end
     return hit.id >= 0;
+    //@end-open
 }

@@ -1,3 +1,22 @@
+//@open
+//@ // Where does a ray first meet a sphere?
+//@ //
+//@ // TODO(01.a): intersectSphere returns the distance t along the ray to its
+//@ // first hit with the sphere (centre `center`, radius `radius` > 0): the
+//@ // smallest t > T_MIN with |ray.origin + t ray.dir - center| = radius, or
+//@ // NO_HIT when there is none.
+//@ //  - ray.dir is a unit vector, so t is a distance in scene units.
+//@ //  - The camera may be inside the sphere: the hit is then where the ray
+//@ //    leaves it. A sphere wholly behind the ray's origin is not hit.
+//@ //  - A small sphere far away must still be hit where it is: the guide's
+//@ //    section 2 says which formula loses it to rounding.
+//@ // Checked by: raylab check --stage 01 (function intersectSphere; all views).
+//@ float intersectSphere(Ray ray, vec3 center, float radius)
+//@ {
+//@     labTodo();
+//@     return NO_HIT;
+//@ }
+//@guided
 // Where does a ray first meet a sphere?
 //
 // A point p is on the sphere when |p - center| = radius. Put the ray's point
@@ -34,3 +53,4 @@ float intersectSphere(Ray ray, vec3 center, float radius)
     //@ return NO_HIT;
     //@end
 }
+//@end-open

@@ -9,6 +9,18 @@
 
 vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
 {
+    //@open
+    //@ // TODO(02.a): the Blinn-Phong colour of the point: the material's ambient
+    //@ // colour once, plus for every light i < uLightCount that reaches the point
+    //@ // (lightVisible(point, normal, i), from lab 03 on) its diffuse and its
+    //@ // specular term (guide, sections 2-4): light i is at uLightPositions[i]
+    //@ // with colour uLightColors[i]; `normal` and `toEye` are unit vectors, the
+    //@ // normal on the eye's side. No specular highlight where the light is
+    //@ // behind the surface.
+    //@ // Checked by: raylab check --stage 02 (function blinnPhong; views front, dark-side, highlights, inside).
+    //@ labTodo();
+    //@ return m.diffuse;
+    //@guided
     vec3 color = vec3(0.0);
 
     // TODO(02.a): the ambient colour, added once: it stands for light that
@@ -51,4 +63,5 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
         //@end
     }
     return color;
+    //@end-open
 }

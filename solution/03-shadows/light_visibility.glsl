@@ -15,6 +15,17 @@ uniform int uShadows;
 
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
+    //@open
+    //@ // TODO(03.a): return whether light number `light` (at uLightPositions[light])
+    //@ // reaches `point`: false when findClosest finds an object between the point
+    //@ // and the light, true otherwise (and always true when uShadows == 0).
+    //@ //  - The shadow ray starts just off the surface, with offsetRayOrigin, on
+    //@ //    the side it leaves toward: the light's side (guide, section 2).
+    //@ //  - An object beyond the light casts no shadow on the point.
+    //@ // Checked by: raylab check --stage 03 (function lightVisible; views front, grazing, beyond-light, far-from-origin).
+    //@ labTodo();
+    //@ return true;
+    //@guided
     if (uShadows == 0) return true;
     vec3 toLight = uLightPositions[light] - point;
     float distanceToLight = length(toLight);
@@ -43,4 +54,5 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     //@ labTodo();
     //@ return true;
     //@end
+    //@end-open
 }

@@ -10,6 +10,13 @@
 // the angle in the optically thinner medium.)
 float fresnelDielectric(float cosOutside, float ior)
 {
+    //@open
+    //@ // TODO(04.c): F for a dielectric of index `ior` (> 1) in air, by Schlick,
+    //@ // with F0 from the index (guide, section 4). cosOutside is in [0, 1].
+    //@ // Checked by: raylab check --stage 04 (function fresnelDielectric; views front, glass-closeup, inside-glass).
+    //@ labTodo();
+    //@ return 0.5;
+    //@guided
     // TODO(04.c): F0 = ((ior - 1) / (ior + 1))^2, then Schlick.
     // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
     //@solution
@@ -20,12 +27,20 @@ float fresnelDielectric(float cosOutside, float ior)
     //@ labTodo();
     //@ return 0.5;
     //@end
+    //@end-open
 }
 
 // A metal (conductor) with complex index of refraction n + ik per colour
 // channel: it reflects different colours differently (gold).
 vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
 {
+    //@open
+    //@ // TODO(04.d): F per colour channel for a metal of complex index n + ik, by
+    //@ // Schlick, with F0 from n and k (guide, section 4). cosIncident is in [0, 1].
+    //@ // Checked by: raylab check --stage 04 (function fresnelConductor; view gold).
+    //@ labTodo();
+    //@ return vec3(1.0);
+    //@guided
     // TODO(04.d): F0 = ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2), per channel,
     // then Schlick with the incident cosine.
     // Checked by: raylab check --stage 04 (view gold).
@@ -36,6 +51,7 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
     //@ labTodo();
     //@ return vec3(1.0);
     //@end
+    //@end-open
 }
 
 // Glass: a ray with unit direction `dir` meets a glass surface of index of
@@ -46,6 +62,15 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
 // nothing is refracted: vec4(0.0, 0.0, 0.0, 1.0).
 vec4 refractGlass(vec3 dir, vec3 normal, bool entering, float ior)
 {
+    //@open
+    //@ // TODO(04.e): the refracted direction (unit) and F, as above. Mind which
+    //@ // side the ray comes from (`entering`) for the relative index, and which
+    //@ // cosine Schlick takes (the one on the air side). GLSL's refract() may
+    //@ // help; it returns vec3(0.0) under total internal reflection.
+    //@ // Checked by: raylab check --stage 04 (function refractGlass; views glass-closeup, inside-glass).
+    //@ labTodo();
+    //@ return vec4(0.0, 0.0, 0.0, 1.0);
+    //@guided
     // TODO(04.e): the relative index eta is 1/ior entering the glass and ior
     // leaving it. refract(dir, normal, eta) returns vec3(0.0) under total
     // internal reflection: then F = 1. Otherwise F is fresnelDielectric with
@@ -63,4 +88,5 @@ vec4 refractGlass(vec3 dir, vec3 normal, bool entering, float ior)
     //@ labTodo();
     //@ return vec4(0.0, 0.0, 0.0, 1.0);  // placeholder: everything reflected
     //@end
+    //@end-open
 }

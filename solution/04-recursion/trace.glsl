@@ -10,6 +10,30 @@
 
 uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 8 is defined by the framework)
 
+//@open
+//@ // TODO(04.a): trace returns the colour the primary ray brings to its pixel:
+//@ // the Blinn-Phong colour of its hit (or skyColor of its direction when it
+//@ // hits nothing), plus, at a mirror, metal or glass surface (m.type not
+//@ // MAT_PLASTIC), the colour of the reflected ray times the surface's
+//@ // reflectance (mirror: m.specular; metal: fresnelConductor), and at glass
+//@ // also the colour of the refracted ray (refractGlass), each weighted by the
+//@ // share of light it carries - and so on for the rays they make.
+//@ //  - GLSL has no recursion: follow one ray at a time and keep the rays still
+//@ //    to follow on a stack of your own (an array and its size; the guide's
+//@ //    section 2 says how deep it must be).
+//@ //  - A path has at most uMaxDepth rays (the primary ray counts as one); the
+//@ //    loop must end for every pixel: bound it by MAX_RAYS.
+//@ //  - A ray leaving a surface starts just off it, on the side it leaves
+//@ //    toward (offsetRayOrigin, as in lab 03): a refracted ray starts inside.
+//@ //  - surfaceAt(ray, hit) gives the hit's point, outward normal and material;
+//@ //    shade with the normal facing the incoming ray.
+//@ // Checked by: raylab check --stage 04 (views front, depth-1, depth-2, glass-closeup, inside-glass, gold).
+//@ vec3 trace(Ray primary)
+//@ {
+//@     labTodo();
+//@     return vec3(0.0);
+//@ }
+//@guided
 // A ray waiting to be traced.
 struct PendingRay {
     Ray ray;
@@ -98,3 +122,4 @@ vec3 trace(Ray primary)
     }
     return color;
 }
+//@end-open

@@ -1,3 +1,17 @@
+//@open
+//@ // Where does a ray meet a disc (a round, flat plate)?
+//@ //
+//@ // TODO(05.b): intersectDisc returns the distance t > T_MIN at which the ray
+//@ // meets the disc - the points of the plane through `center` with unit
+//@ // normal `normal` no farther than `radius` from the centre (its rim
+//@ // included) - or NO_HIT. intersectPlane (05.a) may help.
+//@ // Checked by: raylab check --stage 05 (function intersectDisc; views front, disc-closeup).
+//@ float intersectDisc(Ray ray, vec3 center, vec3 normal, float radius)
+//@ {
+//@     labTodo();
+//@     return NO_HIT;
+//@ }
+//@guided
 // Where does a ray meet a disc (a round, flat plate)?
 //
 // A disc lies in the plane through `center` with normal `normal`; a point of
@@ -20,3 +34,4 @@ float intersectDisc(Ray ray, vec3 center, vec3 normal, float radius)
     //@ return NO_HIT;
     //@end
 }
+//@end-open

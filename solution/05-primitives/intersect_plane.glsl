@@ -1,3 +1,20 @@
+//@open
+//@ // Where does a ray meet an infinite plane?
+//@ //
+//@ // TODO(05.a): intersectPlane returns the distance t > T_MIN at which the
+//@ // ray meets the plane of points p with dot(normal, p) = offset (`normal` a
+//@ // unit vector), or NO_HIT.
+//@ //  - A ray parallel to the plane never meets it, and one lying in it must
+//@ //    not count either: treat |dot(normal, ray.dir)| < 1e-6 as parallel (in
+//@ //    float a ray lying in a tilted plane still gives about 1e-7).
+//@ //  - The plane is hit from either side.
+//@ // Checked by: raylab check --stage 05 (function intersectPlane; views front, floor-level, from-below).
+//@ float intersectPlane(Ray ray, vec3 normal, float offset)
+//@ {
+//@     labTodo();
+//@     return NO_HIT;
+//@ }
+//@guided
 // Where does a ray meet an infinite plane?
 //
 // The plane is every point p with dot(normal, p) = offset. Put the ray's
@@ -21,3 +38,4 @@ float intersectPlane(Ray ray, vec3 normal, float offset)
     //@ return NO_HIT;
     //@end
 }
+//@end-open

@@ -1,3 +1,21 @@
+//@open
+//@ // Where does a ray meet the triangle a, b, c?
+//@ //
+//@ // TODO(05.c): intersectTriangle returns the distance t > T_MIN at which the
+//@ // ray meets the triangle (its edges included), or NO_HIT, with the
+//@ // Moller-Trumbore algorithm (guide, section 3): no plane equation, no
+//@ // square root.
+//@ //  - Both sides count: a mirror seen from behind, the inside faces of a
+//@ //    glass cube.
+//@ //  - A ray parallel to the triangle's plane misses it: treat a determinant
+//@ //    of magnitude below 1e-10 as zero.
+//@ // Checked by: raylab check --stage 05 (function intersectTriangle; views front, mirror-back, cube-closeup).
+//@ float intersectTriangle(Ray ray, vec3 a, vec3 b, vec3 c)
+//@ {
+//@     labTodo();
+//@     return NO_HIT;
+//@ }
+//@guided
 // Where does a ray meet the triangle a, b, c? (Moller-Trumbore, 1997)
 //
 // A point of the triangle is a + u (b - a) + v (c - a) with u >= 0, v >= 0
@@ -37,3 +55,4 @@ float intersectTriangle(Ray ray, vec3 a, vec3 b, vec3 c)
     //@ return NO_HIT;
     //@end
 }
+//@end-open

@@ -10,6 +10,16 @@
 //   glow = uGlowColor * (1 - x)^3 for x < 1, else nothing
 vec3 sunGlow(Ray ray)
 {
+    //@open
+    //@ // TODO(06.d): the glow above for the sun sphere uSpheres[uGlowSphere] (none
+    //@ // when uGlowSphere < 0), nothing when the sun is behind the eye or when
+    //@ // something other than the sun lies on the ray before its closest point.
+    //@ // An index below 0 does not compile where uGlowSphere is a constant -1:
+    //@ // index with max(uGlowSphere, 0).
+    //@ // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun).
+    //@ labTodo();
+    //@ return vec3(0.0);
+    //@guided
     if (uGlowSphere < 0) return vec3(0.0);
     // (max: in a program specialised to a scene without a sun, uGlowSphere
     // is the constant -1, and a constant index below 0 does not compile.)
@@ -36,4 +46,5 @@ vec3 sunGlow(Ray ray)
     //@ labTodo();
     //@ return vec3(0.0);
     //@end
+    //@end-open
 }

@@ -13,6 +13,15 @@ void planeAxes(vec3 n, out vec3 axisU, out vec3 axisV)
 
 vec2 planeUV(vec3 point, vec3 origin, vec3 n, float tile)
 {
+    //@open
+    //@ // TODO(06.b): (u, v) of `point` on the plane with unit normal n through
+    //@ // `origin`: its distances from `origin` along planeAxes' axisU and axisV,
+    //@ // in tiles of `tile` units. The texture repeats by itself (GL_REPEAT): u
+    //@ // and v may grow without bound.
+    //@ // Checked by: raylab check --stage 06 (function planeUV; views front, floor-closeup).
+    //@ labTodo();
+    //@ return vec2(0.0);
+    //@guided
     // TODO(06.b): project point - origin onto the two axes from planeAxes
     // and divide by the tile size. The texture repeats by itself (its wrap
     // mode is GL_REPEAT), so u and v may grow without bound.
@@ -26,4 +35,5 @@ vec2 planeUV(vec3 point, vec3 origin, vec3 n, float tile)
     //@ labTodo();
     //@ return vec2(0.0);
     //@end
+    //@end-open
 }

@@ -7,6 +7,14 @@
 // the face the direction points at, and the spot on it.
 vec3 skyColor(vec3 dir)
 {
+    //@open
+    //@ // TODO(06.c): the colour the sky shows in direction `dir`: the cube map
+    //@ // uSky when the scene has one (uHasSky != 0), else uBackground. Read
+    //@ // textures at level 0 in the tracer (guide, section 3).
+    //@ // Checked by: raylab check --stage 06 (views front, sky-up).
+    //@ labTodo();
+    //@ return uBackground;
+    //@guided
     if (uHasSky == 0) return uBackground;
     // TODO(06.c): look the direction up in the cube map uSky (level 0, as
     // for every texture in the tracer: textureLod(uSky, dir, 0.0)).
@@ -17,4 +25,5 @@ vec3 skyColor(vec3 dir)
     //@ labTodo();
     //@ return uBackground;
     //@end
+    //@end-open
 }

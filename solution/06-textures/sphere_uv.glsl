@@ -11,6 +11,13 @@ const float PI = 3.14159265358979;
 
 vec2 sphereUV(vec3 d)
 {
+    //@open
+    //@ // TODO(06.a): (u, v) of the unit direction d, as defined above, both in
+    //@ // [0, 1]; d.y may round to just beyond 1 at a pole.
+    //@ // Checked by: raylab check --stage 06 (function sphereUV; views front, earth-closeup, moon-closeup).
+    //@ labTodo();
+    //@ return vec2(0.0);
+    //@guided
     // TODO(06.a): u and v as above. GLSL's two-argument atan(y, x) is
     // atan2: it returns the angle in (-pi, pi] of the point (x, y).
     // Checked by: raylab check --stage 06 (function sphereUV, views front, earth-closeup, moon-closeup).
@@ -22,6 +29,7 @@ vec2 sphereUV(vec3 d)
     //@ labTodo();
     //@ return vec2(0.0);
     //@end
+    //@end-open
 }
 
 // The direction of growing u (east) at d: the derivative of the point with

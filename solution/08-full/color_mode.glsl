@@ -7,6 +7,13 @@ uniform int uColorMode;
 
 vec3 applyColorMode(vec3 c)
 {
+    //@open
+    //@ // TODO(08.a): c's channels in the order of mode uColorMode (above); any
+    //@ // other mode shows c as it is.
+    //@ // Checked by: raylab check --stage 08 (function applyColorMode; views lite-brb, lite-brr, lite-rbb, lite-ggr).
+    //@ labTodo();
+    //@ return c;
+    //@guided
     // TODO(08.a): return the channels in the order of mode uColorMode
     // (GLSL swizzles help: c.brb is vec3(c.b, c.r, c.b)).
     // Checked by: raylab check --stage 08 (function applyColorMode, views lite-brb, lite-brr, lite-rbb, lite-ggr).
@@ -20,4 +27,5 @@ vec3 applyColorMode(vec3 c)
     //@ labTodo();
     //@ return c;
     //@end
+    //@end-open
 }

@@ -1,5 +1,10 @@
+//@open
+//@ // The spheres and mesh triangles along a ray, found through the BVH (see
+//@ // find_closest.glsl): the walk is yours (TODO 08.b).
+//@guided
 // The spheres and mesh triangles along a ray, found through the BVH (see
 // find_closest.glsl). (Provided: nothing to do here.)
+//@end-open
 // The tree's nodes and items come from bvh_access.glsl: bvhNodeLow(n) is
 // (box min, first), bvhNodeHigh(n) (box max, code). A leaf's code is 8 *
 // count + the kind of its items (KIND_SPHERE or KIND_MESH): they are
@@ -27,6 +32,20 @@ float enterNode(int node, vec3 origin, vec3 invDir, float tMax, out int first, o
 // stops at the first object found (shadow rays need no more).
 void walkBvh(Ray ray, inout Hit hit, bool anyHit)
 {
+    //@open
+    //@ // TODO(08.b): walk the BVH from its root, node 0: keep in `hit` the nearest
+    //@ // sphere (KIND_SPHERE) or mesh triangle (KIND_MESH) nearer than hit.t, with
+    //@ // keepNearer, testing only the items of leaves whose box the ray enters
+    //@ // before hit.t (enterNode); with anyHit, return as soon as hit.id >= 0.
+    //@ //  - No recursion in GLSL: the boxes still to visit wait on a stack of your
+    //@ //    own, at most BVH_STACK_SIZE deep (guide, section 3).
+    //@ //  - Visit the nearer child first, and skip a waiting box that the ray
+    //@ //    enters only beyond the nearest hit found meanwhile.
+    //@ //  - Sphere i: intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w); mesh
+    //@ //    triangle i: intersectMeshTriangle(ray, i).
+    //@ // Checked by: raylab check --stage 08 (views pro-front, pro-cube, mesh-front).
+    //@ labTodo();
+    //@guided
     vec3 invDir = inverseDirection(ray.dir);
     int stackNode[BVH_STACK_SIZE];
     float stackEnter[BVH_STACK_SIZE];
@@ -83,6 +102,7 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
         first = int(bvhNodeLow(node).w);
         code = int(bvhNodeHigh(node).w);
     }
+    //@end-open
 }
 
 // Keeps the nearest sphere or mesh-triangle hit closer than hit.t; with

@@ -16,10 +16,24 @@ flat out int vLabTodo;  // 1 when this vertex went through an unfinished TODO
 
 void main()
 {
+    //@open
+    //@ // TODO(f1.d): the vertex on the screen (gl_Position, through toWorld and
+    //@ // toClip) and what the fragment shader needs: its world position, its
+    //@ // world-space normal (normalMatrix) and its texture coordinate, as the
+    //@ // outputs above say; vLabTodo as below.
+    //@ // Checked by: raylab check --stage f1 (all views).
+    //@ labTodo();
+    //@ gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+    //@ vWorldPos = vec3(0.0);
+    //@ vNormal = vec3(0.0, 0.0, 1.0);
+    //@ vUv = vec2(0.0);
+    //@ vLabTodo = gLabTodoReached ? 1 : 0;
+    //@guided
     vec4 world = toWorld(aPosition);
     gl_Position = toClip(world);
     vWorldPos = world.xyz;
     vNormal = normalMatrix(uModel) * aNormal;
     vUv = aUv;
     vLabTodo = gLabTodoReached ? 1 : 0;
+    //@end-open
 }

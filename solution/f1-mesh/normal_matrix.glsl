@@ -1,3 +1,20 @@
+//@open
+//@ // The matrix that carries normals from object space to world space.
+//@ //
+//@ // TODO(f1.b): a normal is not a point: it must stay perpendicular to the
+//@ // surface, under every model matrix this course uses (rotations, moves,
+//@ // uniform and non-uniform scales, so a sphere squashed into an ellipsoid
+//@ // too). Return the 3x3 matrix that does that for MODEL; its result need not
+//@ // be unit length (guide, section 3 derives it).
+//@ // Checked by: raylab check --stage f1 (view "squashed").
+//@ #include "lab_todo.glsl"
+//@
+//@ mat3 normalMatrix(mat4 model)
+//@ {
+//@     labTodo();
+//@     return mat3(1.0);
+//@ }
+//@guided
 // The matrix that carries normals from object space to world space.
 //
 // A normal is not a point: it must stay perpendicular to the surface. The
@@ -18,3 +35,4 @@ mat3 normalMatrix(mat4 model)
     //@ return mat3(1.0);
     //@end
 }
+//@end-open

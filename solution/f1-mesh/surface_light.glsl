@@ -6,6 +6,15 @@
 
 vec3 surfaceLight(vec3 albedo, vec3 normal, vec3 toLight)
 {
+    //@open
+    //@ // TODO(f1.c): the colour the point sends toward the eye: ALBEDO lit by the
+    //@ // ambient light uAmbient plus Lambert's diffuse term of the light
+    //@ // uLightColor coming from the unit direction TOLIGHT (toward the light).
+    //@ // NORMAL is the interpolated surface normal: not unit length any more.
+    //@ // Checked by: raylab check --stage f1 (all views).
+    //@ labTodo();
+    //@ return albedo;
+    //@guided
     // TODO(f1.c): return albedo * (uAmbient + uLightColor * max(n . l, 0)).
     // NORMAL arrives interpolated between vertices, so it is no longer unit
     // length: normalise it first.
@@ -17,4 +26,5 @@ vec3 surfaceLight(vec3 albedo, vec3 normal, vec3 toLight)
     //@ labTodo();
     //@ return albedo;
     //@end
+    //@end-open
 }

@@ -15,6 +15,19 @@ layout(location = 0) out vec4 fragColor;
 
 void main()
 {
+    //@open
+    //@ // TODO(f2.f): the colour and opacity of this pixel of a shell: the fur
+    //@ // pattern uPattern (tiled uPatternScale times over the skin's texture
+    //@ // coordinates) gives shellAlpha; where that is below 0.001 nothing is
+    //@ // drawn (discard), so the shells below show through. The colour is the
+    //@ // colour map's, darkened by shellShadow (uShadowIntensity) and lit by
+    //@ // surfaceLight (uLightDir). End with labTodoIf and labOverlay as lab f1's
+    //@ // mesh.frag does.
+    //@ // Checked by: raylab check --stage f2 (views front, close; all views).
+    //@ labTodo();
+    //@ labTodoIf(true);
+    //@ fragColor = vec4(labOverlay(texture(uColorMap, vUv).rgb), 1.0);
+    //@guided
     float pattern = texture(uPattern, vUv * uPatternScale).r;
     float alpha = shellAlpha(pattern, vLayer);
     // No hair here: leave the pixel to the shells below (and write nothing).
@@ -23,4 +36,5 @@ void main()
     vec3 color = surfaceLight(albedo, vNormal, uLightDir);
     labTodoIf(vLabTodo != 0);
     fragColor = vec4(labOverlay(color), alpha);
+    //@end-open
 }

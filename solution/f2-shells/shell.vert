@@ -19,6 +19,21 @@ flat out int vLabTodo;
 
 void main()
 {
+    //@open
+    //@ // TODO(f2.e): the vertex of shell number uShellIndex of uShellCount: its
+    //@ // layer (shellLayer), the vertex moved off the skin by shellOffset along
+    //@ // its world-space normal - in world space, so that the fur keeps its
+    //@ // length however the model is scaled - and the outputs above (vNormal
+    //@ // unit length).
+    //@ // Checked by: raylab check --stage f2 (views rim, squashed, torus; all views).
+    //@ labTodo();
+    //@ gl_Position = toClip(toWorld(aPosition));
+    //@ vWorldPos = toWorld(aPosition).xyz;
+    //@ vNormal = vec3(0.0, 0.0, 1.0);
+    //@ vUv = aUv;
+    //@ vLayer = 0.0;
+    //@ vLabTodo = gLabTodoReached ? 1 : 0;
+    //@guided
     float layer = shellLayer(uShellIndex, uShellCount);
     // The offset is taken in world space, so that the fur keeps its length
     // however the model is scaled.
@@ -31,4 +46,5 @@ void main()
     vUv = aUv;
     vLayer = layer;
     vLabTodo = gLabTodoReached ? 1 : 0;
+    //@end-open
 }

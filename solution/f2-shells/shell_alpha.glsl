@@ -6,6 +6,14 @@
 
 float shellAlpha(float pattern, float layer)
 {
+    //@open
+    //@ // TODO(f2.c): the opacity: the skin is opaque everywhere; above it the
+    //@ // hair's PATTERN value, fading linearly to nothing at the tips (guide,
+    //@ // section 1).
+    //@ // Checked by: raylab check --stage f2 (function shellAlpha; all views).
+    //@ labTodo();
+    //@ return 1.0;
+    //@guided
     // TODO(f2.c): 1 for the skin; else pattern * (1 - layer).
     // Checked by: raylab check --stage f2 (function shellAlpha, all views).
     //@solution
@@ -14,4 +22,5 @@ float shellAlpha(float pattern, float layer)
     //@ labTodo();
     //@ return 1.0;
     //@end
+    //@end-open
 }

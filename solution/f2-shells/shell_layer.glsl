@@ -10,6 +10,14 @@
 
 float shellLayer(int drawIndex, int shellCount)
 {
+    //@open
+    //@ // TODO(f2.a): the layer of draw DRAWINDEX of SHELLCOUNT, in the order the
+    //@ // picture needs (guide, section 2), the layers evenly spaced from the skin
+    //@ // (0) to the tips (1). With one shell there is only the skin.
+    //@ // Checked by: raylab check --stage f2 (function shellLayer; all views).
+    //@ labTodo();
+    //@ return 0.0;
+    //@guided
     // TODO(f2.a): return the layer of draw DRAWINDEX: 0 for the first draw,
     // 1 for the last, evenly spaced between. With one shell, only the skin.
     // Checked by: raylab check --stage f2 (function shellLayer, all views).
@@ -19,4 +27,5 @@ float shellLayer(int drawIndex, int shellCount)
     //@ labTodo();
     //@ return 0.0;
     //@end
+    //@end-open
 }

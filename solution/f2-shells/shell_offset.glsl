@@ -5,6 +5,13 @@
 
 vec3 shellOffset(vec3 normal, float layer, float furLength)
 {
+    //@open
+    //@ // TODO(f2.b): the offset above. NORMAL may not be unit length; the offset's
+    //@ // length is LAYER * FURLENGTH whatever NORMAL's.
+    //@ // Checked by: raylab check --stage f2 (function shellOffset; all views).
+    //@ labTodo();
+    //@ return vec3(0.0);
+    //@guided
     // TODO(f2.b): return the offset. NORMAL may not be unit length.
     // Checked by: raylab check --stage f2 (function shellOffset, all views).
     //@solution
@@ -13,4 +20,5 @@ vec3 shellOffset(vec3 normal, float layer, float furLength)
     //@ labTodo();
     //@ return vec3(0.0);
     //@end
+    //@end-open
 }

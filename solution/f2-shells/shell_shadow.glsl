@@ -5,6 +5,12 @@
 
 float shellShadow(float layer, float intensity)
 {
+    //@open
+    //@ // TODO(f2.d): the factor above.
+    //@ // Checked by: raylab check --stage f2 (function shellShadow; all views).
+    //@ labTodo();
+    //@ return 1.0;
+    //@guided
     // TODO(f2.d): return the factor above.
     // Checked by: raylab check --stage f2 (function shellShadow, all views).
     //@solution
@@ -13,4 +19,5 @@ float shellShadow(float layer, float intensity)
     //@ labTodo();
     //@ return 1.0;
     //@end
+    //@end-open
 }

@@ -22,6 +22,35 @@ out vec3 gNormal;  // world space
 out float gFade;   // 1 where the eye grazes the surface, less where it looks down on it
 flat out int gLabTodo;
 
+// How much of a fin shows: 1 where the eye grazes the surface, less where
+// it looks down on it (a fin seen face-on looks like a flat card), from the
+// edge B-C and its vertex normals. (Provided.)
+float finFade(vec3 b, vec3 c, vec3 normalB, vec3 normalC)
+{
+    vec3 n = normalB + normalC;
+    vec3 toEye = normalize(uEye - 0.5 * (b + c));
+    return dot(n, n) > 1e-12 ? 1.0 - abs(dot(toEye, normalize(n))) : 1.0;
+}
+
+//@open
+//@ // TODO(f3.b): the fin of edge B-C (vertices 1 and 2; 0 and 3 are A and D),
+//@ // only when the edge is on the silhouette seen from uEye (isSilhouette):
+//@ // one quad, emitted as a triangle strip of 4 vertices (guide, section 5),
+//@ // standing on the edge: its root edge is B-C, its top edge B and C moved
+//@ // along their own vertex normals (vNormal[1], vNormal[2]) by uFurLength,
+//@ // so that neighbouring fins meet at the top as they do at the root. Each
+//@ // vertex gets gl_Position (toClip) and the outputs above:
+//@ //  - gFinUv: u along the edge in fur lengths (0 at B, |C - B| / uFurLength
+//@ //    at C), v 0 at the root and 1 at the top;
+//@ //  - gSkinUv and gNormal: those of the edge vertex it stands on;
+//@ //  - gFade: finFade(b, c, vNormal[1], vNormal[2]), the same for all four;
+//@ //  - gLabTodo: 1 when gLabTodoReached or its edge vertex's vLabTodo is set.
+//@ // Checked by: raylab check --stage f3 (fin count; views coarse, rim; every view with fins).
+//@ void main()
+//@ {
+//@     labTodo();
+//@ }
+//@guided
 void corner(vec3 p, vec2 finUv, int vertex, float fade)
 {
     gl_Position = toClip(vec4(p, 1.0));
@@ -53,11 +82,7 @@ void main()
     //@ vec3 topC = c + vec3(0.0, uFurLength, 0.0);
     //@end
 
-    // A fin seen face-on looks like a flat card: fade it where the eye looks
-    // down on the surface, keep it where the view grazes it.
-    vec3 n = vNormal[1] + vNormal[2];
-    vec3 toEye = normalize(uEye - 0.5 * (b + c));
-    float fade = dot(n, n) > 1e-12 ? 1.0 - abs(dot(toEye, normalize(n))) : 1.0;
+    float fade = finFade(b, c, vNormal[1], vNormal[2]);
     // The strands keep their proportions: one repeat of the fin texture per
     // fur length along the edge.
     float u = length(c - b) / uFurLength;
@@ -67,3 +92,4 @@ void main()
     corner(topC, vec2(u, 1.0), 2, fade);
     EndPrimitive();
 }
+//@end-open

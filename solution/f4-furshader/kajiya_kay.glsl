@@ -10,6 +10,14 @@
 
 vec2 kajiyaKay(vec3 tangent, vec3 toLight, vec3 toEye, float shininess)
 {
+    //@open
+    //@ // TODO(f4.b): (diffuse, specular) above for the unit vectors TANGENT,
+    //@ // TOLIGHT and TOEYE. No NaN may reach the picture, whatever rounding does
+    //@ // to the dot products (guide, section 4).
+    //@ // Checked by: raylab check --stage f4 (function kajiyaKay; view "fur-shader").
+    //@ labTodo();
+    //@ return vec2(1.0, 0.0);
+    //@guided
     // TODO(f4.b): return (diffuse, specular) for the unit vectors above.
     // Rounding can make (T . L)^2 a hair above 1: clamp what goes into
     // sqrt() and pow() at 0, or a NaN reaches the picture.
@@ -24,4 +32,5 @@ vec2 kajiyaKay(vec3 tangent, vec3 toLight, vec3 toEye, float shininess)
     //@ labTodo();
     //@ return vec2(1.0, 0.0);
     //@end
+    //@end-open
 }

@@ -20,6 +20,13 @@ const float kSpecular = 0.35;
 void main()
 {
     vec3 toEye = normalize(uEye - gWorldPos);
+    //@open
+    //@ // TODO(f4.c): the strand's light (diffuse, specular) from kajiyaKay with
+    //@ // shininess kShininess: a strand has no normal, only a direction.
+    //@ // Checked by: raylab check --stage f4 (view "fur-shader-shaggy").
+    //@ labTodo();
+    //@ vec2 light = vec2(1.0, 0.0);
+    //@guided
     // TODO(f4.c): light the strand with kajiyaKay(): a strand is a thin
     // cylinder, so its direction is the strand's tangent (gTangent, not yet
     // unit length), not the skin's normal.
@@ -31,6 +38,7 @@ void main()
     //@ labTodo();
     //@ vec2 light = vec2(1.0, 0.0);
     //@end
+    //@end-open
     // The hairs on the far side of the body are in its shadow.
     float skin = clamp(dot(gNormal, uLightDir) * 0.5 + 0.5, 0.0, 1.0);
     vec3 albedo = texture(uColorMap, gUv).rgb * shellShadow(gS, uShadowIntensity);

@@ -39,25 +39,55 @@ float hash01(uint x)
     return float(x >> 8) / 16777216.0;
 }
 
-void main()
+// How many strands grow from a triangle of AREA: in proportion to the area,
+// so that small and large triangles carry equally dense fur; the fraction
+// becomes one more strand with probability JITTER's. At most
+// STRANDS_PER_TRIANGLE. (Provided.)
+int strandCount(float area, float jitter)
 {
-    vec3 a = vWorldPos[0], b = vWorldPos[1], c = vWorldPos[2];
-    float area = 0.5 * length(cross(b - a, c - a));
-    // Roots in proportion to the area, so that small and large triangles
-    // carry equally dense fur; the fraction becomes one more strand with
-    // that probability.
-    float jitter = hash01(uint(gl_PrimitiveIDIn));
     // (Clamped before the conversion: a float past the largest int has no
     // defined int value in GLSL.)
-    int count = int(min(area * uStrandDensity + jitter, float(STRANDS_PER_TRIANGLE)));
+    return int(min(area * uStrandDensity + jitter, float(STRANDS_PER_TRIANGLE)));
+}
+
+// Where strand I of a triangle grows: its barycentric weights (they add up
+// to 1), well-spread points of the unit square (the R2 sequence, shifted by
+// JITTER) folded into the triangle. (Provided.)
+vec3 strandRootWeights(int i, float jitter)
+{
+    vec2 r = fract(vec2(0.7548776662, 0.5698402910) * float(i + 1) + jitter);
+    if (r.x + r.y > 1.0) r = 1.0 - r;
+    return vec3(1.0 - r.x - r.y, r.x, r.y);
+}
+
+void main()
+{
+    //@open
+    //@ // TODO(f4.d): the strands of this triangle (guide, section 5): their
+    //@ // number strandCount(area, jitter), with jitter = hash01 of the
+    //@ // triangle's gl_PrimitiveIDIn; strand i grows at the barycentric weights
+    //@ // strandRootWeights(i, jitter), which also blend the corners' normals
+    //@ // (normalised) and texture coordinates. Each strand is one line strip of
+    //@ // STRAND_SEGMENTS + 1 vertices at s = k / STRAND_SEGMENTS, k = 0 ..
+    //@ // STRAND_SEGMENTS, placed by strandPoint (uFurLength, uGravity), with
+    //@ // the outputs above: gTangent from this vertex to the next one (the tip
+    //@ // keeps the last segment's), gNormal and gUv those of the root, gS = s,
+    //@ // gLabTodo 1 when gLabTodoReached or a corner's vLabTodo is set.
+    //@ //  - Never more than STRAND_MAX_VERTICES vertices: the loops' bounds
+    //@ //    must be constants the compiler can see (the output budget).
+    //@ //  - Outputs are undefined after EmitVertex(): write every one for
+    //@ //    every vertex.
+    //@ // Checked by: raylab check --stage f4 (views fur-shader, fur-shader-side, fur-shader-shaggy, fur-shader-cube).
+    //@ labTodo();
+    //@guided
+    vec3 a = vWorldPos[0], b = vWorldPos[1], c = vWorldPos[2];
+    float area = 0.5 * length(cross(b - a, c - a));
+    float jitter = hash01(uint(gl_PrimitiveIDIn));
+    int count = strandCount(area, jitter);
     int todo = gLabTodoReached || vLabTodo[0] != 0 ? 1 : 0;
     for (int i = 0; i < STRANDS_PER_TRIANGLE; ++i) {
         if (i >= count) break;
-        // Well-spread points of the unit square (the R2 sequence), folded
-        // into the triangle.
-        vec2 r = fract(vec2(0.7548776662, 0.5698402910) * float(i + 1) + jitter);
-        if (r.x + r.y > 1.0) r = 1.0 - r;
-        vec3 w = vec3(1.0 - r.x - r.y, r.x, r.y);
+        vec3 w = strandRootWeights(i, jitter);
         vec3 root = w.x * a + w.y * b + w.z * c;
         vec3 normal = normalize(w.x * vNormal[0] + w.y * vNormal[1] + w.z * vNormal[2]);
         vec2 uv = w.x * vUv[0] + w.y * vUv[1] + w.z * vUv[2];
@@ -83,4 +113,5 @@ void main()
         }
         EndPrimitive();
     }
+    //@end-open
 }

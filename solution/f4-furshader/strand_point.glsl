@@ -9,6 +9,13 @@
 
 vec3 strandPoint(vec3 root, vec3 normal, float s, float furLength, vec3 gravity)
 {
+    //@open
+    //@ // TODO(f4.a): the point above. NORMAL may not be unit length; the strand's
+    //@ // shape must not depend on its length.
+    //@ // Checked by: raylab check --stage f4 (function strandPoint; view "fur-shader-shaggy").
+    //@ labTodo();
+    //@ return root + s * vec3(0.0, furLength, 0.0);  // until then: straight up
+    //@guided
     // TODO(f4.a): return the point above. NORMAL may not be unit length.
     // Checked by: raylab check --stage f4 (function strandPoint, view
     // "fur-shader-shaggy").
@@ -18,4 +25,5 @@ vec3 strandPoint(vec3 root, vec3 normal, float s, float furLength, vec3 gravity)
     //@ labTodo();
     //@ return root + s * vec3(0.0, furLength, 0.0);  // until then: straight up
     //@end
+    //@end-open
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <set>
 #include <sstream>
 
 using namespace raylab::test;
@@ -30,22 +31,42 @@ std::string normalised(const std::string& line) {
     return out;
 }
 
-// The code lines of every //@solution region of STAGE's own files.
-std::vector<std::vector<std::string>> solutionRegions(const raylab::StageInfo& stage) {
+// The code lines of every //@solution region of STAGE's own files and, at
+// the open level, the code an open region's guided part gives (the guided
+// level hands it out, the open level takes it away), as regions of their
+// own; lines the open stub has too (a signature, a brace) left out.
+std::vector<std::vector<std::string>> solutionRegions(const raylab::StageInfo& stage,
+                                                      raylab::Level level) {
     std::vector<std::vector<std::string>> regions;
     for (const auto& e : fs::directory_iterator(stage.folder())) {
-        if (e.path().filename() == "stage.json") continue;
+        if (e.path().filename() == "stage.json" || e.path().filename() == "guide.md") continue;
         std::istringstream in(readFile(e.path()));
-        std::vector<std::string>* region = nullptr;
+        long region = -1, given = -1;  // indices in `regions`, -1: none
+        bool inStub = false;
+        std::set<std::string> stub;  // the open stub's lines
         for (std::string line; std::getline(in, line);) {
             const std::string l = normalised(line);
             if (l.rfind("//@solution", 0) == 0) {
                 regions.emplace_back();
-                region = &regions.back();
+                region = long(regions.size()) - 1;
             } else if (l.rfind("//@stub", 0) == 0) {
-                region = nullptr;
-            } else if (region && !l.empty() && l.rfind("//", 0) != 0) {
-                region->push_back(l);
+                region = -1;
+            } else if (l == "//@open") {
+                inStub = true;
+                stub.clear();
+            } else if (l == "//@guided") {
+                inStub = false;
+                if (level == raylab::Level::Open) {
+                    regions.emplace_back();
+                    given = long(regions.size()) - 1;
+                }
+            } else if (l == "//@end-open") {
+                given = -1;
+            } else if (inStub) {
+                if (l.rfind("//@ ", 0) == 0) stub.insert(normalised(l.substr(4)));
+            } else if (!l.empty() && l.rfind("//", 0) != 0) {
+                if (region >= 0) regions[std::size_t(region)].push_back(l);
+                else if (given >= 0 && !stub.count(l)) regions[std::size_t(given)].push_back(l);
             }
         }
     }
@@ -78,11 +99,12 @@ std::vector<std::string> filesWithARegion(const fs::path& dir,
     return found;
 }
 
-std::vector<std::vector<std::string>> regionsOf(const std::string& list) {
+std::vector<std::vector<std::string>> regionsOf(const std::string& list,
+                                               raylab::Level level = raylab::Level::Guided) {
     std::vector<std::vector<std::string>> all;
     std::istringstream in(list);
     for (std::string id; std::getline(in, id, ',');) {
-        auto r = solutionRegions(raylab::findStage(id));
+        auto r = solutionRegions(raylab::findStage(id), level);
         all.insert(all.end(), r.begin(), r.end());
     }
     return all;
@@ -215,6 +237,7 @@ TEST(Handout, BadRequestsWriteNothing) {
         {"--stages 01 --out " + quote(dir / "d") + " --labs " + quote(dir / "nolabs"),
          "does not exist"},
         {"--stages 01 --carry some --out " + quote(dir / "e"), "--carry must be own"},
+        {"--stages 01 --level expert --out " + quote(dir / "g"), "unknown level 'expert'"},
         {"--stages 01 --out " + quote(dir / "f") + " --course " + quote(dir / "none.json"),
          "cannot read"},
     };
@@ -237,4 +260,70 @@ TEST(Handout, TheGuidesShowTheCoursesWeights) {
     const std::string guide = readFile(dir / "out/03-shadows/README.md");
     EXPECT_NE(guide.find("**Images, 20 points**"), std::string::npos) << guide;
     EXPECT_NE(guide.find("`lightVisible` 80"), std::string::npos);
+}
+
+// The open level (`--level open`): whole functions from their contracts.
+// Every stage of both tracks hands out, its untouched lab fails its checks,
+// the lab solved passes them, and no handout holds the code that level
+// takes away (the guided level's given code of an open region included).
+TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
+    ScratchDir dir;
+    for (const char* release : {"01-08", "f1-f4"}) {
+        const fs::path out = dir / (std::string("open-") + release);
+        CommandResult r =
+            runRaylab(std::string("handout --level open --stages ") + release + " --out " +
+                      quote(out));
+        ASSERT_EQ(r.exitCode, 0) << r.all();
+        EXPECT_NE(r.out.find("at the open level"), std::string::npos) << r.out;
+        std::string ids;
+        for (const std::string& stage : topLevel(out))
+            if (stage != "README.md") ids += (ids.empty() ? "" : ",") + stage;
+        EXPECT_EQ(filesWithARegion(out, regionsOf(ids, raylab::Level::Open)),
+                  std::vector<std::string>{})
+            << release;
+        for (const std::string& stage : topLevel(out)) {
+            if (stage == "README.md") continue;
+            CommandResult c = runRaylab("check --stage " + stage + " --lab " + quote(out) +
+                                        " --size 64x48");
+            EXPECT_EQ(c.exitCode, 1) << stage << " as handed out: " << c.all();
+        }
+    }
+    // The control: a guided handout holds the open level's answers (its given code).
+    const fs::path guided = dir / "guided";
+    ASSERT_EQ(runRaylab("handout --stages 04 --out " + quote(guided)).exitCode, 0);
+    EXPECT_FALSE(filesWithARegion(guided, regionsOf("04-recursion", raylab::Level::Open)).empty());
+
+    // The open lab solved: every check passes, and a helper function of the
+    // student's own (not in the handed-out file) breaks neither the program
+    // nor the function checks' harness.
+    const fs::path out = dir / "open-01-08";
+    ScratchDir solved;
+    writeSolvedLabs(solved.path());
+    for (const char* stage : {"01-raycast", "02-shading", "03-shadows", "04-recursion"})
+        for (const auto& e : fs::directory_iterator(out / stage))
+            if (e.path().extension() == ".glsl" || e.path().extension() == ".frag")
+                fs::copy_file(solved / stage / e.path().filename(), e.path(),
+                              fs::copy_options::overwrite_existing);
+    writeFile(out / "01-raycast" / "intersect_sphere.glsl",
+              "// A student's own version, with a helper of their own.\n"
+              "float nearestRootInFront(float q, float c)\n"
+              "{\n"
+              "    float t0 = min(c / q, q), t1 = max(c / q, q);\n"
+              "    return t0 > T_MIN ? t0 : (t1 > T_MIN ? t1 : NO_HIT);\n"
+              "}\n\n"
+              "float intersectSphere(Ray ray, vec3 center, float radius)\n"
+              "{\n"
+              "    vec3 oc = ray.origin - center;\n"
+              "    float b = dot(oc, ray.dir);\n"
+              "    vec3 closest = oc - b * ray.dir;\n"
+              "    float h = radius * radius - dot(closest, closest);\n"
+              "    if (h < 0.0) return NO_HIT;\n"
+              "    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(h);\n"
+              "    if (q == 0.0) return NO_HIT;\n"
+              "    return nearestRootInFront(q, dot(oc, oc) - radius * radius);\n"
+              "}\n");
+    for (const char* stage : {"01", "02", "03", "04"}) {
+        CommandResult c = runRaylab(std::string("check --stage ") + stage + " --lab " + quote(out));
+        EXPECT_EQ(c.exitCode, 0) << stage << " solved: " << c.all();
+    }
 }

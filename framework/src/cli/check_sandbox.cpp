@@ -55,7 +55,11 @@ std::string crashingFile(const StageInfo& stage, const fs::path& labRoot,
     const fs::path mine = labRoot / stage.id;
     // The handed-out text comes from solution/ (as labgen writes labs/), so
     // a student editing labs/ in place is compared with the lab as it was.
+    // Either level's text stands in; a file as either level hands it out is
+    // not the one that crashes.
     const std::map<std::string, std::string> handedOut = labFiles(stage, MarkedForm::Lab);
+    const std::map<std::string, std::string> openLab =
+        labFiles(stage, MarkedForm::Lab, Level::Open);
     const fs::path scratch =
         fs::temp_directory_path() / ("raylab-check-crash-" + std::to_string(::getpid()));
     struct Cleanup {
@@ -70,7 +74,9 @@ std::string crashingFile(const StageInfo& stage, const fs::path& labRoot,
     probeLimits.timeoutSeconds = std::min(limits.timeoutSeconds, 60.0);
     for (const auto& [name, text] : handedOut) {
         const fs::path file = mine / name;
-        if (!fs::is_regular_file(file) || fileText(file) == text) continue;
+        if (!fs::is_regular_file(file) || fileText(file) == text ||
+            fileText(file) == openLab.at(name))
+            continue;
         fs::remove_all(scratch);
         fs::create_directories(scratch);
         fs::copy(mine, scratch / stage.id, fs::copy_options::recursive);

@@ -24,8 +24,10 @@ namespace fs = std::filesystem;
 namespace {
 
 int cmdHandout(const std::string& list, const std::string& outDir, const std::string& labDir,
-               const std::string& carryName, const std::string& courseFile) {
+               const std::string& carryName, const std::string& courseFile,
+               const std::string& levelName) {
     const Carry carry = parseCarry(carryName);
+    const Level level = parseLevel(levelName);
     // The guides' "How you are graded" with the course's weights.
     const CourseSettings course =
         courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
@@ -36,16 +38,16 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     // How the guides' commands name the handout: as --out did, from the RayLab folder.
     const std::string labFolder = out.generic_string() + "/";
     writeWhole(out, "the handout",
-               [&](const fs::path& to) { writeHandoutFolder(plan, labs, to, labFolder, course); });
+               [&](const fs::path& to) { writeHandoutFolder(plan, labs, to, labFolder, course, level); });
     std::string ids;
     bool reads = false;
     for (const HandoutStage& h : plan) {
         ids += (ids.empty() ? "" : ", ") + h.stage->id;
         reads = reads || !h.fromStudent.empty();
     }
-    std::printf("raylab handout: wrote %s with %zu stage%s (%s): no solution of a stage it hands "
-                "out%s\n",
-                out.c_str(), plan.size(), plan.size() == 1 ? "" : "s", ids.c_str(),
+    std::printf("raylab handout: wrote %s with %zu stage%s (%s) at the %s level: no solution of a "
+                "stage it hands out%s\n",
+                out.c_str(), plan.size(), plan.size() == 1 ? "" : "s", ids.c_str(), raylab::levelName(level),
                 reads ? "; earlier stages' files are read from the student's own stage folders"
                       : "");
     return 0;
@@ -63,12 +65,19 @@ Command handoutCommand() {
                 auto labs = std::make_shared<std::string>();
                 auto carry = std::make_shared<std::string>("own");
                 auto course = std::make_shared<std::string>();
+                auto level = std::make_shared<std::string>("guided");
                 cmd.add_option("--stages", *stages,
                                "the released stages: a range within a track (01-03, f1-f2), a "
                                "list (01,02,f1), both (01-03,f1) or all")
                     ->required();
                 cmd.add_option("--out", *out, "the folder to write (new, or empty)")->required();
-                cmd.add_option("--labs", *labs, "the labs to copy from (default: labs/)");
+                cmd.add_option("--labs", *labs,
+                               "the labs to copy from (default: labs/); at the open level only "
+                               "their pictures and earlier stages' solved files");
+                cmd.add_option("--level", *level,
+                               "guided (labs/: the algorithm's structure given) or open (whole "
+                               "functions written from their contracts)")
+                    ->capture_default_str();
                 cmd.add_option("--carry", *carry,
                                "earlier stages this handout does not release: own (read from "
                                "the student's own folders) or solved (put in, solved: for a "
@@ -77,7 +86,7 @@ Command handoutCommand() {
                 cmd.add_option("--course", *course,
                                "a course file (docs/grading.md): the guides show its weights");
                 return std::function<int()>(
-                    [=] { return cmdHandout(*stages, *out, *labs, *carry, *course); });
+                    [=] { return cmdHandout(*stages, *out, *labs, *carry, *course, *level); });
             }};
 }
 

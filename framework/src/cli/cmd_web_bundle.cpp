@@ -75,8 +75,9 @@ const char* const kIndex =
     "<meta http-equiv=\"refresh\" content=\"0; url=web/\">\n<a href=\"web/\">RayLab</a>\n";
 
 int cmdWebBundle(const std::string& list, const std::string& outDir, const std::string& carryName,
-                 const std::string& courseFile) {
+                 const std::string& courseFile, const std::string& levelName) {
     const Carry carry = parseCarry(carryName);
+    const Level level = parseLevel(levelName);
     const CourseSettings course =
         courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
     const std::vector<HandoutStage> plan = planHandout(parseStageList(list), carry);
@@ -90,7 +91,7 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
     const fs::path out = newOutputFolder(outDir);
     writeWhole(out, "the bundle", [&](const fs::path& temp) {
         fs::create_directories(temp / "labs");
-        writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course);
+        writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course, level);
         for (const char* file : {"web/index.html", "web/page.css", "web/function_tables.json"})
             copyTree(root / file, temp / file);
         for (const char* dir :
@@ -126,6 +127,7 @@ Command webBundleCommand() {
                 auto out = std::make_shared<std::string>();
                 auto carry = std::make_shared<std::string>("own");
                 auto course = std::make_shared<std::string>();
+                auto level = std::make_shared<std::string>("guided");
                 cmd.add_option("--stages", *stages,
                                "the released stages, as raylab handout takes them (01-03, "
                                "01,02,f1, all)")
@@ -137,8 +139,10 @@ Command webBundleCommand() {
                     ->capture_default_str();
                 cmd.add_option("--course", *course,
                                "a course file (docs/grading.md): the guides show its weights");
+                cmd.add_option("--level", *level, "guided or open (as raylab handout)")
+                    ->capture_default_str();
                 return std::function<int()>(
-                    [=] { return cmdWebBundle(*stages, *out, *carry, *course); });
+                    [=] { return cmdWebBundle(*stages, *out, *carry, *course, *level); });
             }};
 }
 

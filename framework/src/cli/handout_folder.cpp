@@ -2,10 +2,13 @@
 
 #include "atomic_file.h"
 #include "error.h"
+#include "lab_folder.h"
 #include "paths.h"
 #include "stage_grading.h"
 
 #include <unistd.h>
+
+#include <algorithm>
 
 namespace raylab {
 
@@ -54,10 +57,14 @@ void checkHandoutSources(const std::vector<HandoutStage>& plan, const fs::path& 
 
 void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& labs,
                         const fs::path& to, const std::string& labFolder,
-                        const CourseSettings& course) {
+                        const CourseSettings& course, Level level) {
     std::error_code ec;
     for (const HandoutStage& h : plan) {
         const fs::path from = labs / h.stage->id, stageTo = to / h.stage->id;
+        // The open level's own files and guide; none at the guided level (labs/ has them).
+        const std::map<std::string, std::string> open =
+            level == Level::Open ? labFolderFiles(*h.stage, Level::Open)
+                                 : std::map<std::string, std::string>{};
         fs::create_directories(stageTo);
         // The guide and its pictures; the shader files the plan names.
         for (const fs::directory_entry& e : fs::directory_iterator(from)) {
@@ -65,12 +72,21 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
             if (!e.is_regular_file() || isShaderFile(e.path()) || name == "README.md") continue;
             fs::copy_file(e.path(), stageTo / name);
         }
-        for (const std::string& name : h.files()) fs::copy_file(from / name, stageTo / name);
-        if (fs::is_regular_file(from / "README.md", ec))
+        for (const std::string& name : h.files()) {
+            const bool own = std::find(h.ownFiles.begin(), h.ownFiles.end(), name) !=
+                             h.ownFiles.end();
+            if (own && open.count(name)) writeTextFileAtomic(stageTo / name, open.at(name));
+            else fs::copy_file(from / name, stageTo / name);
+        }
+        const bool guide = open.count("README.md") || fs::is_regular_file(from / "README.md", ec);
+        if (guide)
             writeTextFileAtomic(
                 stageTo / "README.md",
-                withGradingSection(handoutGuide(readTextFile(from / "README.md"), h, labFolder),
-                                   *h.stage, course.gradingOf(*h.stage)));
+                withGradingSection(
+                    handoutGuide(open.count("README.md") ? open.at("README.md")
+                                                         : readTextFile(from / "README.md"),
+                                 h, labFolder),
+                    *h.stage, course.gradingOf(*h.stage)));
     }
     writeTextFileAtomic(to / "README.md", readme(plan));
 }

@@ -5,6 +5,7 @@
 // them.
 #include "course_file.h"
 #include "handout.h"
+#include "lab_markers.h"
 
 #include <filesystem>
 #include <functional>
@@ -18,10 +19,13 @@ void checkHandoutSources(const std::vector<HandoutStage>& plan, const std::files
 
 // Writes PLAN's stage folders from LABS into TO (which must exist).
 // LABFOLDER: how the guides' commands name the folder ("week3/"; empty:
-// leave them alone). Throws std::filesystem::filesystem_error or Error.
+// leave them alone). At the open level a stage's own files and its guide
+// are generated from solution/ (lab_folder.h); LABS gives the pictures and
+// the earlier stages' solved files. Throws std::filesystem::filesystem_error
+// or Error.
 void writeHandoutFolder(const std::vector<HandoutStage>& plan, const std::filesystem::path& labs,
                         const std::filesystem::path& to, const std::string& labFolder,
-                        const CourseSettings& course);
+                        const CourseSettings& course, Level level = Level::Guided);
 
 // --out OUTDIR as a folder to write: a name ("week3/" is week3), new or
 // empty, in a folder that exists. Throws Error("--out ...: why").

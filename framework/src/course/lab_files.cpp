@@ -28,12 +28,13 @@ std::map<std::string, LabFile> labFileSources(const StageInfo& stage) {
     return files;
 }
 
-std::map<std::string, std::string> labFiles(const StageInfo& stage, MarkedForm formOfOwnFiles) {
+std::map<std::string, std::string> labFiles(const StageInfo& stage, MarkedForm formOfOwnFiles,
+                                            Level level) {
     std::map<std::string, std::string> files;
     for (const auto& [name, file] : labFileSources(stage))
         files[name] = transformMarkedSource(readTextFile(file.source),
                                             file.own ? formOfOwnFiles : MarkedForm::Solved,
-                                            displayPath(file.source));
+                                            displayPath(file.source), level);
     return files;
 }
 

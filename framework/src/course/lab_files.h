@@ -21,8 +21,9 @@ struct LabFile {
 // programs include, except the framework's own (framework/shaders/).
 std::map<std::string, LabFile> labFileSources(const StageInfo& stage);
 
-// File name -> generated text: the stage's own files in FORMOFOWNFILES, the
-// earlier stages' files solved.
-std::map<std::string, std::string> labFiles(const StageInfo& stage, MarkedForm formOfOwnFiles);
+// File name -> generated text: the stage's own files in FORMOFOWNFILES (a lab
+// at LEVEL, or solved), the earlier stages' files solved.
+std::map<std::string, std::string> labFiles(const StageInfo& stage, MarkedForm formOfOwnFiles,
+                                            Level level = Level::Guided);
 
 }  // namespace raylab

@@ -1,0 +1,70 @@
+#include "lab_folder.h"
+
+#include "error.h"
+#include "lab_files.h"
+#include "paths.h"
+
+#include <sstream>
+
+namespace raylab {
+
+namespace {
+
+std::string trimmed(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+std::string guideAtLevel(const std::string& source, Level level, const std::string& file) {
+    // The section we are in: "" (shared), "guided" or "open".
+    std::string section;
+    int sectionLine = 0;
+    std::string out;
+    std::istringstream in(source);
+    std::string line;
+    auto fail = [&](int n, const std::string& what) -> void {
+        throw Error(file + ":" + std::to_string(n) + ": " + what);
+    };
+    for (int n = 1; std::getline(in, line); ++n) {
+        const std::string t = trimmed(line);
+        if (t == "<!-- guided -->" || t == "<!-- open -->") {
+            if (!section.empty())
+                fail(n, t + " inside the " + section + " section opened on line " +
+                            std::to_string(sectionLine));
+            section = t.substr(5, t.size() - 9);
+            sectionLine = n;
+            continue;
+        }
+        if (t == "<!-- /guided -->" || t == "<!-- /open -->") {
+            if (section != t.substr(6, t.size() - 10))
+                fail(n, t + " closes no section opened before it");
+            section.clear();
+            continue;
+        }
+        if (!section.empty() && t.rfind("#", 0) == 0)
+            fail(n, "a heading inside the " + section +
+                        " section: headings are shared by both levels (one outline)");
+        if (section.empty() || section == levelName(level)) out += line + "\n";
+    }
+    if (!section.empty())
+        fail(sectionLine, "<!-- " + section + " --> not closed with <!-- /" + section + " -->");
+    return out;
+}
+
+std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading) {
+    const std::filesystem::path source = stage.folder() / "guide.md";
+    return withGradingSection(guideAtLevel(readTextFile(source), level, displayPath(source)),
+                              stage, grading);
+}
+
+std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level) {
+    std::map<std::string, std::string> files = labFiles(stage, MarkedForm::Lab, level);
+    std::error_code ec;  // a stage without a guide yet (just added) has no README.md
+    if (std::filesystem::is_regular_file(stage.folder() / "guide.md", ec))
+        files["README.md"] = stageGuide(stage, level, stage.grading);
+    return files;
+}
+
+}  // namespace raylab

@@ -1,0 +1,33 @@
+#pragma once
+// A stage's lab folder at a level, as `raylab-labgen` writes labs/ (the
+// guided level) and `raylab handout --level open` hands it out: the shader
+// files (lab_files.h) and the guide.
+//
+// One guide source serves both levels: solution/<id>/guide.md. Text between
+// "<!-- guided -->" and "<!-- /guided -->" lines is the guided level's
+// only, between "<!-- open -->" and "<!-- /open -->" the open level's; the
+// rest, every heading included, is shared, so both guides have one outline.
+#include "lab_markers.h"
+#include "stage_catalog.h"
+#include "stage_grading.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace raylab {
+
+// SOURCE (a guide.md, FILE in messages) at LEVEL, the level markers
+// removed. Throws Error("FILE:LINE: ...") for an unclosed or nested section
+// or a heading inside one.
+std::string guideAtLevel(const std::string& source, Level level, const std::string& file);
+
+// STAGE's guide at LEVEL, its "How you are graded" from GRADING.
+std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading);
+
+// Every generated file of STAGE's lab folder at LEVEL: name -> text (the
+// shader files and README.md, the guide with the stage's own grading; none
+// for a stage without a guide.md yet).
+std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level);
+
+}  // namespace raylab

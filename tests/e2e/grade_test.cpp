@@ -277,3 +277,33 @@ TEST(Grade, AnUntouchedLabScoresZero) {
     EXPECT_DOUBLE_EQ(ada["score"].get<double>(), 200.0);
     EXPECT_TRUE(fs::exists(dir / "out" / "reference" / "03-shadows" / "untouched" / "front.png"));
 }
+
+// At the open level (`--level open`) the lab as handed out is the open
+// lab: its untouched pictures are the open stubs' (not the guided lab's),
+// an untouched open lab earns nothing, a solved one everything.
+TEST(Grade, AtTheOpenLevelTheOpenLabIsTheLabAsHandedOut) {
+    ScratchDir dir;
+    writeSolvedLabs(dir / "class" / "ada");
+    ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "class" / "olga")).exitCode, 0);
+    for (const char* level : {"guided", "open"}) {
+        const fs::path out = dir / (std::string("out-") + level);
+        CommandResult r = runRaylab("grade --submissions " + quote(dir / "class") +
+                                    " --stages 04 --seed 3 --level " + level + " --out " +
+                                    quote(out));
+        ASSERT_EQ(r.exitCode, 0) << r.all();
+        auto olga = nlohmann::json::parse(readFile(out / "students" / "olga" / "results.json"));
+        EXPECT_DOUBLE_EQ(olga["score"].get<double>(), 0.0) << level << olga.dump(1);
+        auto ada = nlohmann::json::parse(readFile(out / "students" / "ada" / "results.json"));
+        EXPECT_DOUBLE_EQ(ada["score"].get<double>(), 100.0) << level;
+    }
+    // The guided stub draws the first hit (glass as a mirror), the open one nothing.
+    const std::string untouched = "reference/04-recursion/untouched/front.png";
+    EXPECT_NE(readFile(dir / "out-guided" / untouched), readFile(dir / "out-open" / untouched));
+    EXPECT_EQ(readFile(dir / "out-open" / untouched),
+              readFile(dir / "out-open" / "students" / "olga" / "04-recursion" / "front.png"))
+        << "olga's picture is the lab as handed out";
+    CommandResult bad = runRaylab("grade --submissions " + quote(dir / "class") +
+                                  " --stages 04 --level expert --out " + quote(dir / "x"));
+    EXPECT_EQ(bad.exitCode, 2) << bad.all();
+    EXPECT_NE(bad.err.find("unknown level 'expert'"), std::string::npos) << bad.err;
+}

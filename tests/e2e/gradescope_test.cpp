@@ -269,12 +269,40 @@ TEST(Gradescope, TheBundleGradesSolvedUntouchedBrokenAndEmptySubmissions) {
     EXPECT_NE(loose["output"].get<std::string>().find("loose files, but this assignment grades 2"),
               std::string::npos)
         << loose["output"];
+
+    // The open level (`raylab autograder --level open` writes "level": "open"):
+    // the open lab as handed out earns nothing; a level the grader does not
+    // know is the bundle's fault, said so.
+    EXPECT_EQ(config["level"], "guided");
+    json open = config;
+    open["level"] = "open";
+    writeFile(bundle / "raylab-autograder.json", open.dump(2));
+    ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "open-labs")).exitCode, 0);
+    const json openUntouched = runAutograder(bundle, dir / "open-untouched", [&](const fs::path& s) {
+        for (const char* stage : {"01-raycast", "02-shading"}) copyStage(dir / "open-labs", stage, s);
+    });
+    EXPECT_DOUBLE_EQ(openUntouched.value("score", -1.0), 0.0) << openUntouched.dump(1);
+    open["level"] = "expert";
+    writeFile(bundle / "raylab-autograder.json", open.dump(2));
+    const fs::path badRoot = dir / "bad-level";
+    fs::create_directories(badRoot / "submission");
+    fs::create_directory_symlink(bundle, badRoot / "source");
+    writeSolvedLabs(badRoot / "submission");
+    CommandResult bad = runCommand("AUTOGRADER_ROOT=" + quote(badRoot) + " RAYLAB_EXE=" +
+                                   quote(raylabExe()) + " " + quote(bundle / "run_autograder"));
+    EXPECT_NE(bad.exitCode, 0) << "the staff's log shows the bundle's fault: " << bad.all();
+    const json badLevel = json::parse(readFile(badRoot / "results" / "results.json"));
+    EXPECT_DOUBLE_EQ(badLevel.value("score", -1.0), 0.0);
+    EXPECT_NE(badLevel["output"].get<std::string>().find("level: expected guided or open"),
+              std::string::npos)
+        << badLevel["output"];
 }
 
 TEST(Gradescope, ABadBundleRequestWritesNothing) {
     ScratchDir dir;
     for (const std::string& args :
-         {std::string("--stages 42"), std::string("--stages 01 --seeded-visibility later")}) {
+         {std::string("--stages 42"), std::string("--stages 01 --seeded-visibility later"),
+          std::string("--stages 01 --level expert")}) {
         CommandResult r = runRaylab("autograder --out " + quote(dir / "out") + " " + args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.all();
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;

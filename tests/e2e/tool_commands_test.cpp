@@ -69,12 +69,13 @@ namespace {
 // PrairieLearn's /grade folder in DIR/NAME, with the files of FROM (a
 // folder) as the student's upload; raylab prairielearn run against it.
 nlohmann::json gradeForPrairieLearn(const ScratchDir& dir, const std::string& name,
-                                    const std::function<void(const fs::path&)>& upload) {
+                                    const std::function<void(const fs::path&)>& upload,
+                                    const std::string& moreArgs = "") {
     const fs::path root = dir / name;
     fs::create_directories(root / "student");
     upload(root / "student");
     CommandResult r = runCommand("GRADE_ROOT=" + quote(root) + " " + quote(raylabExe()) +
-                                 " prairielearn --stages 01");
+                                 " prairielearn --stages 01" + moreArgs);
     EXPECT_EQ(r.exitCode, 0) << name << ": " << r.all();
     const fs::path results = root / "results" / "results.json";
     EXPECT_TRUE(fs::exists(results)) << name;
@@ -141,6 +142,27 @@ TEST(PrairieLearn, GradesSolvedUntouchedBrokenAndEmptySubmissions) {
     nlohmann::json folders = gradeForPrairieLearn(
         dir, "folders", [&](const fs::path& s) { writeSolvedLabs(s / "my-labs"); });
     EXPECT_DOUBLE_EQ(folders["score"].get<double>(), 1.0);
+
+    // The open level: the open lab as handed out earns nothing; loose files
+    // lie over the open lab (a file not uploaded is its open stub).
+    ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "open-labs")).exitCode, 0);
+    nlohmann::json openUntouched = gradeForPrairieLearn(
+        dir, "open-untouched",
+        [&](const fs::path& s) { copyShaders(dir / "open-labs" / "01-raycast", s); },
+        " --level open");
+    EXPECT_DOUBLE_EQ(openUntouched["score"].get<double>(), 0.0) << openUntouched.dump(1);
+    nlohmann::json openHalf = gradeForPrairieLearn(
+        dir, "open-half",
+        [&](const fs::path& s) {
+            fs::copy_file(solution / "intersect_sphere.glsl", s / "intersect_sphere.glsl");
+        },
+        " --level open");
+    EXPECT_NE(openHalf.dump().find("findClosest"), std::string::npos);
+    bool findClosestFailed = false;
+    for (const auto& t : openHalf["tests"])
+        if (t["name"].get<std::string>().find("findClosest") != std::string::npos)
+            findClosestFailed = t["points"].get<double>() == 0.0;
+    EXPECT_TRUE(findClosestFailed) << "find_closest.glsl is the open stub: " << openHalf.dump(1);
 }
 
 namespace {

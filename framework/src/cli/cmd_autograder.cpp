@@ -40,6 +40,7 @@ struct BundleOptions {
     std::string stdoutVisibility = "hidden";
     double timeoutSeconds = 60.0;
     long memoryMb = 2048;
+    std::string level = "guided";
 };
 
 // What the bundle carries of the tree: what CMake configures (the top
@@ -103,6 +104,7 @@ int cmdAutograder(const BundleOptions& o) {
         throw Error("--timeout must be between 0 and 3600 seconds");
     if (o.memoryMb != 0 && (o.memoryMb < 256 || o.memoryMb > 1 << 20))
         throw Error("--memory-mb must be 0 (no limit) or 256..1048576");
+    parseLevel(o.level);  // an unknown level is refused before anything is written
     if (!onPath("zip")) throw Error("the zip program is missing (Debian: apt-get install zip)");
     const fs::path root = projectRoot();
     for (const char* script : {"tools/grader/setup.sh", "tools/grader/run_autograder"})
@@ -150,7 +152,8 @@ int cmdAutograder(const BundleOptions& o) {
                                       {"seeded_visibility", o.seededVisibility},
                                       {"stdout_visibility", o.stdoutVisibility},
                                       {"timeout_s", o.timeoutSeconds},
-                                      {"memory_mb", o.memoryMb}};
+                                      {"memory_mb", o.memoryMb},
+                                      {"level", o.level}};
         writeTextFileAtomic(staging / "raylab-autograder.json", config.dump(2) + "\n");
         count = files.size() + 3;
 
@@ -215,6 +218,10 @@ Command autograderCommand() {
             cmd.add_option("--timeout", o->timeoutSeconds, "seconds per stage")
                 ->capture_default_str();
             cmd.add_option("--memory-mb", o->memoryMb, "address-space limit per stage, MB")
+                ->capture_default_str();
+            cmd.add_option("--level", o->level,
+                           "the level of the labs handed out: guided or open (raylab handout "
+                           "--level)")
                 ->capture_default_str();
             return std::function<int()>([=] {
                 o->seedGiven = seed->count() > 0;

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "course_file.h"
 #include "error.h"
+#include "lab_folder.h"
 #include "grade_report.h"
 #include "grade_shards.h"
 #include "grade_stage.h"
@@ -68,6 +69,9 @@ void checkReportOptions(const GradeOptions& g) {
 }  // namespace
 
 int cmdGrade(const GradeOptions& options) {
+    // "The lab as handed out" (grade_stage.cpp) at the course's level, in
+    // this process and the stages' child processes.
+    setHandedOutLevel(parseLevel(options.level));
     const fs::path out = options.outDir;
     if (!options.shard.empty() && !options.only.empty())
         throw Error("--only and --shard exclude each other");
@@ -289,6 +293,11 @@ Command gradeCommand() {
                            "KEYFILE: pseudonyms instead of folder names in every report file, "
                            "for TAs; KEYFILE (made when missing; keep it outside --out) holds the "
                            "key and whose each pseudonym is");
+            cmd.add_option("--level", g->level,
+                           "the level of the labs handed out, guided or open (raylab handout "
+                           "--level): a picture still equal to the lab as handed out earns "
+                           "nothing")
+                ->capture_default_str();
             cmd.add_option("--only", g->only,
                            "regrade this one student into the existing report in --out (the "
                            "report is rewritten; nothing else changes)");

@@ -40,7 +40,7 @@ BundleConfig readBundleConfig(const fs::path& file) {
     const JsonReader r{file.string()};
     r.allowOnly(doc, "config",
                 {"stages", "seed", "visibility", "test_visibility", "seeded_visibility",
-                 "stdout_visibility", "timeout_s", "memory_mb"});
+                 "stdout_visibility", "timeout_s", "memory_mb", "level"});
     BundleConfig c;
     const json& stages = r.member(doc, "config", "stages");
     if (!stages.is_array() || stages.empty()) r.fail("stages", "expected a list of stage ids");
@@ -55,6 +55,13 @@ BundleConfig readBundleConfig(const fs::path& file) {
         if (!isGradescopeVisibility(into))
             r.fail(key, "expected visible, hidden, after_due_date or after_published");
     };
+    if (doc.contains("level")) {
+        try {
+            c.grading.level = parseLevel(r.string(doc["level"], "level"));
+        } catch (const Error&) {
+            r.fail("level", "expected guided or open");
+        }
+    }
     visibility("visibility", c.report.visibility);
     visibility("test_visibility", c.report.testVisibility);
     visibility("seeded_visibility", c.report.seededVisibility);

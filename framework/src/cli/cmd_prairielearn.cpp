@@ -53,6 +53,7 @@ struct PlOptions {
     unsigned seed = 0;
     double timeoutSeconds = 60.0;
     long memoryMb = 2048;
+    std::string level = "guided";
 };
 
 int cmdPrairieLearn(const PlOptions& o) {
@@ -72,7 +73,8 @@ int cmdPrairieLearn(const PlOptions& o) {
     };
 
     const UploadGrade graded = gradeUpload(root / "student", root / "raylab-work",
-                                           {stages, o.seed, o.timeoutSeconds, o.memoryMb});
+                                           {stages, o.seed, o.timeoutSeconds, o.memoryMb,
+                                            parseLevel(o.level)});
     std::string notes;
     for (const std::string& n : graded.layout.notes) notes += n + "\n";
     const std::string& problem = graded.layout.problem;
@@ -151,6 +153,10 @@ Command prairieLearnCommand() {
                 cmd.add_option("--timeout", o->timeoutSeconds, "seconds per stage")
                     ->capture_default_str();
                 cmd.add_option("--memory-mb", o->memoryMb, "address-space limit per stage, MB")
+                    ->capture_default_str();
+                cmd.add_option("--level", o->level,
+                               "the level of the labs handed out: guided or open (raylab "
+                               "handout --level)")
                     ->capture_default_str();
                 return std::function<int()>([=] { return cmdPrairieLearn(*o); });
             }};

@@ -77,6 +77,7 @@ struct GradeOptions {
     std::string lms;        // --lms canvas: also OUT/canvas.csv
     std::string anonymise;  // --anonymise KEYFILE: pseudonyms (pseudonyms.h) in every report file
     std::string only;       // --only NAME: regrade one student into OUT's report
+    std::string level = "guided";  // --level: of the labs handed out (lab_folder.h)
 };
 int cmdGrade(const GradeOptions& grade);
 

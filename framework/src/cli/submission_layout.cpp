@@ -1,6 +1,7 @@
 #include "submission_layout.h"
 
 #include "error.h"
+#include "lab_folder.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 #include "zip_unpack.h"
@@ -122,7 +123,7 @@ SubmissionLayout layOutSubmission(const fs::path& uploaded, const std::vector<st
         return r;
     }
     const StageInfo& stage = findStage(stages[0]);
-    fs::copy(defaultLabRoot() / stage.id, labRoot / stage.id, fs::copy_options::recursive);
+    fs::copy(handedOutLabRoot() / stage.id, labRoot / stage.id, fs::copy_options::recursive);
     int used = 0;
     for (const auto& e : list) {
         const std::string name = e.path().filename().string();

@@ -1,4 +1,5 @@
 #include "upload_grading.h"
+#include "lab_folder.h"
 
 #include "commands.h"
 #include "error.h"
@@ -23,6 +24,8 @@ UploadGrade gradeUpload(const fs::path& uploaded, const fs::path& work,
     UploadGrade r;
     std::error_code ec;
     fs::remove_all(work, ec);
+    // Loose files, missing files and "the lab as handed out" at the course's level.
+    setHandedOutLevel(o.level);
     try {
         r.layout =
             layOutSubmission(uploaded, o.stages, work / "class" / "student", work / "unpacked");

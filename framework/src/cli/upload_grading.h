@@ -6,6 +6,7 @@
 // files ("01-raycast/intersect_sphere.glsl:24") rather than the grader's
 // working copy.
 #include "grade_result.h"
+#include "lab_markers.h"
 #include "submission_layout.h"
 
 #include <filesystem>
@@ -20,6 +21,7 @@ struct UploadGradeOptions {
     unsigned seed = 0;
     double timeoutSeconds = 60.0;  // per stage
     long memoryMb = 2048;          // per stage (address space)
+    Level level = Level::Guided;   // of the labs handed out (lab_folder.h)
 };
 
 struct UploadGrade {

@@ -4,7 +4,11 @@
 #include "lab_files.h"
 #include "paths.h"
 
+#include <cstdlib>
+#include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace raylab {
 
@@ -65,6 +69,53 @@ std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level 
     if (std::filesystem::is_regular_file(stage.folder() / "guide.md", ec))
         files["README.md"] = stageGuide(stage, level, stage.grading);
     return files;
+}
+
+namespace {
+
+constexpr const char* kLevelVariable = "RAYLAB_LEVEL";
+
+// The open labs' temporary folder, removed when the process ends.
+struct OpenLabs {
+    std::filesystem::path root;
+    ~OpenLabs() {
+        std::error_code ec;
+        if (!root.empty()) std::filesystem::remove_all(root, ec);
+    }
+};
+
+}  // namespace
+
+void setHandedOutLevel(Level level) { setenv(kLevelVariable, levelName(level), 1); }
+
+Level handedOutLevel() {
+    const char* value = std::getenv(kLevelVariable);
+    if (!value || !*value) return Level::Guided;
+    try {
+        return parseLevel(value);
+    } catch (const Error& e) {
+        throw Error(std::string(kLevelVariable) + ": " + e.what());
+    }
+}
+
+std::filesystem::path handedOutLabRoot() {
+    namespace fs = std::filesystem;
+    if (handedOutLevel() == Level::Guided) return projectRoot() / "labs";
+    static OpenLabs labs;
+    if (labs.root.empty()) {
+        const fs::path root =
+            fs::temp_directory_path() / ("raylab-open-labs-" + std::to_string(getpid()));
+        fs::remove_all(root);
+        for (const StageInfo& stage : allStages())
+            for (const auto& [name, text] : labFiles(stage, MarkedForm::Lab, Level::Open)) {
+                fs::create_directories(root / stage.id);
+                std::ofstream out(root / stage.id / name, std::ios::binary);
+                out << text;
+                if (!out) throw Error("cannot write " + (root / stage.id / name).string());
+            }
+        labs.root = root;
+    }
+    return labs.root;
 }
 
 }  // namespace raylab

@@ -31,3 +31,20 @@ std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& 
 std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level);
 
 }  // namespace raylab
+
+namespace raylab {
+
+// The labs as the course hands them out, at its level: what grading renders
+// as "the lab as handed out" (a picture equal to it earns nothing), fills a
+// submission's missing files from, and lays loose uploaded files over.
+// labs/ at the guided level; at the open level the open labs' shader files,
+// written once per process to a temporary folder (removed at exit).
+//
+// The level is the environment's RAYLAB_LEVEL ("guided" when unset), so that
+// the child processes a grading command starts grade at its level too:
+// setHandedOutLevel sets it for this process and its children.
+void setHandedOutLevel(Level level);
+Level handedOutLevel();  // throws Error for an unknown RAYLAB_LEVEL
+std::filesystem::path handedOutLabRoot();
+
+}  // namespace raylab

@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "lab_files.h"
+#include "lab_folder.h"
 #include "paths.h"
 
 namespace raylab {
@@ -64,7 +65,7 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot, Missing
     }
     if (!absent.empty() && missing == MissingLabFiles::FromHandedOutLab) {
         s.filledIn = absent;
-        s.search.push_back(defaultLabRoot() / stage.id);
+        s.search.push_back(handedOutLabRoot() / stage.id);
     } else if (!absent.empty()) {
         std::string names, folders;
         for (const std::string& n : absent) names += (names.empty() ? "" : ", ") + n;

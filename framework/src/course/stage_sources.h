@@ -38,7 +38,7 @@ struct StageSources {
 // builds on).
 enum class MissingLabFiles {
     Error,             // a one-line error naming the files and the folders to copy in
-    FromHandedOutLab,  // graders: the project's labs/<stage>/ (earlier stages solved)
+    FromHandedOutLab,  // graders: the lab as handed out at the course's level (lab_folder.h)
 };
 
 // SOURCES' search path with the variant folders that DEFINES switch on

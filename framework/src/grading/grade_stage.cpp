@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "function_harness.h"
+#include "lab_folder.h"
 #include "grade_views.h"
 #include "image_compare.h"
 #include "paths.h"
@@ -44,7 +45,7 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::pa
     const fs::path untouched = dir / kUntouchedFolder;
     try {
         fs::create_directories(untouched);
-        ViewRenderers lab(stage, labSources(stage, defaultLabRoot()), "", kGradeWidth,
+        ViewRenderers lab(stage, labSources(stage, handedOutLabRoot()), "", kGradeWidth,
                           kGradeHeight);
         for (const CheckView& view : gradingViews(stage, seed))
             writePngAtomic(lab.render(view), untouched / (view.name + ".png"));

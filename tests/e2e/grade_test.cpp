@@ -287,9 +287,9 @@ TEST(Grade, AtTheOpenLevelTheOpenLabIsTheLabAsHandedOut) {
     ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "class" / "olga")).exitCode, 0);
     for (const char* level : {"guided", "open"}) {
         const fs::path out = dir / (std::string("out-") + level);
-        CommandResult r = runRaylab("grade --submissions " + quote(dir / "class") +
-                                    " --stages 04 --seed 3 --level " + level + " --out " +
-                                    quote(out));
+        CommandResult r =
+            runRaylab("grade --submissions " + quote(dir / "class") +
+                      " --stages 04 --seed 3 --level " + level + " --out " + quote(out));
         ASSERT_EQ(r.exitCode, 0) << r.all();
         auto olga = nlohmann::json::parse(readFile(out / "students" / "olga" / "results.json"));
         EXPECT_DOUBLE_EQ(olga["score"].get<double>(), 0.0) << level << olga.dump(1);

@@ -278,9 +278,11 @@ TEST(Gradescope, TheBundleGradesSolvedUntouchedBrokenAndEmptySubmissions) {
     open["level"] = "open";
     writeFile(bundle / "raylab-autograder.json", open.dump(2));
     ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "open-labs")).exitCode, 0);
-    const json openUntouched = runAutograder(bundle, dir / "open-untouched", [&](const fs::path& s) {
-        for (const char* stage : {"01-raycast", "02-shading"}) copyStage(dir / "open-labs", stage, s);
-    });
+    const json openUntouched =
+        runAutograder(bundle, dir / "open-untouched", [&](const fs::path& s) {
+            for (const char* stage : {"01-raycast", "02-shading"})
+                copyStage(dir / "open-labs", stage, s);
+        });
     EXPECT_DOUBLE_EQ(openUntouched.value("score", -1.0), 0.0) << openUntouched.dump(1);
     open["level"] = "expert";
     writeFile(bundle / "raylab-autograder.json", open.dump(2));
@@ -288,8 +290,9 @@ TEST(Gradescope, TheBundleGradesSolvedUntouchedBrokenAndEmptySubmissions) {
     fs::create_directories(badRoot / "submission");
     fs::create_directory_symlink(bundle, badRoot / "source");
     writeSolvedLabs(badRoot / "submission");
-    CommandResult bad = runCommand("AUTOGRADER_ROOT=" + quote(badRoot) + " RAYLAB_EXE=" +
-                                   quote(raylabExe()) + " " + quote(bundle / "run_autograder"));
+    CommandResult bad =
+        runCommand("AUTOGRADER_ROOT=" + quote(badRoot) + " RAYLAB_EXE=" + quote(raylabExe()) + " " +
+                   quote(bundle / "run_autograder"));
     EXPECT_NE(bad.exitCode, 0) << "the staff's log shows the bundle's fault: " << bad.all();
     const json badLevel = json::parse(readFile(badRoot / "results" / "results.json"));
     EXPECT_DOUBLE_EQ(badLevel.value("score", -1.0), 0.0);

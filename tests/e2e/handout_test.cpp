@@ -100,7 +100,7 @@ std::vector<std::string> filesWithARegion(const fs::path& dir,
 }
 
 std::vector<std::vector<std::string>> regionsOf(const std::string& list,
-                                               raylab::Level level = raylab::Level::Guided) {
+                                                raylab::Level level = raylab::Level::Guided) {
     std::vector<std::vector<std::string>> all;
     std::istringstream in(list);
     for (std::string id; std::getline(in, id, ',');) {
@@ -270,9 +270,8 @@ TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
     ScratchDir dir;
     for (const char* release : {"01-08", "f1-f4"}) {
         const fs::path out = dir / (std::string("open-") + release);
-        CommandResult r =
-            runRaylab(std::string("handout --level open --stages ") + release + " --out " +
-                      quote(out));
+        CommandResult r = runRaylab(std::string("handout --level open --stages ") + release +
+                                    " --out " + quote(out));
         ASSERT_EQ(r.exitCode, 0) << r.all();
         EXPECT_NE(r.out.find("at the open level"), std::string::npos) << r.out;
         std::string ids;
@@ -283,8 +282,8 @@ TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
             << release;
         for (const std::string& stage : topLevel(out)) {
             if (stage == "README.md") continue;
-            CommandResult c = runRaylab("check --stage " + stage + " --lab " + quote(out) +
-                                        " --size 64x48");
+            CommandResult c =
+                runRaylab("check --stage " + stage + " --lab " + quote(out) + " --size 64x48");
             EXPECT_EQ(c.exitCode, 1) << stage << " as handed out: " << c.all();
         }
     }

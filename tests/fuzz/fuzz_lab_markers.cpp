@@ -1,6 +1,6 @@
 // libFuzzer target: raylab::transformMarkedSource, the //@solution ... //@end
-// marker parser, in both forms (lab and solved) at both levels (guided, open). Pure string processing: no
-// files are read or written.
+// marker parser, in both forms (lab and solved) at both levels (guided, open). Pure string
+// processing: no files are read or written.
 #include "error.h"
 #include "lab_markers.h"
 
@@ -21,14 +21,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text(reinterpret_cast<const char*>(data), size);
     for (MarkedForm form : {MarkedForm::Lab, MarkedForm::Solved})
         for (Level level : {Level::Guided, Level::Open}) {
-        try {
-            std::string out = transformMarkedSource(text, form, "fuzz.glsl", level);
-            // Every output line is one input line (possibly shortened): never more lines out than
-            // in.
-            if (lineCount(out) > lineCount(text)) __builtin_trap();
-        } catch (const Error&) {
-            // Malformed region: the expected rejection.
-        }
+            try {
+                std::string out = transformMarkedSource(text, form, "fuzz.glsl", level);
+                // Every output line is one input line (possibly shortened): never more lines out
+                // than in.
+                if (lineCount(out) > lineCount(text)) __builtin_trap();
+            } catch (const Error&) {
+                // Malformed region: the expected rejection.
+            }
         }
     return 0;
 }

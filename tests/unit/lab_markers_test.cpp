@@ -110,7 +110,7 @@ TEST(LabMarkers, MalformedOpenRegionsAreErrorsWithFileAndLine) {
         {"//@open\n//@ a;\n", "f.glsl:1: //@open region without //@guided"},
         {"//@open\n//@ a;\n//@guided\nb;\n", "f.glsl:1: //@open region not closed"},
         {"//@open\n//@guided\n//@open\n", "f.glsl:3: //@open inside the open region opened on "
-                                           "line 1"},
+                                          "line 1"},
         {"x;\n//@end-open\n", "f.glsl:2: marker '//@end-open' outside"},
         {"//@guided\n", "f.glsl:1: marker '//@guided' outside"},
         {"//@open\n//@guided\n// TODO(1): t\n//@solution\nx;\n//@end-open\n",

@@ -102,8 +102,9 @@ int main(int argc, char** argv) {
         const Level level = parseLevel(levelName);
         const bool solved = !solvedDir.empty();
         const fs::path projectLabs = projectRoot() / "labs";
-        const fs::path root =
-            solved ? fs::path(solvedDir) : labsDir.empty() ? projectLabs : fs::path(labsDir);
+        const fs::path root = solved            ? fs::path(solvedDir)
+                              : labsDir.empty() ? projectLabs
+                                                : fs::path(labsDir);
         std::error_code ec;
         if (level == Level::Open && fs::equivalent(root, projectLabs, ec))
             throw Error("labs/ holds the guided level; write the open level elsewhere "
@@ -112,7 +113,8 @@ int main(int argc, char** argv) {
         int drift = 0;
         for (const StageInfo& stage : allStages()) {
             // A solved copy has no guides.
-            auto files = solved ? labFiles(stage, MarkedForm::Solved) : labFolderFiles(stage, level);
+            auto files =
+                solved ? labFiles(stage, MarkedForm::Solved) : labFolderFiles(stage, level);
             const fs::path dir = root / stage.id;
             std::set<std::string> stale;
             if (fs::is_directory(dir, ec))

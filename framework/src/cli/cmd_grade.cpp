@@ -10,10 +10,10 @@
 #include "commands.h"
 #include "course_file.h"
 #include "error.h"
-#include "lab_folder.h"
 #include "grade_report.h"
 #include "grade_shards.h"
 #include "grade_stage.h"
+#include "lab_folder.h"
 #include "paths.h"
 #include "pseudonyms.h"
 

@@ -58,9 +58,7 @@ BundleConfig readBundleConfig(const fs::path& file) {
     if (doc.contains("level")) {
         try {
             c.grading.level = parseLevel(r.string(doc["level"], "level"));
-        } catch (const Error&) {
-            r.fail("level", "expected guided or open");
-        }
+        } catch (const Error&) { r.fail("level", "expected guided or open"); }
     }
     visibility("visibility", c.report.visibility);
     visibility("test_visibility", c.report.testVisibility);

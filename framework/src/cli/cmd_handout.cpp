@@ -37,8 +37,9 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     checkHandoutSources(plan, labs);
     // How the guides' commands name the handout: as --out did, from the RayLab folder.
     const std::string labFolder = out.generic_string() + "/";
-    writeWhole(out, "the handout",
-               [&](const fs::path& to) { writeHandoutFolder(plan, labs, to, labFolder, course, level); });
+    writeWhole(out, "the handout", [&](const fs::path& to) {
+        writeHandoutFolder(plan, labs, to, labFolder, course, level);
+    });
     std::string ids;
     bool reads = false;
     for (const HandoutStage& h : plan) {
@@ -47,7 +48,8 @@ int cmdHandout(const std::string& list, const std::string& outDir, const std::st
     }
     std::printf("raylab handout: wrote %s with %zu stage%s (%s) at the %s level: no solution of a "
                 "stage it hands out%s\n",
-                out.c_str(), plan.size(), plan.size() == 1 ? "" : "s", ids.c_str(), raylab::levelName(level),
+                out.c_str(), plan.size(), plan.size() == 1 ? "" : "s", ids.c_str(),
+                raylab::levelName(level),
                 reads ? "; earlier stages' files are read from the student's own stage folders"
                       : "");
     return 0;

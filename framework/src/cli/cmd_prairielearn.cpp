@@ -72,9 +72,9 @@ int cmdPrairieLearn(const PlOptions& o) {
         return 0;
     };
 
-    const UploadGrade graded = gradeUpload(root / "student", root / "raylab-work",
-                                           {stages, o.seed, o.timeoutSeconds, o.memoryMb,
-                                            parseLevel(o.level)});
+    const UploadGrade graded =
+        gradeUpload(root / "student", root / "raylab-work",
+                    {stages, o.seed, o.timeoutSeconds, o.memoryMb, parseLevel(o.level)});
     std::string notes;
     for (const std::string& n : graded.layout.notes) notes += n + "\n";
     const std::string& problem = graded.layout.problem;

@@ -62,9 +62,9 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
     for (const HandoutStage& h : plan) {
         const fs::path from = labs / h.stage->id, stageTo = to / h.stage->id;
         // The open level's own files and guide; none at the guided level (labs/ has them).
-        const std::map<std::string, std::string> open =
-            level == Level::Open ? labFolderFiles(*h.stage, Level::Open)
-                                 : std::map<std::string, std::string>{};
+        const std::map<std::string, std::string> open = level == Level::Open
+                                                            ? labFolderFiles(*h.stage, Level::Open)
+                                                            : std::map<std::string, std::string>{};
         fs::create_directories(stageTo);
         // The guide and its pictures; the shader files the plan names.
         for (const fs::directory_entry& e : fs::directory_iterator(from)) {
@@ -73,8 +73,8 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
             fs::copy_file(e.path(), stageTo / name);
         }
         for (const std::string& name : h.files()) {
-            const bool own = std::find(h.ownFiles.begin(), h.ownFiles.end(), name) !=
-                             h.ownFiles.end();
+            const bool own =
+                std::find(h.ownFiles.begin(), h.ownFiles.end(), name) != h.ownFiles.end();
             if (own && open.count(name)) writeTextFileAtomic(stageTo / name, open.at(name));
             else fs::copy_file(from / name, stageTo / name);
         }
@@ -82,11 +82,11 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
         if (guide)
             writeTextFileAtomic(
                 stageTo / "README.md",
-                withGradingSection(
-                    handoutGuide(open.count("README.md") ? open.at("README.md")
-                                                         : readTextFile(from / "README.md"),
-                                 h, labFolder),
-                    *h.stage, course.gradingOf(*h.stage)));
+                withGradingSection(handoutGuide(open.count("README.md")
+                                                    ? open.at("README.md")
+                                                    : readTextFile(from / "README.md"),
+                                                h, labFolder),
+                                   *h.stage, course.gradingOf(*h.stage)));
     }
     writeTextFileAtomic(to / "README.md", readme(plan));
 }

@@ -59,8 +59,8 @@ std::string guideAtLevel(const std::string& source, Level level, const std::stri
 
 std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading) {
     const std::filesystem::path source = stage.folder() / "guide.md";
-    return withGradingSection(guideAtLevel(readTextFile(source), level, displayPath(source)),
-                              stage, grading);
+    return withGradingSection(guideAtLevel(readTextFile(source), level, displayPath(source)), stage,
+                              grading);
 }
 
 std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level) {
@@ -93,9 +93,7 @@ Level handedOutLevel() {
     if (!value || !*value) return Level::Guided;
     try {
         return parseLevel(value);
-    } catch (const Error& e) {
-        throw Error(std::string(kLevelVariable) + ": " + e.what());
-    }
+    } catch (const Error& e) { throw Error(std::string(kLevelVariable) + ": " + e.what()); }
 }
 
 std::filesystem::path handedOutLabRoot() {

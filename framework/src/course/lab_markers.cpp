@@ -33,8 +33,8 @@ Level parseLevel(const std::string& name) {
 
 const char* levelName(Level level) { return level == Level::Open ? "open" : "guided"; }
 
-std::string transformMarkedSource(const std::string& text, MarkedForm form,
-                                  const std::string& file, Level level) {
+std::string transformMarkedSource(const std::string& text, MarkedForm form, const std::string& file,
+                                  Level level) {
     // Where we are: in a //@solution region (Solution, Stub), in an open
     // region's stub (OpenStub); `open` says whether we are inside an open
     // region's guided part, which may hold //@solution regions of its own.
@@ -68,8 +68,9 @@ std::string transformMarkedSource(const std::string& text, MarkedForm form,
                 state = State::Solution;
                 regionLine = n;
             } else if (t == "//@open") {
-                if (open) fail(n, "//@open inside the open region opened on line " +
-                                      std::to_string(openLine));
+                if (open)
+                    fail(n, "//@open inside the open region opened on line " +
+                                std::to_string(openLine));
                 state = State::OpenStub;
                 openLine = n;
                 header = false;
@@ -112,7 +113,8 @@ std::string transformMarkedSource(const std::string& text, MarkedForm form,
                 if (openLab) out.push_back(unstubbed(line, t));
             } else {
                 fail(n, "an //@open region's stub lines start with \"//@ \" and end with "
-                        "//@guided (found '" + t + "')");
+                        "//@guided (found '" +
+                            t + "')");
             }
             break;
         }
@@ -151,8 +153,8 @@ int studentCodeLines(const std::string& text, Level level) {
         else if (t == "//@guided") inOpenStub = false;
         else if (t == "//@end-open") inOpen = false;
         else if (startsWith(t, "//@solution")) inSolution = true;
-        else if (startsWith(t, "//@")) inSolution = inSolution && !startsWith(t, "//@stub") &&
-                                                   !startsWith(t, "//@end");
+        else if (startsWith(t, "//@"))
+            inSolution = inSolution && !startsWith(t, "//@stub") && !startsWith(t, "//@end");
         else if (!t.empty() && !startsWith(t, "//") && !inOpenStub &&
                  (inSolution || (level == Level::Open && inOpen)))
             ++count;

@@ -51,8 +51,7 @@ const char* levelName(Level level);
 // Throws Error("FILE:LINE: ...") on a malformed region. LEVEL matters only to
 // the lab form (the solved form is the same at both levels).
 std::string transformMarkedSource(const std::string& text, MarkedForm form,
-                                  const std::string& fileForMessages,
-                                  Level level = Level::Guided);
+                                  const std::string& fileForMessages, Level level = Level::Guided);
 
 // The 1-based numbers of TEXT's solution lines (those between "//@solution"
 // and "//@stub"): the code students write, which `raylab mutants` mutates.

@@ -2,9 +2,9 @@
 
 #include "error.h"
 #include "function_harness.h"
-#include "lab_folder.h"
 #include "grade_views.h"
 #include "image_compare.h"
+#include "lab_folder.h"
 #include "paths.h"
 #include "shader_program.h"
 #include "stage_setup.h"

@@ -4,7 +4,8 @@
 bool findClosest(Ray ray, out Hit hit)
 {
     //@open
-    //@ // TODO(01.b): fill `hit` with the nearest sphere the ray meets: its distance
+    //@ // TODO(01.b): the nearest sphere along the ray.
+    //@ // Fill `hit` with the nearest sphere the ray meets: its distance
     //@ // t (from intersectSphere) and its index i (uSpheres[i].xyz is the centre,
     //@ // .w the radius, i < uSphereCount). Return true when the ray meets a
     //@ // sphere; otherwise false, with hit = Hit(T_FAR, -1).

@@ -1,8 +1,9 @@
 //@open
 //@ // Where does a ray first meet a sphere?
 //@ //
-//@ // TODO(01.a): intersectSphere returns the distance t along the ray to its
-//@ // first hit with the sphere (centre `center`, radius `radius` > 0): the
+//@ // TODO(01.a): where the ray first meets the sphere.
+//@ // intersectSphere returns the distance t along the ray to its first hit
+//@ // with the sphere (centre `center`, radius `radius` > 0): the
 //@ // smallest t > T_MIN with |ray.origin + t ray.dir - center| = radius, or
 //@ // NO_HIT when there is none.
 //@ //  - ray.dir is a unit vector, so t is a distance in scene units.

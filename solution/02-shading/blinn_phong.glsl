@@ -10,10 +10,11 @@
 vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
 {
     //@open
-    //@ // TODO(02.a): the Blinn-Phong colour of the point: the material's ambient
-    //@ // colour once, plus for every light i < uLightCount that reaches the point
-    //@ // (lightVisible(point, normal, i), from lab 03 on) its diffuse and its
-    //@ // specular term (guide, sections 2-4): light i is at uLightPositions[i]
+    //@ // TODO(02.a): the Blinn-Phong colour of the point.
+    //@ // That is the material's ambient colour once, plus for every light i < uLightCount
+    //@ // that reaches the point (ask lightVisible(point, normal, i): it says yes
+    //@ // to every light until lab 03) its diffuse and its specular term
+    //@ // (guide, sections 2 and 3): light i is at uLightPositions[i]
     //@ // with colour uLightColors[i]; `normal` and `toEye` are unit vectors, the
     //@ // normal on the eye's side. No specular highlight where the light is
     //@ // behind the surface.

@@ -16,7 +16,8 @@ uniform int uShadows;
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
     //@open
-    //@ // TODO(03.a): return whether light number `light` (at uLightPositions[light])
+    //@ // TODO(03.a): whether the light reaches the point.
+    //@ // Return whether light number `light` (at uLightPositions[light])
     //@ // reaches `point`: false when findClosest finds an object between the point
     //@ // and the light, true otherwise (and always true when uShadows == 0).
     //@ //  - The shadow ray starts just off the surface, with offsetRayOrigin, on

@@ -11,8 +11,9 @@
 float fresnelDielectric(float cosOutside, float ior)
 {
     //@open
-    //@ // TODO(04.c): F for a dielectric of index `ior` (> 1) in air, by Schlick,
-    //@ // with F0 from the index (guide, section 4). cosOutside is in [0, 1].
+    //@ // TODO(04.c): Fresnel for glass.
+    //@ // F for a dielectric of index `ior` (> 1) in air, by Schlick, with F0
+    //@ // from the index (guide, section 3). cosOutside is in [0, 1].
     //@ // Checked by: raylab check --stage 04 (function fresnelDielectric; views front, glass-closeup, inside-glass).
     //@ labTodo();
     //@ return 0.5;
@@ -35,8 +36,9 @@ float fresnelDielectric(float cosOutside, float ior)
 vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
 {
     //@open
-    //@ // TODO(04.d): F per colour channel for a metal of complex index n + ik, by
-    //@ // Schlick, with F0 from n and k (guide, section 4). cosIncident is in [0, 1].
+    //@ // TODO(04.d): Fresnel for metal.
+    //@ // F per colour channel for a metal of complex index n + ik, by
+    //@ // Schlick, with F0 from n and k (guide, section 3). cosIncident is in [0, 1].
     //@ // Checked by: raylab check --stage 04 (function fresnelConductor; view gold).
     //@ labTodo();
     //@ return vec3(1.0);
@@ -63,7 +65,8 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k)
 vec4 refractGlass(vec3 dir, vec3 normal, bool entering, float ior)
 {
     //@open
-    //@ // TODO(04.e): the refracted direction (unit) and F, as above. Mind which
+    //@ // TODO(04.e): refraction into or out of glass.
+    //@ // The refracted direction (unit) and F, as above. Mind which
     //@ // side the ray comes from (`entering`) for the relative index, and which
     //@ // cosine Schlick takes (the one on the air side). GLSL's refract() may
     //@ // help; it returns vec3(0.0) under total internal reflection.

@@ -1,3 +1,7 @@
+//@open
+//@ // The ray tracer: every ray a pixel's primary ray leads to, by reflection
+//@ // and refraction, up to a depth limit. GLSL has no recursive calls.
+//@guided
 // The ray tracer, without recursion. GLSL has no recursive calls, so the
 // rays that still have to be followed wait on a small stack.
 //
@@ -6,13 +10,14 @@
 // the reflected ray is followed at once. When a path ends (a matte surface,
 // the sky, or the depth limit), the next waiting ray is popped. When the
 // stack is empty, the pixel is done.
+//@end-open
 #include "ray_offset.glsl"
 
 uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 8 is defined by the framework)
 
 //@open
-//@ // TODO(04.a): trace returns the colour the primary ray brings to its pixel:
-//@ // the Blinn-Phong colour of its hit (or skyColor of its direction when it
+//@ // TODO(04.a): the colour the primary ray brings to its pixel.
+//@ // That is the Blinn-Phong colour of its hit (or skyColor of its direction when it
 //@ // hits nothing), plus, at a mirror, metal or glass surface (m.type not
 //@ // MAT_PLASTIC), the colour of the reflected ray times the surface's
 //@ // reflectance (mirror: m.specular; metal: fresnelConductor), and at glass
@@ -20,7 +25,7 @@ uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 
 //@ // share of light it carries - and so on for the rays they make.
 //@ //  - GLSL has no recursion: follow one ray at a time and keep the rays still
 //@ //    to follow on a stack of your own (an array and its size; the guide's
-//@ //    section 2 says how deep it must be).
+//@ //    section 1 says how deep it must be).
 //@ //  - A path has at most uMaxDepth rays (the primary ray counts as one); the
 //@ //    loop must end for every pixel: bound it by MAX_RAYS.
 //@ //  - A ray leaving a surface starts just off it, on the side it leaves

@@ -35,7 +35,7 @@ float finFade(vec3 b, vec3 c, vec3 normalB, vec3 normalC)
 //@open
 //@ // TODO(f3.b): the fin of edge B-C (vertices 1 and 2; 0 and 3 are A and D),
 //@ // only when the edge is on the silhouette seen from uEye (isSilhouette):
-//@ // one quad, emitted as a triangle strip of 4 vertices (guide, section 5),
+//@ // one quad, emitted as a triangle strip of 4 vertices (guide, sections 2, 5),
 //@ // standing on the edge: its root edge is B-C, its top edge B and C moved
 //@ // along their own vertex normals (vNormal[1], vNormal[2]) by uFurLength,
 //@ // so that neighbouring fins meet at the top as they do at the root. Each
@@ -45,7 +45,7 @@ float finFade(vec3 b, vec3 c, vec3 normalB, vec3 normalC)
 //@ //  - gSkinUv and gNormal: those of the edge vertex it stands on;
 //@ //  - gFade: finFade(b, c, vNormal[1], vNormal[2]), the same for all four;
 //@ //  - gLabTodo: 1 when gLabTodoReached or its edge vertex's vLabTodo is set.
-//@ // Checked by: raylab check --stage f3 (fin count; views coarse, rim; every view with fins).
+//@ // Checked by: raylab check --stage f3 (fin count; views coarse, grazing; every view with fins).
 //@ void main()
 //@ {
 //@     labTodo();

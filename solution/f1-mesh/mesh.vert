@@ -17,7 +17,8 @@ flat out int vLabTodo;  // 1 when this vertex went through an unfinished TODO
 void main()
 {
     //@open
-    //@ // TODO(f1.d): the vertex on the screen (gl_Position, through toWorld and
+    //@ // TODO(f1.d): the vertex shader of the lit mesh.
+    //@ // The vertex on the screen (gl_Position, through toWorld and
     //@ // toClip) and what the fragment shader needs: its world position, its
     //@ // world-space normal (normalMatrix) and its texture coordinate, as the
     //@ // outputs above say; vLabTodo as below.

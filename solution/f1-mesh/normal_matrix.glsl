@@ -1,7 +1,8 @@
 //@open
 //@ // The matrix that carries normals from object space to world space.
 //@ //
-//@ // TODO(f1.b): a normal is not a point: it must stay perpendicular to the
+//@ // TODO(f1.b): the normal matrix.
+//@ // A normal is not a point: it must stay perpendicular to the
 //@ // surface, under every model matrix this course uses (rotations, moves,
 //@ // uniform and non-uniform scales, so a sphere squashed into an ellipsoid
 //@ // too). Return the 3x3 matrix that does that for MODEL; its result need not

@@ -7,7 +7,8 @@
 vec3 surfaceLight(vec3 albedo, vec3 normal, vec3 toLight)
 {
     //@open
-    //@ // TODO(f1.c): the colour the point sends toward the eye: ALBEDO lit by the
+    //@ // TODO(f1.c): ambient light plus Lambert.
+    //@ // The colour the point sends toward the eye: ALBEDO lit by the
     //@ // ambient light uAmbient plus Lambert's diffuse term of the light
     //@ // uLightColor coming from the unit direction TOLIGHT (toward the light).
     //@ // NORMAL is the interpolated surface normal: not unit length any more.

@@ -16,13 +16,14 @@ layout(location = 0) out vec4 fragColor;
 void main()
 {
     //@open
-    //@ // TODO(f2.f): the colour and opacity of this pixel of a shell: the fur
+    //@ // TODO(f2.f): the fragment shader of a shell.
+    //@ // The colour and opacity of this pixel of a shell: the fur
     //@ // pattern uPattern (tiled uPatternScale times over the skin's texture
     //@ // coordinates) gives shellAlpha; where that is below 0.001 nothing is
     //@ // drawn (discard), so the shells below show through. The colour is the
     //@ // colour map's, darkened by shellShadow (uShadowIntensity) and lit by
-    //@ // surfaceLight (uLightDir). End with labTodoIf and labOverlay as lab f1's
-    //@ // mesh.frag does.
+    //@ // surfaceLight (uLightDir). Write it through labOverlay, after
+    //@ // labTodoIf(vLabTodo != 0): the marks of unfinished TODOs.
     //@ // Checked by: raylab check --stage f2 (views front, close; all views).
     //@ labTodo();
     //@ labTodoIf(true);

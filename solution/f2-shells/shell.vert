@@ -20,7 +20,8 @@ flat out int vLabTodo;
 void main()
 {
     //@open
-    //@ // TODO(f2.e): the vertex of shell number uShellIndex of uShellCount: its
+    //@ // TODO(f2.e): the vertex shader of a shell.
+    //@ // The vertex of shell number uShellIndex of uShellCount: its
     //@ // layer (shellLayer), the vertex moved off the skin by shellOffset along
     //@ // its world-space normal - in world space, so that the fur keeps its
     //@ // length however the model is scaled - and the outputs above (vNormal

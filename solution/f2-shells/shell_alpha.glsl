@@ -7,7 +7,8 @@
 float shellAlpha(float pattern, float layer)
 {
     //@open
-    //@ // TODO(f2.c): the opacity: the skin is opaque everywhere; above it the
+    //@ // TODO(f2.c): how opaque a pixel of a shell is.
+    //@ // The opacity: the skin is opaque everywhere; above it the
     //@ // hair's PATTERN value, fading linearly to nothing at the tips (guide,
     //@ // section 1).
     //@ // Checked by: raylab check --stage f2 (function shellAlpha; all views).

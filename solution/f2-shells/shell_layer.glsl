@@ -11,7 +11,8 @@
 float shellLayer(int drawIndex, int shellCount)
 {
     //@open
-    //@ // TODO(f2.a): the layer of draw DRAWINDEX of SHELLCOUNT, in the order the
+    //@ // TODO(f2.a): which layer a draw is.
+    //@ // The layer of draw DRAWINDEX of SHELLCOUNT, in the order the
     //@ // picture needs (guide, section 2), the layers evenly spaced from the skin
     //@ // (0) to the tips (1). With one shell there is only the skin.
     //@ // Checked by: raylab check --stage f2 (function shellLayer; all views).

@@ -6,7 +6,8 @@
 vec3 shellOffset(vec3 normal, float layer, float furLength)
 {
     //@open
-    //@ // TODO(f2.b): the offset above. NORMAL may not be unit length; the offset's
+    //@ // TODO(f2.b): how far a shell lies off the skin.
+    //@ // The offset above. NORMAL may not be unit length; the offset's
     //@ // length is LAYER * FURLENGTH whatever NORMAL's.
     //@ // Checked by: raylab check --stage f2 (function shellOffset; all views).
     //@ labTodo();

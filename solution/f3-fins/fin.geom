@@ -33,7 +33,8 @@ float finFade(vec3 b, vec3 c, vec3 normalB, vec3 normalC)
 }
 
 //@open
-//@ // TODO(f3.b): the fin of edge B-C (vertices 1 and 2; 0 and 3 are A and D),
+//@ // TODO(f3.b): a fin on every silhouette edge.
+//@ // The fin of edge B-C (vertices 1 and 2; 0 and 3 are A and D),
 //@ // only when the edge is on the silhouette seen from uEye (isSilhouette):
 //@ // one quad, emitted as a triangle strip of 4 vertices (guide, sections 2, 5),
 //@ // standing on the edge: its root edge is B-C, its top edge B and C moved

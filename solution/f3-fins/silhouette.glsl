@@ -4,7 +4,8 @@
 //@ // The geometry shader gets the edge with its two triangles: A-B-C on one
 //@ // side and B-C-D on the other (A and D are the corners across the edge),
 //@ // both wound the same way (counter-clockwise seen from outside).
-//@ // TODO(f3.a): true when exactly one of the two triangles faces the eye
+//@ // TODO(f3.a): whether the edge is on the silhouette.
+//@ // True when exactly one of the two triangles faces the eye
 //@ // (guide, section 4). A degenerate triangle (zero area) faces neither way:
 //@ // no silhouette.
 //@ // Checked by: raylab check --stage f3 (function isSilhouette, the fin

@@ -11,7 +11,8 @@
 vec2 kajiyaKay(vec3 tangent, vec3 toLight, vec3 toEye, float shininess)
 {
     //@open
-    //@ // TODO(f4.b): (diffuse, specular) above for the unit vectors TANGENT,
+    //@ // TODO(f4.b): Kajiya and Kay's two terms.
+    //@ // (diffuse, specular) above for the unit vectors TANGENT,
     //@ // TOLIGHT and TOEYE. No NaN may reach the picture, whatever rounding does
     //@ // to the dot products (guide, section 4).
     //@ // Checked by: raylab check --stage f4 (function kajiyaKay; view "fur-shader").

@@ -21,7 +21,8 @@ void main()
 {
     vec3 toEye = normalize(uEye - gWorldPos);
     //@open
-    //@ // TODO(f4.c): the strand's light (diffuse, specular) from kajiyaKay with
+    //@ // TODO(f4.c): the strand lit along its direction.
+    //@ // The strand's light (diffuse, specular) from kajiyaKay with
     //@ // shininess kShininess: a strand has no normal, only a direction.
     //@ // Checked by: raylab check --stage f4 (view "fur-shader-shaggy").
     //@ labTodo();

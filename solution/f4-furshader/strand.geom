@@ -63,7 +63,8 @@ vec3 strandRootWeights(int i, float jitter)
 void main()
 {
     //@open
-    //@ // TODO(f4.d): the strands of this triangle (guide, sections 1, 5): their
+    //@ // TODO(f4.d): the strands of this triangle.
+    //@ // The strands of this triangle (guide, sections 1, 5): their
     //@ // number strandCount(area, jitter), with jitter = hash01 of the
     //@ // triangle's gl_PrimitiveIDIn; strand i grows at the barycentric weights
     //@ // strandRootWeights(i, jitter), which also blend the corners' normals

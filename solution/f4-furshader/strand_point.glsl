@@ -10,7 +10,8 @@
 vec3 strandPoint(vec3 root, vec3 normal, float s, float furLength, vec3 gravity)
 {
     //@open
-    //@ // TODO(f4.a): the point above. NORMAL may not be unit length; the strand's
+    //@ // TODO(f4.a): a point of a strand.
+    //@ // The point above. NORMAL may not be unit length; the strand's
     //@ // shape must not depend on its length.
     //@ // Checked by: raylab check --stage f4 (function strandPoint; view "fur-shader-shaggy").
     //@ labTodo();

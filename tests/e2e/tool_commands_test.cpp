@@ -291,3 +291,36 @@ TEST(FunctionTablesCommand, ChecksTheShippedFile) {
     EXPECT_NE(r.exitCode, 0) << r.all();
     EXPECT_NE(r.err.find("tables.json: "), std::string::npos) << r.err;
 }
+
+// `raylab render` says where an OBJ model went (its bounds, the fit), and
+// that a picture of one colour is one: with one shell, a shellLayer that
+// divides by shellCount - 1 puts every vertex at NaN and nothing is drawn.
+TEST(RenderCommand, SaysWhereAModelWentAndWhenNothingWasDrawn) {
+    ScratchDir dir;
+    CommandResult blob = runRaylab("render --stage f1 --solution --scene " +
+                                   quote(sourceDir() / "assets/scenes/fur/blob.json") +
+                                   " --size "
+                                   "64x48 --out " +
+                                   quote(dir / "blob.png"));
+    ASSERT_EQ(blob.exitCode, 0) << blob.all();
+    EXPECT_NE(blob.out.find("mesh assets/meshes/blob.obj: 960 triangles, bounds (-1, -1.103, "
+                            "-1.079) .. (1.13, 1.077, 1.079); fitted to the box from -1 to 1"),
+              std::string::npos)
+        << blob.out;
+    EXPECT_EQ(blob.err.find("every pixel"), std::string::npos) << blob.err;
+
+    writeSolvedLabs(dir / "lab");
+    replaceInFile(dir / "lab" / "f2-shells" / "shell_layer.glsl",
+                  "return shellCount > 1 ? float(drawIndex) / float(shellCount - 1) : 0.0;",
+                  "return float(drawIndex) / float(shellCount - 1);");
+    CommandResult one = runRaylab("render --stage f2 --lab " + quote(dir / "lab") +
+                                  " --shells 1 --size 64x48 --out " + quote(dir / "one.png"));
+    ASSERT_EQ(one.exitCode, 0) << one.all();
+    EXPECT_NE(one.err.find("every pixel of the picture is (20, 23, 31): nothing was drawn in front "
+                           "of the background"),
+              std::string::npos)
+        << one.err;
+    CommandResult two = runRaylab("render --stage f2 --lab " + quote(dir / "lab") +
+                                  " --shells 2 --size 64x48 --out " + quote(dir / "two.png"));
+    EXPECT_EQ(two.err.find("every pixel"), std::string::npos) << two.err;
+}

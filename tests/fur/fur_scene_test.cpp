@@ -38,6 +38,9 @@ TEST(FurScene, MistakesNameFileAndKey) {
         {"{\"shape\": \"teapot\"}", "", "mesh.shape: unknown shape 'teapot'"},
         {"{\"shape\": \"sphere\", \"obj\": \"x.obj\"}", "", "mesh: give either"},
         {"{\"obj\": \"nowhere.obj\"}", "", "mesh.obj: file"},
+        {"{\"obj\": \"/dev/zero\"}", "", "mesh.obj: /dev/zero is not a regular file"},
+        {"{\"obj\": \"/tmp\"}", "", "mesh.obj: /tmp is a folder"},
+        {"{\"shape\": \"sphere\", \"fit\": true}", "", "mesh.fit: is for OBJ models"},
         {"{\"shape\": \"sphere\", \"detail\": 1}", "", "mesh.detail: must be between 2 and 512"},
         {"{\"shape\": \"sphere\"}", "\"shells\": 0, ", "fur.shells: must be between 1 and 256"},
         {"{\"shape\": \"sphere\"}", "\"length\": -1, ", "fur.length: expected a positive number"},
@@ -69,4 +72,50 @@ TEST(StrandBudget, FitsTheDriversLimits) {
     // A generous driver is capped at what the course asks for.
     EXPECT_EQ(strandBudget(4096, 1 << 20, 4).strandsPerTriangle, kStrandsWanted);
     EXPECT_THROW(strandBudget(4, 1024, 8), Error);
+}
+
+// An OBJ model comes in its own units; by default it is fitted into the box
+// from -1 to 1 (the built-in shapes' size), and the placement says how.
+TEST(FurScene, AnObjModelIsFittedUnlessTheSceneSaysNot) {
+    ScratchDir dir;
+    // A model 32 units wide, far from the origin (a teapot's units).
+    writeFile(dir / "big.obj", "v 100 0 0\nv 132 0 0\nv 100 8 4\nf 1 2 3\n");
+    const std::string textures = (projectRoot() / "assets/textures").string();
+    auto scene = [&](const std::string& fit) {
+        return "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0, 0, 3], \"yaw\": 0, "
+               "\"pitch\": 0}, \"mesh\": "
+               "{\"obj\": \"big.obj\"" +
+               fit +
+               "}, \"light\": {\"direction\": [0, 1, 0]}, "
+               "\"fur\": {\"color_map\": \"" +
+               textures + "/fur_color.png\", \"pattern\": \"" + textures +
+               "/fur_pattern.png\", \"fin_map\": \"" + textures + "/fur_fin.png\"}}";
+    };
+    writeFile(dir / "fit.json", scene(""));
+    MeshPlacement p;
+    const Mesh fitted = loadFurMesh(loadFurScene(dir / "fit.json"), &p);
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& v : fitted.positions) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    EXPECT_NEAR(hi.x - lo.x, 2.0f, 1e-5f) << "the longest side is 2";
+    EXPECT_NEAR(lo.x + hi.x, 0.0f, 1e-5f) << "centred";
+    EXPECT_NEAR(lo.y + hi.y, 0.0f, 1e-5f);
+    EXPECT_TRUE(p.fitted);
+    EXPECT_FLOAT_EQ(p.scale, 2.0f / 32.0f);
+    const std::string note = describePlacement(p, "big.obj");
+    EXPECT_NE(note.find("bounds (100, 0, 0) .. (132, 8, 4)"), std::string::npos) << note;
+    EXPECT_NE(note.find("scaled by 0.0625"), std::string::npos) << note;
+
+    writeFile(dir / "keep.json", scene(", \"fit\": false"));
+    const Mesh kept = loadFurMesh(loadFurScene(dir / "keep.json"), &p);
+    EXPECT_EQ(kept.positions.front(), glm::vec3(100, 0, 0));
+    EXPECT_FALSE(p.fitted);
+    EXPECT_NE(describePlacement(p, "big.obj").find("as the file gives them"), std::string::npos);
+
+    writeFile(dir / "bad.json", scene(", \"fit\": 1"));
+    EXPECT_THROW(loadFurScene(dir / "bad.json"), Error);
+    // The built-in shapes say nothing.
+    EXPECT_EQ(describePlacement(MeshPlacement{}, "x"), "");
 }

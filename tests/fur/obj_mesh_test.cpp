@@ -95,3 +95,37 @@ TEST(ObjMesh, BadFilesGiveOneLineErrorsNamingTheFile) {
     EXPECT_NE(normals.find("no-normals.obj"), std::string::npos) << normals;
     EXPECT_EQ(normals.find('\n'), std::string::npos) << normals;
 }
+
+// What tinyobjloader reads wrongly without a word - "nan" as 0, an index
+// beyond an int wrapped to another vertex - and what is not a file at all
+// get a true one-line message with the line.
+TEST(ObjMesh, HostileNumbersAndNonFilesAreNamedTruly) {
+    ScratchDir dir;
+    const struct {
+        const char* file;
+        std::string text;
+        const char* expected;
+    } cases[] = {
+        {"nan.obj", "v nan 1 0\nv 0 1 0\nv 1 0 0\nf 1 2 3\n",
+         "nan.obj:1: v: 'nan' is not a finite"},
+        {"inf.obj", "v 0 0 0\nv 1e39 1 0\nv 1 0 0\nf 1 2 3\n",
+         "inf.obj:2: v: '1e39' is not a finite"},
+        {"word.obj", "v 0 0 0\nv 0 1 0\nvt 0.5 x\nv 1 0 0\nf 1 2 3\n",
+         "word.obj:3: vt: 'x' is not a number"},
+        {"big.obj", "v 0 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 99999999999\n",
+         "big.obj:4: f: index 99999999999 is out of range"},
+        {"zero.obj", "v 0 0 0\nv 0 1 0\nv 1 0 0\nf 0 1 2\n", "zero.obj:4: f: index 0"},
+        {"junk.obj", "v 0 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 three\n",
+         "junk.obj:4: f: 'three' is not an index"},
+    };
+    for (const auto& c : cases) {
+        writeFile(dir / c.file, c.text);
+        const std::string got = message(dir / c.file);
+        EXPECT_NE(got.find(c.expected), std::string::npos) << got << "\nexpected: " << c.expected;
+        EXPECT_EQ(got.find('\n'), std::string::npos) << got;
+    }
+    fs::create_directories(dir / "folder.obj");
+    EXPECT_NE(message(dir / "folder.obj").find("folder.obj: not a regular file"),
+              std::string::npos);
+    EXPECT_NE(message("/dev/zero").find("/dev/zero: not a regular file"), std::string::npos);
+}

@@ -37,6 +37,8 @@ void ViewerApp::init() {
     renderer_ = makeTrackRenderer(setup_, w, h);
     renderer_->completeSettings(setup_.settings);
     reportOpenTodos(renderer_->openTodos());
+    if (!renderer_->sceneNote().empty())
+        std::printf("raylab: %s\n", renderer_->sceneNote().c_str());
     watcher_.watch(renderer_->sourceFiles());
     time_ = setup_.time;
     try {

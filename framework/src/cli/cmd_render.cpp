@@ -8,6 +8,7 @@
 #include "track_registry.h"
 
 #include <cstdio>
+#include <cstring>
 
 namespace raylab {
 
@@ -25,14 +26,36 @@ bool checkOutputFile(const std::filesystem::path& out) {
     return out.extension() == ".pfm";
 }
 
+void reportSceneNote(const TrackRenderer& renderer) {
+    const std::string note = renderer.sceneNote();
+    if (!note.empty()) std::printf("raylab: %s\n", note.c_str());
+}
+
+// A picture of one colour is written, but said to be one: nothing was drawn
+// over the background (a vertex shader that puts every vertex at NaN, a
+// model far outside the view...). Facts only: the cause is the student's to
+// find, `raylab check` localises it.
+void reportOneColour(const Image& picture) {
+    if (picture.rgba.size() < 4) return;
+    for (std::size_t i = 4; i < picture.rgba.size(); i += 4)
+        if (std::memcmp(&picture.rgba[i], &picture.rgba[0], 3) != 0) return;
+    std::fprintf(stderr,
+                 "raylab: note: every pixel of the picture is (%d, %d, %d): nothing was drawn in "
+                 "front of the background (raylab check runs each function on its own)\n",
+                 picture.rgba[0], picture.rgba[1], picture.rgba[2]);
+}
+
 // The frame drawn as `raylab render` always drew it (8-bit colour).
 int renderColorPng(const StageSetup& setup, const RenderOptions& render) {
     auto context = createHeadlessContext(render.backend);
     auto renderer = makeTrackRenderer(setup, setup.size.width, setup.size.height,
                                       PixelFormat::Rgba8, RendererUse::Generic);
     reportOpenTodos(renderer->openTodos());
+    reportSceneNote(*renderer);
     renderer->render(setup.camera, setup.time, setup.settings);
-    writePngAtomic(renderer->read(), render.outFile);
+    const Image picture = renderer->read();
+    writePngAtomic(picture, render.outFile);
+    reportOneColour(picture);
     std::printf("raylab: wrote %s (%dx%d, stage %s, %s, %s backend)\n", render.outFile.c_str(),
                 setup.size.width, setup.size.height, setup.stage->id.c_str(),
                 setup.sources.label.c_str(), context->backendName().c_str());
@@ -47,6 +70,7 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
     if (view == DebugView::Color) {
         auto renderer = makeTrackRenderer(setup, w, h, PixelFormat::Rgba32F, RendererUse::Generic);
         reportOpenTodos(renderer->openTodos());
+        reportSceneNote(*renderer);
         renderer->render(setup.camera, setup.time, setup.settings);
         rgba = renderer->readFloats();
     } else {

@@ -54,6 +54,9 @@ public:
     virtual const std::vector<std::filesystem::path>& sourceFiles() const = 0;
     // Stubs of the lab that are still unsolved (empty for the solution).
     virtual const std::vector<OpenTodo>& openTodos() const = 0;
+    // One line the user should read about what is drawn (a model's bounds
+    // and how it was fitted), empty when there is nothing to say.
+    virtual std::string sceneNote() const { return ""; }
 
     // Fills in what SETTINGS leaves to the scene (the fur's shell count), so
     // that the window's keys start from the values on screen.

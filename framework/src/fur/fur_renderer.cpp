@@ -58,8 +58,12 @@ FurRenderer::FurRenderer(const StageInfo& stage, StageSources sources, FurScene 
     glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
     if (stage_.has("fur_shader"))
         budget_ = raylab::strandBudget(maxVertices, maxComponents, scene_.fur.strandSegments);
-    setMesh(loadFurMesh(scene_));
+    setMesh(loadFurMesh(scene_, &placement_));
     rebuild();
+}
+
+std::string FurRenderer::sceneNote() const {
+    return describePlacement(placement_, displayPath(scene_.mesh.obj));
 }
 
 void FurRenderer::setMesh(Mesh mesh) {

@@ -38,6 +38,7 @@ public:
     void rebuild() override;
     const std::vector<std::filesystem::path>& sourceFiles() const override { return files_; }
     const std::vector<OpenTodo>& openTodos() const override { return todos_; }
+    std::string sceneNote() const override;
 
     void completeSettings(RenderSettings& settings) const override {
         if (settings.shells == 0) settings.shells = scene_.fur.shells;
@@ -84,6 +85,7 @@ private:
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;
     int meshShown_ = 0;             // RenderSettings::furMesh of the mesh in buffers_
+    MeshPlacement placement_;       // where the scene's OBJ model went (sceneNote)
     glm::vec3 boundsCentre_{0.0f};  // the mesh's bounding sphere, object space
     float boundsRadius_ = 0.0f;
 };

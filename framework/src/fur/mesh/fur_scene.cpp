@@ -22,8 +22,12 @@ struct FurSceneReader : JsonReader {
     std::filesystem::path existingFile(const json& v, const std::string& where) const {
         std::filesystem::path p = (folder / string(v, where)).lexically_normal();
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(p, ec))
+        if (!std::filesystem::exists(p, ec))
             fail(where, "file " + displayPath(p) + " does not exist");
+        if (std::filesystem::is_directory(p, ec))
+            fail(where, displayPath(p) + " is a folder, not a file");
+        if (!std::filesystem::is_regular_file(p, ec))
+            fail(where, displayPath(p) + " is not a regular file (a device, a pipe or a socket)");
         return p;
     }
     int integer(const json& v, const std::string& where, int lo, int hi) const {
@@ -43,13 +47,19 @@ struct FurSceneReader : JsonReader {
 
 void readMesh(const FurSceneReader& r, const json& doc, FurScene& s) {
     const json& m = r.member(doc, "scene", "mesh");
-    r.allowOnly(m, "mesh", {"shape", "detail", "obj"});
+    r.allowOnly(m, "mesh", {"shape", "detail", "obj", "fit"});
     if (m.contains("obj") == m.contains("shape"))
         r.fail("mesh", "give either \"shape\" (sphere, torus, cube) or \"obj\" (a file)");
     if (m.contains("obj")) {
         s.mesh.obj = r.existingFile(m["obj"], "mesh.obj");
+        if (m.contains("fit")) {
+            if (!m["fit"].is_boolean()) r.fail("mesh.fit", "expected true or false");
+            s.mesh.fit = m["fit"].get<bool>();
+        }
         return;
     }
+    if (m.contains("fit"))
+        r.fail("mesh.fit", "is for OBJ models (the shapes are made to fit the box already)");
     s.mesh.shape = r.string(m["shape"], "mesh.shape");
     const auto& names = shapeNames();
     if (std::find(names.begin(), names.end(), s.mesh.shape) == names.end())
@@ -130,11 +140,50 @@ FurScene loadFurScene(const std::filesystem::path& file) {
     return s;
 }
 
-Mesh loadFurMesh(const FurScene& scene) {
-    Mesh m = scene.mesh.obj.empty() ? makeShape(scene.mesh.shape, scene.mesh.detail)
-                                    : loadObjMesh(scene.mesh.obj);
+Mesh loadFurMesh(const FurScene& scene, MeshPlacement* placement) {
+    if (scene.mesh.obj.empty()) {
+        Mesh m = makeShape(scene.mesh.shape, scene.mesh.detail);
+        validateMesh(m);
+        if (placement) *placement = MeshPlacement{};
+        return m;
+    }
+    Mesh m = loadObjMesh(scene.mesh.obj);
+    MeshPlacement p;
+    p.fromObj = true;
+    p.triangles = m.indices.size() / 3;
+    p.lo = p.hi = m.positions.front();
+    for (const glm::vec3& v : m.positions) {
+        p.lo = glm::min(p.lo, v);
+        p.hi = glm::max(p.hi, v);
+    }
+    const glm::vec3 size = p.hi - p.lo;
+    const float longest = std::max({size.x, size.y, size.z});
+    if (scene.mesh.fit && longest > 0.0f) {
+        p.fitted = true;
+        p.centre = 0.5f * (p.lo + p.hi);
+        p.scale = 2.0f / longest;
+        for (glm::vec3& v : m.positions) v = (v - p.centre) * p.scale;
+        // Normals keep their directions under a uniform scale.
+    }
     validateMesh(m);
+    if (placement) *placement = p;
     return m;
+}
+
+std::string describePlacement(const MeshPlacement& p, const std::string& file) {
+    if (!p.fromObj) return "";
+    auto point = [](const glm::vec3& v) {
+        return "(" + significant(v.x, 4) + ", " + significant(v.y, 4) + ", " + significant(v.z, 4) +
+               ")";
+    };
+    std::string text = "mesh " + file + ": " + std::to_string(p.triangles) + " triangles, bounds " +
+                       point(p.lo) + " .. " + point(p.hi);
+    if (p.fitted)
+        text += "; fitted to the box from -1 to 1: centred on " + point(p.centre) + ", scaled by " +
+                significant(p.scale, 4) +
+                " (\"fit\": false in the scene's mesh keeps the file's coordinates)";
+    else text += ", as the file gives them (\"fit\": false)";
+    return text;
 }
 
 }  // namespace raylab

@@ -16,7 +16,28 @@ struct FurMeshSpec {
     std::string shape;  // "sphere", "torus", "cube" (mesh_shapes.h); empty when obj is set
     int detail = 16;
     std::filesystem::path obj;  // an OBJ file (obj_mesh.h)
+    // An OBJ model is moved and scaled into the box from -1 to 1 (its
+    // bounding box centred on the origin, its longest side 2 units), the
+    // size of the built-in shapes the scenes' cameras and fur lengths are
+    // made for: models come in any units (a bunny 10 units tall, a teapot
+    // 32 wide). "fit": false keeps the file's own coordinates.
+    bool fit = true;
 };
+
+// Where an OBJ model ended up: its bounds as the file gives them and, when
+// fitted, the scale and the centre applied (p -> (p - centre) * scale).
+struct MeshPlacement {
+    bool fromObj = false;
+    bool fitted = false;
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    glm::vec3 centre{0.0f};
+    float scale = 1.0f;
+    std::size_t triangles = 0;
+};
+
+// One line for the user about an OBJ model (empty for a built-in shape):
+// "mesh FILE: N triangles, bounds (x, y, z) .. (x, y, z); fitted: ...".
+std::string describePlacement(const MeshPlacement& placement, const std::string& file);
 
 struct FurParameters {
     float length = 0.2f;           // world units at scale 1 (along the normal)
@@ -54,7 +75,9 @@ struct FurScene {
 // Throws Error("FILE: where: what") with the file and JSON path.
 FurScene loadFurScene(const std::filesystem::path& file);
 
-// The mesh a fur scene names (procedural or OBJ), checked. Throws Error.
-Mesh loadFurMesh(const FurScene& scene);
+// The mesh a fur scene names (procedural or OBJ, fitted unless it says
+// "fit": false), checked; PLACEMENT (optional) says where an OBJ model went.
+// Throws Error.
+Mesh loadFurMesh(const FurScene& scene, MeshPlacement* placement = nullptr);
 
 }  // namespace raylab

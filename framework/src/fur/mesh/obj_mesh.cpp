@@ -5,17 +5,71 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <tuple>
 #include <vector>
 
 namespace raylab {
 
+namespace {
+
+// tinyobjloader reads what is not a number as 0 ("v nan 1 0" is a vertex at
+// the origin) and wraps indices beyond an int ("f 99999999999 ..." names
+// vertex 1215752191): the numbers are checked here first, with the line.
+void checkNumbers(const std::filesystem::path& file, const std::string& name) {
+    std::ifstream in(file, std::ios::binary);
+    std::string line;
+    for (long n = 1; std::getline(in, line); ++n) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        const bool coordinates = keyword == "v" || keyword == "vn" || keyword == "vt";
+        if (!coordinates && keyword != "f") continue;
+        auto fail = [&](const std::string& what) {
+            throw Error(name + ":" + std::to_string(n) + ": " + what);
+        };
+        for (std::string word; words >> word;) {
+            if (coordinates) {
+                char* end = nullptr;
+                errno = 0;
+                const double v = std::strtod(word.c_str(), &end);
+                if (end == word.c_str() || *end != '\0')
+                    fail(keyword + ": '" + word + "' is not a number");
+                if (!std::isfinite(v) || errno == ERANGE || std::fabs(v) > 3.0e38)
+                    fail(keyword + ": '" + word + "' is not a finite float");
+                continue;
+            }
+            // f: vertex[/texture[/normal]], each a whole number, negative counting back.
+            std::istringstream parts(word);
+            for (std::string part; std::getline(parts, part, '/');) {
+                if (part.empty()) continue;
+                char* end = nullptr;
+                errno = 0;
+                const long long i = std::strtoll(part.c_str(), &end, 10);
+                if (end == part.c_str() || *end != '\0')
+                    fail("f: '" + word + "' is not an index (v, v/vt, v//vn or v/vt/vn)");
+                if (errno == ERANGE || i > 2147483647LL || i < -2147483647LL)
+                    fail("f: index " + part + " is out of range");
+                if (i == 0) fail("f: index 0 (OBJ counts from 1)");
+            }
+        }
+    }
+}
+
+}  // namespace
+
 Mesh loadObjMesh(const std::filesystem::path& file) {
     const std::string name = displayPath(file);
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw Error(name + ": file does not exist");
+    if (!std::filesystem::exists(file, ec)) throw Error(name + ": file does not exist");
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw Error(name + ": not a regular file (a folder, a device or a pipe)");
+    checkNumbers(file, name);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;

@@ -16,7 +16,8 @@ void keepNearer(inout Hit hit, float t, int kind, int index)
 bool findClosest(Ray ray, out Hit hit)
 {
     //@open
-    //@ // TODO(05.f): lab 01's search over every object of every kind: spheres,
+    //@ // TODO(05.f): the nearest object of every kind.
+    //@ // Lab 01's search over every object of every kind: spheres,
     //@ // planes (uPlanes[i].xyz the normal, .w the offset), discs (uDiscs[i].xyz
     //@ // the centre, .w the radius, uDiscNormals[i]), triangles (corners
     //@ // uTriangleVertices[3 i .. 3 i + 2]) and tori (intersectTorus(ray, i)),

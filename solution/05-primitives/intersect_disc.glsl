@@ -1,7 +1,8 @@
 //@open
 //@ // Where does a ray meet a disc (a round, flat plate)?
 //@ //
-//@ // TODO(05.b): intersectDisc returns the distance t > T_MIN at which the ray
+//@ // TODO(05.b): where the ray meets a disc.
+//@ // IntersectDisc returns the distance t > T_MIN at which the ray
 //@ // meets the disc - the points of the plane through `center` with unit
 //@ // normal `normal` no farther than `radius` from the centre (its rim
 //@ // included) - or NO_HIT. intersectPlane (05.a) may help.

@@ -1,7 +1,8 @@
 //@open
 //@ // Where does a ray meet an infinite plane?
 //@ //
-//@ // TODO(05.a): intersectPlane returns the distance t > T_MIN at which the
+//@ // TODO(05.a): where the ray meets a plane.
+//@ // IntersectPlane returns the distance t > T_MIN at which the
 //@ // ray meets the plane of points p with dot(normal, p) = offset (`normal` a
 //@ // unit vector), or NO_HIT.
 //@ //  - A ray parallel to the plane never meets it, and one lying in it must

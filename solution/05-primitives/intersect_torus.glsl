@@ -37,10 +37,11 @@ float polishTorusHit(vec3 o, vec3 d, float t, float R, float r)
 vec4 torusQuartic(vec3 o, vec3 d, float R, float r)
 {
     //@open
-    //@ // TODO(05.e): put the ray into f(p) above and collect the powers of t
-    //@ // (guide, section 4): |d| = 1 makes the t^4 coefficient 1. Name the
+    //@ // TODO(05.e): the torus's quartic in t.
+    //@ // Put the ray into f(p) above and collect the powers of t
+    //@ // (guide, section 5): |d| = 1 makes the t^4 coefficient 1. Name the
     //@ // terms that come back (o . o, o . d, ...) once.
-    //@ // Checked by: raylab check --stage 05 (function torusQuartic; views front, torus-closeup).
+    //@ // Checked by: raylab check --stage 05 (views front, torus-closeup).
     //@ labTodo();
     //@ return vec4(0.0, 0.0, 0.0, 1.0);
     //@guided
@@ -120,7 +121,8 @@ float intersectTorusLocal(Ray ray, float R, float r)
 vec3 torusNormalLocal(vec3 p, float R, float r)
 {
     //@open
-    //@ // TODO(05.d): the unit outward normal at p, a point on the torus surface:
+    //@ // TODO(05.d): the torus's normal.
+    //@ // The unit outward normal at p, a point on the torus surface:
     //@ // the direction of the gradient of f above.
     //@ // Checked by: raylab check --stage 05 (function torusNormalLocal; views front, torus-closeup).
     //@ labTodo();

@@ -1,9 +1,10 @@
 //@open
 //@ // Where does a ray meet the triangle a, b, c?
 //@ //
-//@ // TODO(05.c): intersectTriangle returns the distance t > T_MIN at which the
+//@ // TODO(05.c): where the ray meets a triangle.
+//@ // IntersectTriangle returns the distance t > T_MIN at which the
 //@ // ray meets the triangle (its edges included), or NO_HIT, with the
-//@ // Moller-Trumbore algorithm (guide, section 3): no plane equation, no
+//@ // Moller-Trumbore algorithm (guide, section 4): no plane equation, no
 //@ // square root.
 //@ //  - Both sides count: a mirror seen from behind, the inside faces of a
 //@ //    glass cube.

@@ -11,7 +11,8 @@
 vec3 sunGlow(Ray ray)
 {
     //@open
-    //@ // TODO(06.d): the glow above for the sun sphere uSpheres[uGlowSphere] (none
+    //@ // TODO(06.d): the glow around the sun.
+    //@ // The glow above for the sun sphere uSpheres[uGlowSphere] (none
     //@ // when uGlowSphere < 0), nothing when the sun is behind the eye or when
     //@ // something other than the sun lies on the ray before its closest point.
     //@ // An index below 0 does not compile where uGlowSphere is a constant -1:

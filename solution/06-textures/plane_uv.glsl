@@ -14,7 +14,8 @@ void planeAxes(vec3 n, out vec3 axisU, out vec3 axisV)
 vec2 planeUV(vec3 point, vec3 origin, vec3 n, float tile)
 {
     //@open
-    //@ // TODO(06.b): (u, v) of `point` on the plane with unit normal n through
+    //@ // TODO(06.b): texture coordinates on a plane.
+    //@ // (u, v) of `point` on the plane with unit normal n through
     //@ // `origin`: its distances from `origin` along planeAxes' axisU and axisV,
     //@ // in tiles of `tile` units. The texture repeats by itself (GL_REPEAT): u
     //@ // and v may grow without bound.

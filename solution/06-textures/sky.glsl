@@ -8,9 +8,10 @@
 vec3 skyColor(vec3 dir)
 {
     //@open
-    //@ // TODO(06.c): the colour the sky shows in direction `dir`: the cube map
+    //@ // TODO(06.c): the sky.
+    //@ // The colour the sky shows in direction `dir`: the cube map
     //@ // uSky when the scene has one (uHasSky != 0), else uBackground. Read
-    //@ // textures at level 0 in the tracer (guide, section 3).
+    //@ // textures at level 0 in the tracer (guide, section 4).
     //@ // Checked by: raylab check --stage 06 (views front, sky-up).
     //@ labTodo();
     //@ return uBackground;

@@ -12,7 +12,8 @@ const float PI = 3.14159265358979;
 vec2 sphereUV(vec3 d)
 {
     //@open
-    //@ // TODO(06.a): (u, v) of the unit direction d, as defined above, both in
+    //@ // TODO(06.a): texture coordinates on a sphere.
+    //@ // (u, v) of the unit direction d, as defined above, both in
     //@ // [0, 1]; d.y may round to just beyond 1 at a pole.
     //@ // Checked by: raylab check --stage 06 (function sphereUV; views front, earth-closeup, moon-closeup).
     //@ labTodo();

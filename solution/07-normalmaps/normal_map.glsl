@@ -24,10 +24,11 @@ void applyNormalMap(inout Surface s)
 {
     if (uNormalMaps == 0 || s.material.normalMap < 0) return;
     //@open
-    //@ // TODO(07.a): tilt s.normal by the normal map (texel at s.uv of layer
+    //@ // TODO(07.a): the normal tilted by the normal map.
+    //@ // Tilt s.normal by the normal map (texel at s.uv of layer
     //@ // s.material.normalMap: textureLayer), as above. s.tangent points east
     //@ // (growing u) but need not be exactly perpendicular to the normal; the
-    //@ // frame you build from it must be orthonormal (guide, section 2). The
+    //@ // frame you build from it must be orthonormal (guide, section 3). The
     //@ // result is a unit vector.
     //@ // Checked by: raylab check --stage 07 (function applyNormalMap; views front, earth-closeup, moon-closeup).
     //@ labTodo();

@@ -8,7 +8,8 @@ uniform int uColorMode;
 vec3 applyColorMode(vec3 c)
 {
     //@open
-    //@ // TODO(08.a): c's channels in the order of mode uColorMode (above); any
+    //@ // TODO(08.a): the colour modes.
+    //@ // C's channels in the order of mode uColorMode (above); any
     //@ // other mode shows c as it is.
     //@ // Checked by: raylab check --stage 08 (function applyColorMode; views lite-brb, lite-brr, lite-rbb, lite-ggr).
     //@ labTodo();

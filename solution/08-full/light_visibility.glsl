@@ -17,10 +17,14 @@ uniform int uShadows;
 bool lightVisible(vec3 point, vec3 normal, int light)
 {
     //@open
-    //@ // TODO(08.c): lab 03's lightVisible, faster: ask findBlocker(ray, maxT)
-    //@ // (find_closest.glsl), which may stop at the first object nearer than maxT,
-    //@ // instead of findClosest; and send no shadow ray to a light behind the
-    //@ // surface (it adds nothing to blinnPhong).
+    //@ // TODO(08.c): lab 03's lightVisible, faster.
+    //@ // The same contract as lab 03's (true when uShadows == 0; the shadow ray
+    //@ // starts at offsetRayOrigin on the light's side; only objects nearer
+    //@ // than the light block it), with two changes for speed: ask
+    //@ // findBlocker(ray, maxT) (find_closest.glsl), which may stop at the
+    //@ // first object nearer than maxT (the light's distance), instead of
+    //@ // findClosest; and send no shadow ray to a light behind the surface (it
+    //@ // adds nothing to blinnPhong).
     //@ // Checked by: raylab check --stage 08 (views lite-front, pro-front).
     //@ labTodo();
     //@ return true;

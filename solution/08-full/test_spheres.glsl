@@ -33,12 +33,13 @@ float enterNode(int node, vec3 origin, vec3 invDir, float tMax, out int first, o
 void walkBvh(Ray ray, inout Hit hit, bool anyHit)
 {
     //@open
-    //@ // TODO(08.b): walk the BVH from its root, node 0: keep in `hit` the nearest
+    //@ // TODO(08.b): the walk through the BVH.
+    //@ // Walk the BVH from its root, node 0: keep in `hit` the nearest
     //@ // sphere (KIND_SPHERE) or mesh triangle (KIND_MESH) nearer than hit.t, with
     //@ // keepNearer, testing only the items of leaves whose box the ray enters
     //@ // before hit.t (enterNode); with anyHit, return as soon as hit.id >= 0.
     //@ //  - No recursion in GLSL: the boxes still to visit wait on a stack of your
-    //@ //    own, at most BVH_STACK_SIZE deep (guide, section 3).
+    //@ //    own, at most BVH_STACK_SIZE deep (guide, section 5).
     //@ //  - Visit the nearer child first, and skip a waiting box that the ray
     //@ //    enters only beyond the nearest hit found meanwhile.
     //@ //  - Sphere i: intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w); mesh

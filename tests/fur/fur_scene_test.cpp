@@ -41,6 +41,7 @@ TEST(FurScene, MistakesNameFileAndKey) {
         {"{\"obj\": \"/dev/zero\"}", "", "mesh.obj: /dev/zero is not a regular file"},
         {"{\"obj\": \"/tmp\"}", "", "mesh.obj: /tmp is a folder"},
         {"{\"shape\": \"sphere\", \"fit\": true}", "", "mesh.fit: is for OBJ models"},
+        {"{\"shape\": \"sphere\", \"uvs\": \"box\"}", "", "mesh.uvs: is for OBJ models"},
         {"{\"shape\": \"sphere\", \"detail\": 1}", "", "mesh.detail: must be between 2 and 512"},
         {"{\"shape\": \"sphere\"}", "\"shells\": 0, ", "fur.shells: must be between 1 and 256"},
         {"{\"shape\": \"sphere\"}", "\"length\": -1, ", "fur.length: expected a positive number"},
@@ -116,6 +117,17 @@ TEST(FurScene, AnObjModelIsFittedUnlessTheSceneSaysNot) {
 
     writeFile(dir / "bad.json", scene(", \"fit\": 1"));
     EXPECT_THROW(loadFurScene(dir / "bad.json"), Error);
+    writeFile(dir / "box.json", scene(", \"uvs\": \"box\""));
+    EXPECT_EQ(loadFurScene(dir / "box.json").mesh.uvs, UvProjection::Box);
+    writeFile(dir / "tube.json", scene(", \"uvs\": \"cylinder\""));
+    try {
+        loadFurScene(dir / "tube.json");
+        ADD_FAILURE() << "no error for uvs cylinder";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("mesh.uvs: expected \"sphere\" or \"box\""),
+                  std::string::npos)
+            << e.what();
+    }
     // The built-in shapes say nothing.
     EXPECT_EQ(describePlacement(MeshPlacement{}, "x"), "");
 }

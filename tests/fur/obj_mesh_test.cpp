@@ -46,6 +46,33 @@ TEST(ObjMesh, QuadsAreSplitAndMissingNormalsAndUvsComputed) {
     EXPECT_EQ(adj.interiorEdges, 18);
 }
 
+// The box projection: every triangle reads the two coordinates across its
+// face's axis, so each face of the cube shows the pattern undistorted; the
+// corners are split per side, and the fins still see one closed surface.
+TEST(ObjMesh, TheBoxProjectionHasNoPolesAndSplitsOnlyItsSeams) {
+    ScratchDir dir;
+    writeFile(dir / "cube.obj", kCube);
+    const Mesh m = loadObjMesh(dir / "cube.obj", UvProjection::Box);
+    EXPECT_EQ(m.triangleCount(), 12u);
+    EXPECT_EQ(m.vertexCount(), 24u) << "each corner once per side it touches (3 sides)";
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+        const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                        c = m.positions[m.indices[t + 2]];
+        const glm::vec3 n = glm::abs(glm::cross(b - a, c - a));
+        const int axis = n.x > 0.5f ? 0 : (n.y > 0.5f ? 1 : 2);
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 p = m.positions[m.indices[t + std::size_t(k)]];
+            const glm::vec2 expected = axis == 0   ? glm::vec2(p.z, p.y)
+                                       : axis == 1 ? glm::vec2(p.x, p.z)
+                                                   : glm::vec2(p.x, p.y);
+            EXPECT_EQ(m.uvs[m.indices[t + std::size_t(k)]], expected / kBoxUvSpan) << t;
+        }
+    }
+    const EdgeAdjacency adj = buildEdgeAdjacency(m);
+    EXPECT_EQ(adj.boundaryEdges, 0) << "adjacency goes by position";
+    EXPECT_EQ(adj.interiorEdges, 18);
+}
+
 TEST(ObjMesh, AZeroNormalIsReplacedAndTheOthersKept) {
     ScratchDir dir;
     writeFile(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 0\nvn 0 0 0\nf 1//1 2//2 3//1\n");

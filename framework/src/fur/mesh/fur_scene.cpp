@@ -47,7 +47,7 @@ struct FurSceneReader : JsonReader {
 
 void readMesh(const FurSceneReader& r, const json& doc, FurScene& s) {
     const json& m = r.member(doc, "scene", "mesh");
-    r.allowOnly(m, "mesh", {"shape", "detail", "obj", "fit"});
+    r.allowOnly(m, "mesh", {"shape", "detail", "obj", "fit", "uvs"});
     if (m.contains("obj") == m.contains("shape"))
         r.fail("mesh", "give either \"shape\" (sphere, torus, cube) or \"obj\" (a file)");
     if (m.contains("obj")) {
@@ -56,8 +56,15 @@ void readMesh(const FurSceneReader& r, const json& doc, FurScene& s) {
             if (!m["fit"].is_boolean()) r.fail("mesh.fit", "expected true or false");
             s.mesh.fit = m["fit"].get<bool>();
         }
+        if (m.contains("uvs")) {
+            const std::string uvs = r.string(m["uvs"], "mesh.uvs");
+            if (uvs != "sphere" && uvs != "box")
+                r.fail("mesh.uvs", "expected \"sphere\" or \"box\" (not '" + uvs + "')");
+            s.mesh.uvs = uvs == "box" ? UvProjection::Box : UvProjection::Sphere;
+        }
         return;
     }
+    if (m.contains("uvs")) r.fail("mesh.uvs", "is for OBJ models (the shapes have their own)");
     if (m.contains("fit"))
         r.fail("mesh.fit", "is for OBJ models (the shapes are made to fit the box already)");
     s.mesh.shape = r.string(m["shape"], "mesh.shape");
@@ -147,7 +154,7 @@ Mesh loadFurMesh(const FurScene& scene, MeshPlacement* placement) {
         if (placement) *placement = MeshPlacement{};
         return m;
     }
-    Mesh m = loadObjMesh(scene.mesh.obj);
+    Mesh m = loadObjMesh(scene.mesh.obj, scene.mesh.uvs);
     MeshPlacement p;
     p.fromObj = true;
     p.triangles = m.indices.size() / 3;

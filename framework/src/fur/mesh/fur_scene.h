@@ -22,6 +22,9 @@ struct FurMeshSpec {
     // made for: models come in any units (a bunny 10 units tall, a teapot
     // 32 wide). "fit": false keeps the file's own coordinates.
     bool fit = true;
+    // Texture coordinates of an OBJ model without any ("uvs": "sphere" or
+    // "box"; mesh.h says what each does well and badly).
+    UvProjection uvs = UvProjection::Sphere;
 };
 
 // Where an OBJ model ended up: its bounds as the file gives them and, when

@@ -42,6 +42,36 @@ void computeSmoothNormals(Mesh& mesh) {
     }
 }
 
+void computeBoxUvs(Mesh& mesh) {
+    Mesh out;
+    out.name = mesh.name;
+    // (old vertex, axis) -> new vertex: a vertex on a seam is split, one copy per side.
+    std::map<std::pair<std::uint32_t, int>, std::uint32_t> copyOf;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t* tri = &mesh.indices[t];
+        const glm::vec3 n = glm::cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
+                                       mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+        const glm::vec3 a = glm::abs(n);
+        const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+        for (int k = 0; k < 3; ++k) {
+            auto [it, added] =
+                copyOf.emplace(std::make_pair(tri[k], axis), std::uint32_t(out.positions.size()));
+            if (added) {
+                const glm::vec3& p = mesh.positions[tri[k]];
+                // The two other axes, in an order that keeps the picture unmirrored per side.
+                const glm::vec2 uv = axis == 0   ? glm::vec2(p.z, p.y)
+                                     : axis == 1 ? glm::vec2(p.x, p.z)
+                                                 : glm::vec2(p.x, p.y);
+                out.positions.push_back(p);
+                out.normals.push_back(mesh.normals[tri[k]]);
+                out.uvs.push_back(uv / kBoxUvSpan);
+            }
+            out.indices.push_back(it->second);
+        }
+    }
+    mesh = std::move(out);
+}
+
 void computeSphericalUvs(Mesh& mesh) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::vec3& p : mesh.positions) {

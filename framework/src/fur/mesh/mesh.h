@@ -31,9 +31,23 @@ struct Mesh {
 // touches only such triangles gets (0, 1, 0).
 void computeSmoothNormals(Mesh& mesh);
 
-// Texture coordinates by spherical projection around the mesh's centre (for
-// OBJ files without any): a tiling fur pattern needs only a continuous,
-// roughly even parameterisation.
+// Texture coordinates for OBJ files without any. A tiling fur pattern needs
+// only an even parameterisation; neither projection is even everywhere:
+//  - Sphere (the default): around the mesh's centre, smooth everywhere but
+//    at its two poles (on the y axis), where the pattern is squeezed into a
+//    pinwheel; on a round model they are small, on a long one (a bunny's
+//    flank, a teapot's front) they show.
+//  - Box (cube): each triangle takes the two coordinates across the axis its
+//    face normal is nearest to, in units of kBoxUvSpan: no poles, but a seam
+//    wherever neighbouring triangles pick other axes, and the pattern
+//    stretched where a face is tilted 45 degrees from its axis. The seams
+//    split vertices (adjacency goes by position, so fins do not see them).
+// Blending three projections per pixel (triplanar) has neither flaw, but it
+// is the fragment shader's work: the students' shell.frag reads the pattern
+// at one coordinate, and the course keeps that contract.
+enum class UvProjection { Sphere, Box };
+inline constexpr float kBoxUvSpan = 4.0f;
+void computeBoxUvs(Mesh& mesh);
 void computeSphericalUvs(Mesh& mesh);
 
 // Throws Error("NAME: what is wrong") for an empty mesh, indices out of range,

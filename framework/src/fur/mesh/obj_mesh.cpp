@@ -63,7 +63,7 @@ void checkNumbers(const std::filesystem::path& file, const std::string& name) {
 
 }  // namespace
 
-Mesh loadObjMesh(const std::filesystem::path& file) {
+Mesh loadObjMesh(const std::filesystem::path& file, UvProjection projection) {
     const std::string name = displayPath(file);
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) throw Error(name + ": file does not exist");
@@ -164,7 +164,10 @@ Mesh loadObjMesh(const std::filesystem::path& file) {
     } else {
         computeSmoothNormals(mesh);
     }
-    if (!allUvs) computeSphericalUvs(mesh);
+    if (!allUvs) {
+        if (projection == UvProjection::Box) computeBoxUvs(mesh);
+        else computeSphericalUvs(mesh);
+    }
     validateMesh(mesh);
     return mesh;
 }

@@ -10,7 +10,7 @@
 mat3 normalMatrix(mat4 model)
 {
     // TODO(f1.b): return the inverse transpose of the upper-left 3x3 of MODEL.
-    // Checked by: raylab check --stage f1 (view "squashed").
+    // Checked by: raylab check --stage f1 (function normalMatrix, view "squashed").
     labTodo();
     return mat3(1.0);
 }

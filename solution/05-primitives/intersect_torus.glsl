@@ -41,7 +41,7 @@ vec4 torusQuartic(vec3 o, vec3 d, float R, float r)
     //@ // Put the ray into f(p) above and collect the powers of t
     //@ // (guide, section 5): |d| = 1 makes the t^4 coefficient 1. Name the
     //@ // terms that come back (o . o, o . d, ...) once.
-    //@ // Checked by: raylab check --stage 05 (views front, torus-closeup).
+    //@ // Checked by: raylab check --stage 05 (function torusQuartic; views front, torus-closeup).
     //@ labTodo();
     //@ return vec4(0.0, 0.0, 0.0, 1.0);
     //@guided

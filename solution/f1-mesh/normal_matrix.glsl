@@ -7,7 +7,7 @@
 //@ // uniform and non-uniform scales, so a sphere squashed into an ellipsoid
 //@ // too). Return the 3x3 matrix that does that for MODEL; its result need not
 //@ // be unit length (guide, section 3 derives it).
-//@ // Checked by: raylab check --stage f1 (view "squashed").
+//@ // Checked by: raylab check --stage f1 (function normalMatrix; view "squashed").
 //@ #include "lab_todo.glsl"
 //@
 //@ mat3 normalMatrix(mat4 model)
@@ -28,7 +28,7 @@
 mat3 normalMatrix(mat4 model)
 {
     // TODO(f1.b): return the inverse transpose of the upper-left 3x3 of MODEL.
-    // Checked by: raylab check --stage f1 (view "squashed").
+    // Checked by: raylab check --stage f1 (function normalMatrix, view "squashed").
     //@solution
     return transpose(inverse(mat3(model)));
     //@stub

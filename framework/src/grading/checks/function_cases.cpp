@@ -255,6 +255,7 @@ const std::vector<FunctionSpec>& functionSpecs() {
                                          discSpec(),
                                          triangleSpec(),
                                          torusNormalSpec(),
+                                         torusQuarticSpec(),
                                          sphereUvSpec(),
                                          planeUvSpec()};
         for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));

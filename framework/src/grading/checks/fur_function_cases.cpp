@@ -182,6 +182,55 @@ FunctionSpec silhouetteSpec() {
     return s;
 }
 
+// normalMatrix(model) applied to a normal: a0..a2 the columns of the
+// model's 3x3 part (w: its translation), a3 the normal. The result need not
+// be unit length: its direction is checked.
+FunctionSpec normalMatrixSpec() {
+    FunctionSpec s;
+    s.name = "normalMatrix";
+    s.includes = {"normal_matrix.glsl"};
+    s.call = "vec4(normalize(normalMatrix(mat4(vec4(a0.xyz, 0.0), vec4(a1.xyz, 0.0), "
+             "vec4(a2.xyz, 0.0), vec4(a0.w, a1.w, a2.w, 1.0))) * a3.xyz), 1.0)";
+    const double c = std::cos(0.6), sn = std::sin(0.6);
+    const struct {
+        const char* label;
+        glm::dmat3 m;
+        dvec3 move, normal;
+    } rows[] = {
+        {"identity", glm::dmat3(1.0), {0, 0, 0}, {0.6, 0.8, 0}},
+        {"moved only: normals do not move", glm::dmat3(1.0), {5, -2, 3}, {0, 0, 1}},
+        {"uniform scale 2.5", glm::dmat3(2.5), {0, 0, 0}, {0.36, 0.48, 0.8}},
+        {"turned 34 degrees about y",
+         glm::dmat3(c, 0, -sn, 0, 1, 0, sn, 0, c),
+         {1, 0, 0},
+         {1, 0, 0}},
+        {"squashed: scale (1.5, 0.6, 1), the normal at 45 degrees",
+         glm::dmat3(1.5, 0, 0, 0, 0.6, 0, 0, 0, 1),
+         {0, 0, 0},
+         {0.7071, 0.7071, 0}},
+        {"squashed and turned",
+         glm::dmat3(c, 0, -sn, 0, 1, 0, sn, 0, c) * glm::dmat3(1.5, 0, 0, 0, 0.6, 0, 0, 0, 1),
+         {0.5, 1, -2},
+         {0.48, 0.6, 0.64}},
+        {"sheared", glm::dmat3(1, 0, 0, 0.8, 1, 0, 0, 0, 1), {0, 0, 0}, {0, 1, 0}},
+        {"scale (3, 0.2, 0.5), a normal along no axis",
+         glm::dmat3(3, 0, 0, 0, 0.2, 0, 0, 0, 0.5),
+         {0, 0, 0},
+         {0.2, 0.9, -0.3}},
+    };
+    for (const auto& r : rows)
+        s.cases.push_back(row(r.label, dvec4(r.m[0], r.move.x), dvec4(r.m[1], r.move.y),
+                              dvec4(r.m[2], r.move.z), dvec4(r.normal, 0.0)));
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
+        const glm::dmat3 m(dvec3(c.in[0]), dvec3(c.in[1]), dvec3(c.in[2]));
+        return dvec4(glm::normalize(glm::transpose(glm::inverse(m)) * dvec3(c.in[3])), 1.0);
+    });
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareVector(c, got, want, 3, 1e-4);
+    };
+    return s;
+}
+
 FunctionSpec strandPointSpec() {
     FunctionSpec s;
     s.name = "strandPoint";
@@ -273,8 +322,8 @@ FunctionSpec kajiyaKaySpec() {
 }  // namespace
 
 std::vector<FunctionSpec> furFunctionSpecs() {
-    return {shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(), shellShadowSpec(),
-            silhouetteSpec(), strandPointSpec(), kajiyaKaySpec()};
+    return {normalMatrixSpec(), shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(),
+            shellShadowSpec(),  silhouetteSpec(), strandPointSpec(), kajiyaKaySpec()};
 }
 
 }  // namespace raylab

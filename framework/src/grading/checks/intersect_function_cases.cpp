@@ -220,6 +220,56 @@ FunctionSpec triangleSpec() {
     return s;
 }
 
+// torusQuartic(o, d, R, r): the coefficients (c3, c2, c1, c0) of the quartic
+// in t whose roots are where the ray o + t d meets the torus (|d| = 1, the
+// units intersectTorusUnit works in: 1 <= R < 2). A coefficient is right
+// within 1e-4 of the largest one's size: float rounding, not a wrong term.
+FunctionSpec torusQuarticSpec() {
+    FunctionSpec s;
+    s.name = "torusQuartic";
+    s.includes = {"ray.glsl", "scene_objects.glsl", "intersect_torus.glsl"};
+    s.call = "torusQuartic(a0.xyz, a1.xyz, a2.x, a2.y)";
+    const struct {
+        const char* label;
+        dvec3 o, d;
+        double R, r;
+    } rows[] = {
+        {"along the axis, through the hole", {0, 0, 3}, {0, 0, -1}, 1.0, 0.25},
+        {"across the ring through the centre", {-3, 0, 0}, {1, 0, 0}, 1.0, 0.25},
+        {"from inside the tube", {1.0, 0, 0.05}, {0, 1, 0}, 1.0, 0.25},
+        {"a slanted ray", {-2, 1.5, 1}, glm::normalize(dvec3(0.8, -0.5, -0.3)), 1.5, 0.4},
+        {"a fat torus (r = R / 2)",
+         {0.3, -2.5, 0.7},
+         glm::normalize(dvec3(0.1, 1, -0.2)),
+         1.2,
+         0.6},
+        {"tangent to the outer equator", {-3, 1.3, 0}, {1, 0, 0}, 1.0, 0.3},
+        {"R near 2", {2.5, 2.5, 0.5}, glm::normalize(dvec3(-1, -1, -0.1)), 1.9, 0.2},
+    };
+    for (const auto& r : rows) {
+        FunctionCase c;
+        c.label = r.label;
+        c.in = {dvec4(r.o, 0), dvec4(r.d, 0), dvec4(r.R, r.r, 0, 0), dvec4(0.0)};
+        s.cases.push_back(c);
+    }
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
+        const dvec3 o(c.in[0]), d(c.in[1]);
+        const double R = c.in[2].x, r = c.in[2].y;
+        // f(o + t d) = (|p|^2 + R^2 - r^2)^2 - 4 R^2 (p.x^2 + p.y^2), |d| = 1.
+        const double m = glm::dot(o, o), n = glm::dot(o, d), k = m + R * R - r * r;
+        const double R4 = 4.0 * R * R;
+        return dvec4(4.0 * n, 4.0 * n * n + 2.0 * k - R4 * (d.x * d.x + d.y * d.y),
+                     4.0 * n * k - 2.0 * R4 * (o.x * d.x + o.y * d.y),
+                     k * k - R4 * (o.x * o.x + o.y * o.y));
+    });
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        const double size = std::max(
+            {1.0, std::fabs(want.x), std::fabs(want.y), std::fabs(want.z), std::fabs(want.w)});
+        return compareVector(c, got, want, 4, 1e-4 * size);
+    };
+    return s;
+}
+
 FunctionSpec torusNormalSpec() {
     FunctionSpec s;
     s.name = "torusNormalLocal";

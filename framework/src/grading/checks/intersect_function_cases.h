@@ -5,10 +5,11 @@
 
 namespace raylab {
 
-FunctionSpec sphereSpec();       // intersectSphere (stage 01)
-FunctionSpec planeSpec();        // intersectPlane (stage 05)
-FunctionSpec discSpec();         // intersectDisc
-FunctionSpec triangleSpec();     // intersectTriangle
-FunctionSpec torusNormalSpec();  // the torus's normal
+FunctionSpec sphereSpec();        // intersectSphere (stage 01)
+FunctionSpec planeSpec();         // intersectPlane (stage 05)
+FunctionSpec discSpec();          // intersectDisc
+FunctionSpec triangleSpec();      // intersectTriangle
+FunctionSpec torusNormalSpec();   // the torus's normal
+FunctionSpec torusQuarticSpec();  // the quartic's coefficients (the open level writes them)
 
 }  // namespace raylab

@@ -126,7 +126,7 @@ const BAD = [
     ['mesh.detail', '8', 'mesh.detail: expected a whole number'],
     ['mesh.obj', 'x.obj', 'mesh: give either "shape" (sphere, torus, cube) or "obj" (a file)'],
     ['mesh', 5, 'mesh: give either "shape" (sphere, torus, cube) or "obj" (a file)'],
-    ['mesh.shpe', 1, 'mesh.shpe: unknown key (known here: shape, detail, obj)'],
+    ['mesh.shpe', 1, 'mesh.shpe: unknown key (known here: shape, detail, obj, fit, uvs)'],
     ['sphere', 1, 'sphere: unknown key (known here: background, camera, mesh, transform, light, fur)'],
     ['fur.length', 0, 'fur.length: expected a positive number'],
     ['fur.length', '1', 'fur.length: expected a number'],

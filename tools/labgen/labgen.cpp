@@ -23,6 +23,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -121,10 +122,21 @@ int main(int argc, char** argv) {
                 for (const auto& e : fs::directory_iterator(dir))
                     if (isShaderFile(e.path()) && !files.count(e.path().filename().string()))
                         stale.insert(e.path().filename().string());
-            if (copyPictures && fs::is_directory(projectLabs / stage.id, ec))
+            if (copyPictures && fs::is_directory(projectLabs / stage.id, ec)) {
+                // The open level's own pictures (NAME-open.png) after the others, in their place.
+                std::vector<fs::path> pictures;
                 for (const auto& e : fs::directory_iterator(projectLabs / stage.id))
-                    if (e.is_regular_file() && isPicture(e.path()))
-                        files[e.path().filename().string()] = readTextFile(e.path());
+                    if (e.is_regular_file() && isPicture(e.path())) pictures.push_back(e.path());
+                std::sort(pictures.begin(), pictures.end(),
+                          [](const fs::path& a, const fs::path& b) {
+                              return labPictureName(a.filename().string(), Level::Guided).empty() <
+                                     labPictureName(b.filename().string(), Level::Guided).empty();
+                          });
+                for (const fs::path& p : pictures) {
+                    const std::string name = labPictureName(p.filename().string(), level);
+                    if (!name.empty()) files[name] = readTextFile(p);
+                }
+            }
             for (const auto& [name, text] : files) {
                 if (check) {
                     if (readIfExists(dir / name) != text) {

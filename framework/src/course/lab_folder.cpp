@@ -57,6 +57,14 @@ std::string guideAtLevel(const std::string& source, Level level, const std::stri
     return out;
 }
 
+std::string labPictureName(const std::string& name, Level level) {
+    const std::string suffix = "-open.png";
+    const bool openOnly = name.size() > suffix.size() &&
+                          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    if (!openOnly) return name;
+    return level == Level::Open ? name.substr(0, name.size() - suffix.size()) + ".png" : "";
+}
+
 std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading) {
     const std::filesystem::path source = stage.folder() / "guide.md";
     return withGradingSection(guideAtLevel(readTextFile(source), level, displayPath(source)), stage,

@@ -22,6 +22,12 @@ namespace raylab {
 // or a heading inside one.
 std::string guideAtLevel(const std::string& source, Level level, const std::string& file);
 
+// The name a hand-made file of labs/<id>/ (a picture) has in a lab folder at
+// LEVEL, or "" when that level leaves it out: "NAME-open.png" is the open
+// level's NAME.png (the untouched open lab looks other than the guided one),
+// left out at the guided level; other files are the same at both.
+std::string labPictureName(const std::string& fileName, Level level);
+
 // STAGE's guide at LEVEL, its "How you are graded" from GRADING.
 std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading);
 

@@ -285,6 +285,11 @@ TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
             CommandResult c =
                 runRaylab("check --stage " + stage + " --lab " + quote(out) + " --size 64x48");
             EXPECT_EQ(c.exitCode, 1) << stage << " as handed out: " << c.all();
+            // The open lab's own "Before you start" picture, under the guided one's name.
+            EXPECT_EQ(readFile(out / stage / "unfinished.png"),
+                      readFile(sourceDir() / "labs" / stage / "unfinished-open.png"))
+                << stage;
+            EXPECT_FALSE(fs::exists(out / stage / "unfinished-open.png")) << stage;
         }
     }
     // The control: a guided handout holds the open level's answers (its given code).

@@ -38,6 +38,7 @@ packages=(
   emscripten                                       # the web page's core: the C++ CPU modules in WebAssembly
   slurm-wlm munge                                  # the cluster test (ctest -L cluster): a one-node Slurm cluster
   zip unzip                                        # `raylab autograder` (Gradescope's zip) and its test
+  python3-venv                                     # `raylab similarity`'s detector (copydetect, PyPI)
 )
 # The web build (web/) compiles with TypeScript from the npm registry: Node.js
 # and npm from Debian unless a Node.js is already installed (NodeSource's
@@ -64,6 +65,12 @@ echo "install.sh: built build/raylab"
 npm --prefix web ci --no-audit --no-fund --loglevel=error
 npm --prefix web run --silent build
 echo "install.sh: built web/dist (serve it with: npm --prefix web run serve)"
+
+# `raylab similarity`'s detector: copydetect from PyPI in its own virtual
+# environment (tools/similarity/requirements.txt pins it).
+[ -x tools/similarity/.venv/bin/python ] || python3 -m venv tools/similarity/.venv
+tools/similarity/.venv/bin/pip install -q --disable-pip-version-check -r tools/similarity/requirements.txt
+echo "install.sh: set up tools/similarity/.venv (copydetect)"
 
 if [ "$run_tests" -eq 1 ]; then
   ctest --test-dir build --output-on-failure -j "$(nproc)"

@@ -28,6 +28,7 @@ Command prairieLearnCommand();
 Command gradescopeCommand();
 Command autograderCommand();
 Command mutantsCommand();
+Command similarityCommand();
 
 const std::vector<Command>& commandTable() {
     static const std::vector<Command> table = {
@@ -35,7 +36,8 @@ const std::vector<Command>& commandTable() {
         traceCommand(),        gradeCommand(),      gradeItemCommand(),  gradeReferenceCommand(),
         demoCommand(),         benchCommand(),      checkCommand(),      shaderCommand(),
         compareCommand(),      handoutCommand(),    webBundleCommand(),  functionTablesCommand(),
-        prairieLearnCommand(), gradescopeCommand(), autograderCommand(), mutantsCommand()};
+        prairieLearnCommand(), gradescopeCommand(), autograderCommand(), mutantsCommand(),
+        similarityCommand()};
     return table;
 }
 

@@ -1,5 +1,5 @@
 // `raylab similarity`: a class of independent solutions of the open labs 01
-// and 04 (the course's own, and two written apart from it:
+// and 04 (the course's own, and two more in other styles:
 // tests/similarity/independent/) and copies planted from them as copiers
 // disguise them: variables renamed, functions reordered, comments and layout
 // changed, and all three at once. Every planted pair must be flagged, no

@@ -30,8 +30,11 @@ uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 
 //@ //    loop must end for every pixel: bound it by MAX_RAYS.
 //@ //  - A ray leaving a surface starts just off it, on the side it leaves
 //@ //    toward (offsetRayOrigin, as in lab 03): a refracted ray starts inside.
-//@ //  - surfaceAt(ray, hit) gives the hit's point, outward normal and material;
-//@ //    shade with the normal facing the incoming ray.
+//@ //  - surfaceAt(ray, hit) gives a Surface: .point (where the ray hit),
+//@ //    .normal (unit, out of the object) and .material, a Material: .type
+//@ //    (MAT_PLASTIC, MAT_MIRROR, MAT_GLASS or MAT_METAL), .specular (a
+//@ //    mirror's reflectance), .ior (glass), .n and .k (metal). Shade with the
+//@ //    normal facing the incoming ray.
 //@ // Checked by: raylab check --stage 04 (views front, depth-1, depth-2, glass-closeup, inside-glass, gold).
 //@ vec3 trace(Ray primary)
 //@ {

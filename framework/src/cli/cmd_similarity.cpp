@@ -32,7 +32,7 @@ namespace {
 
 // Below it, independent solutions of the open labs; above it, every planted
 // copy (tests/similarity: docs/grading.md has the figures).
-constexpr double kDefaultThreshold = 0.8;
+constexpr double kDefaultThreshold = 0.85;
 
 struct SimilarityOptions {
     std::string submissions, out, stages, level = "guided";

@@ -4,7 +4,9 @@
 //     the stage.json files, no variant file standing in for a student's
 //     file, and no text file containing the code of any //@solution region
 //     of a stage it holds (whitespace aside); the scan is shown to catch a
-//     planted solution file;
+//     planted solution file; the same at the open level (--level open), where
+//     the code an open region's guided part gives is an answer too (the
+//     guided bundle holds it: the scan is shown to see it);
 //  2. served by a plain static server (python3 -m http.server), the page
 //     offers exactly those stages, labs only, and Check runs on each stage's
 //     lab as handed out with native's report, with no failed request.
@@ -28,17 +30,48 @@ function filesUnder(dir) {
   return readdirSync(dir).flatMap((n) => (statSync(join(dir, n)).isDirectory() ? filesUnder(join(dir, n)) : [join(dir, n)]));
 }
 
-// The code of every //@solution region of STAGES' files, whitespace squashed.
-function solutionRegions() {
+// The code of every //@solution region of STAGES' files (up to its //@stub),
+// whitespace squashed; at the open level also every run of code an open
+// region's guided part gives (the answer at that level), but for runs of
+// under 40 characters and those the open stub holds too (a signature).
+function solutionRegions(level = 'guided') {
   const regions = [];
   for (const stage of STAGES) {
     for (const file of filesUnder(join(projectRoot, 'solution', stage)).filter((f) => /\.(glsl|vert|frag|geom)$/.test(f))) {
       const lines = readFileSync(file, 'utf8').split('\n');
+      const where = (i) => `${relative(projectRoot, file)}:${i + 1}`;
+      let stub = '', run = [], runStart = 0, inOpen = false, inStub = false, inSolution = false;
+      const endRun = () => {
+        const code = squash(run.join('\n'));
+        if (code.length >= 40 && !stub.includes(code)) regions.push({ where: where(runStart), code });
+        run = [];
+      };
       for (let i = 0; i < lines.length; ++i) {
-        if (lines[i].trim() !== '//@solution') continue;
-        const body = [];
-        for (++i; i < lines.length && lines[i].trim() !== '//@end'; ++i) body.push(lines[i]);
-        regions.push({ where: `${relative(projectRoot, file)}:${i - body.length}`, code: squash(body.join('\n')) });
+        const t = lines[i].trim();
+        if (t === '//@solution') {
+          if (inOpen) endRun();
+          const body = [];
+          for (++i; i < lines.length && !lines[i].trim().startsWith('//@stub'); ++i) body.push(lines[i]);
+          regions.push({ where: where(i - body.length), code: squash(body.join('\n')) });
+          inSolution = true;
+        } else if (t === '//@end') {
+          inSolution = false;
+          runStart = i + 1;
+        } else if (t === '//@open') {
+          inStub = true;
+          stub = '';
+        } else if (t === '//@guided') {
+          inStub = false;
+          inOpen = level === 'open';
+          runStart = i + 1;
+        } else if (t === '//@end-open') {
+          if (inOpen) endRun();
+          inOpen = false;
+        } else if (inStub) {
+          stub += ' ' + squash(t.replace(/^\/\/@ ?/, ''));
+        } else if (inOpen && !inSolution && !t.startsWith('//@') && !t.startsWith('//')) {
+          run.push(lines[i]);
+        }
       }
     }
   }
@@ -89,6 +122,17 @@ try {
   copyFileSync(join(projectRoot, 'solution/02-shading/blinn_phong.glsl'), join(planted, 'labs/02-shading/notes.glsl'));
   const caught = solutionsIn(planted, regions);
   check(caught.some((f) => f.startsWith('labs/02-shading/notes.glsl')), `a planted solution file is found: ${caught[0] ?? 'not found'}`);
+
+  // The open level (--level open): no solution region, and none of the code
+  // the guided level gives and the open level takes away.
+  const openBundle = join(work, 'open');
+  execFileSync(raylab, ['web-bundle', '--stages', '01-03', '--level', 'open', '--out', openBundle], { encoding: 'utf8' });
+  const openRegions = solutionRegions('open');
+  check(openRegions.length > regions.length, `${openRegions.length - regions.length} runs of code the open level takes away, to look for`);
+  const openFound = solutionsIn(openBundle, openRegions);
+  check(openFound.length === 0, `the open bundle holds no answer of its level${openFound.length ? `: ${openFound.slice(0, 5).join('; ')}` : ''}`);
+  const guidedHasThem = solutionsIn(bundle, openRegions).length;
+  check(guidedHasThem > 0, `the guided bundle does hold the open level's answers (${guidedHasThem}): the scan sees them`);
 
   server = await serveStatically(bundle);
   browser = await launchBrowser();

@@ -6,8 +6,10 @@
 
 uniform int uShadows;
 
-// Where a shadow ray starts: offsetRayOrigin(point, side) (framework/shaders/
-// ray_offset.glsl) moves the point just off the surface, to the side `side`.
+// Where a shadow ray starts: vec3 offsetRayOrigin(vec3 point, vec3 side)
+// (provided by the framework, in framework/shaders/ray_offset.glsl) returns
+// the point moved just off the surface, to the side `side` (a unit normal
+// or its opposite).
 // A hit point computed in floating point lies a tiny bit above or below the
 // true surface; started exactly there, the ray could hit its own surface
 // ("shadow acne"). How far is "just off" grows with the size of the

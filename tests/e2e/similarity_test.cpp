@@ -132,8 +132,8 @@ TEST(Similarity, PlantedCopiesAreFlaggedAndIndependentSolutionsAreNot) {
     CommandResult r = runRaylab("similarity --submissions " + quote(cls) +
                                 " --stages 01,04 --level open --out " + quote(dir / "out"));
     ASSERT_EQ(r.exitCode, 0) << r.all();
-    const std::set<std::string> planted = {"kim,pat",  "lou,quinn", "ada,ray",
-                                           "lou,sam",  "quinn,sam"};
+    const std::set<std::string> planted = {"kim,pat", "lou,quinn", "ada,ray", "lou,sam",
+                                           "quinn,sam"};
     for (const char* stage : kStages) {
         const auto pairs = flaggedPairs(dir / "out" / "pairs.csv", stage);
         EXPECT_EQ(pairs.size(), 55u) << stage << ": every pair of 11 students";

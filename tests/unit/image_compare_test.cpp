@@ -110,3 +110,14 @@ TEST(Diagnose, CausesAreTheStagesOwn) {
     EXPECT_NE(raylab::diagnose(dark, expected, 8, shadows).find("(shadow acne?)"),
               std::string::npos);
 }
+
+// A picture of one colour is said to be one, with the colour, and no more:
+// it may be the background (nothing drawn) or a surface gone white.
+TEST(Diagnose, OneFlatColourIsStatedNotExplained) {
+    raylab::Image expected = filled(40, 30, 30, 40, 60);
+    for (int x = 0; x < 40 * 15; ++x) expected.rgba[std::size_t(4 * x)] = 200;  // a picture
+    const std::string white = raylab::diagnose(filled(40, 30, 255, 255, 255), expected, 8);
+    EXPECT_EQ(white, "the picture is one flat colour, (255, 255, 255), where the expected one has "
+                     "a picture");
+    EXPECT_EQ(white.find("background"), std::string::npos);
+}

@@ -48,7 +48,8 @@ void writeText(const fs::path& file, const std::string& text) {
 
 // The stage's own files (those students write in) from FILES, in name
 // order, one after the other; empty when none is there.
-std::string ownCode(const StageInfo& stage, const std::function<std::string(const std::string&)>& file) {
+std::string ownCode(const StageInfo& stage,
+                    const std::function<std::string(const std::string&)>& file) {
     std::string code;
     for (const auto& [name, source] : labFileSources(stage)) {
         if (!source.own) continue;

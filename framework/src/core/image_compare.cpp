@@ -100,7 +100,9 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
             darker += sumM < sumE;
             brighter += sumM > sumE;
         }
-    // One flat colour where the reference has a picture: nothing was drawn.
+    // One flat colour where the reference has a picture. Said as a fact, with
+    // the colour: it may be the background (nothing drawn) or a surface
+    // gone white or black (a weight or normal wrong): a hint does not guess.
     long flat = 0, expectedFlat = 0;
     const std::uint8_t *m0 = mine.pixel(0, 0), *e0 = expected.pixel(0, 0);
     auto near = [&](const std::uint8_t* p, const std::uint8_t* q) {
@@ -113,7 +115,9 @@ std::string diagnose(const Image& mine, const Image& expected, int channelTolera
             expectedFlat += near(expected.pixel(x, y), e0);
         }
     if (flat >= all * 99 / 100 && expectedFlat < all * 95 / 100)
-        return "the picture is one flat colour: nothing was drawn over the background";
+        return "the picture is one flat colour, (" + std::to_string(m0[0]) + ", " +
+               std::to_string(m0[1]) + ", " + std::to_string(m0[2]) +
+               "), where the expected one has a picture";
     if (differing == 0) return "";
     if (darker >= differing * 8 / 10)
         return percent(darker, differing) + " of the differing pixels are too dark" +

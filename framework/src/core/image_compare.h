@@ -46,7 +46,8 @@ struct DiagnoseContext {
 
 // A hint at what is wrong, for students ("" when nothing stands out): NaN
 // pixels, pixels that reached a TODO stub, a picture of one flat colour
-// (nothing drawn), mostly too dark, mostly too bright.
+// (with the colour: not guessed to be the background), mostly too dark,
+// mostly too bright.
 std::string diagnose(const Image& mine, const Image& expected, int channelTolerance,
                      const DiagnoseContext& context = {});
 

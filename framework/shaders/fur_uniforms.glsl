@@ -1,12 +1,19 @@
 // The fur track's uniforms, set by the framework's fur renderer for every
 // draw. World space throughout: y is up. (Students need not change this file.)
-uniform mat4 uModel;       // object space -> world space
-uniform mat4 uView;        // world space -> camera space
-uniform mat4 uProjection;  // camera space -> clip space
-uniform vec3 uEye;         // the camera's position
-uniform vec3 uLightDir;    // unit vector toward the (directional) light
-uniform vec3 uLightColor;
-uniform vec3 uAmbient;     // light that reaches every point
+// (A function check runs one of your functions on its own and sets these
+// itself: RAYLAB_FUNCTION_CHECK makes them plain variables there.)
+#ifdef RAYLAB_FUNCTION_CHECK
+#define FUR_UNIFORM
+#else
+#define FUR_UNIFORM uniform
+#endif
+FUR_UNIFORM mat4 uModel;       // object space -> world space
+FUR_UNIFORM mat4 uView;        // world space -> camera space
+FUR_UNIFORM mat4 uProjection;  // camera space -> clip space
+FUR_UNIFORM vec3 uEye;         // the camera's position
+FUR_UNIFORM vec3 uLightDir;    // unit vector toward the (directional) light
+FUR_UNIFORM vec3 uLightColor;
+FUR_UNIFORM vec3 uAmbient;     // light that reaches every point
 
 uniform float uFurLength;  // how far the tips stand off the skin
 uniform int uShellIndex;   // which of the shell draw calls this is: 0 (the first) .. uShellCount - 1

@@ -9,7 +9,7 @@ vec3 surfaceLight(vec3 albedo, vec3 normal, vec3 toLight)
     // TODO(f1.c): return albedo * (uAmbient + uLightColor * max(n . l, 0)).
     // NORMAL arrives interpolated between vertices, so it is no longer unit
     // length: normalise it first.
-    // Checked by: raylab check --stage f1 (all views).
+    // Checked by: raylab check --stage f1 (function surfaceLight; all views).
     labTodo();
     return albedo;
 }

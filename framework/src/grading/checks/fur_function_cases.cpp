@@ -231,6 +231,60 @@ FunctionSpec normalMatrixSpec() {
     return s;
 }
 
+// surfaceLight(albedo, normal, toLight): a0 the albedo, a1 the normal (not
+// always unit length: interpolated), a2 the unit direction toward the light,
+// a3.xyz the light's colour and a3.w the ambient light (grey). The fur
+// uniforms are plain variables in a function check (fur_uniforms.glsl).
+FunctionSpec surfaceLightSpec() {
+    FunctionSpec s;
+    s.name = "surfaceLight";
+    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
+    s.includes = {"surface_light.glsl"};
+    s.helpers = "vec4 checkSurfaceLight(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    uLightColor = a3.xyz;\n"
+                "    uAmbient = vec3(a3.w);\n"
+                "    return vec4(surfaceLight(a0.xyz, a1.xyz, a2.xyz), 1.0);\n"
+                "}\n";
+    s.call = "checkSurfaceLight(a0, a1, a2, a3)";
+    const dvec3 albedo(0.8, 0.5, 0.3), up(0, 1, 0), white(1.0);
+    const struct {
+        const char* label;
+        dvec3 albedo, normal, toLight, color;
+        double ambient;
+    } rows[] = {
+        {"light straight above", albedo, up, up, white, 0.2},
+        {"light at 60 degrees", albedo, up, glm::normalize(dvec3(std::sqrt(3.0), 1, 0)), white,
+         0.2},
+        {"light behind the surface: ambient only", albedo, up, {0, -1, 0}, white, 0.2},
+        {"grazing light (N . L = 0)", albedo, up, {1, 0, 0}, white, 0.15},
+        {"an interpolated normal, 0.7 long", albedo, {0, 0.7, 0}, up, white, 0.1},
+        {"an interpolated normal, 1.6 long and tilted",
+         {0.4, 0.6, 0.9},
+         {0.96, 1.28, 0},
+         up,
+         {1.0, 0.9, 0.8},
+         0.18},
+        {"coloured light, no ambient",
+         {1, 1, 1},
+         {0, 0, 1},
+         glm::normalize(dvec3(0, 1, 1)),
+         {0.9, 0.2, 0.1},
+         0.0},
+        {"black albedo", {0, 0, 0}, up, up, white, 0.3},
+    };
+    for (const auto& r : rows)
+        s.cases.push_back(row(r.label, dvec4(r.albedo, 0), dvec4(r.normal, 0), dvec4(r.toLight, 0),
+                              dvec4(r.color, r.ambient)));
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
+        const dvec3 n = glm::normalize(dvec3(c.in[1]));
+        const double lambert = std::max(glm::dot(n, dvec3(c.in[2])), 0.0);
+        return dvec4(dvec3(c.in[0]) * (dvec3(c.in[3].w) + dvec3(c.in[3]) * lambert), 1.0);
+    });
+    s.compare = compareVec3;
+    return s;
+}
+
 FunctionSpec strandPointSpec() {
     FunctionSpec s;
     s.name = "strandPoint";
@@ -322,8 +376,9 @@ FunctionSpec kajiyaKaySpec() {
 }  // namespace
 
 std::vector<FunctionSpec> furFunctionSpecs() {
-    return {normalMatrixSpec(), shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(),
-            shellShadowSpec(),  silhouetteSpec(), strandPointSpec(), kajiyaKaySpec()};
+    return {normalMatrixSpec(), surfaceLightSpec(), shellLayerSpec(),
+            shellOffsetSpec(),  shellAlphaSpec(),   shellShadowSpec(),
+            silhouetteSpec(),   strandPointSpec(),  kajiyaKaySpec()};
 }
 
 }  // namespace raylab

@@ -11,7 +11,7 @@
 vec4 toWorld(vec3 objectPoint)
 {
     // TODO(f1.a): the point in world space.
-    // Checked by: raylab check --stage f1 (all views).
+    // Checked by: raylab check --stage f1 (function toWorld; all views).
     labTodo();
     return vec4(objectPoint, 1.0);
 }
@@ -19,7 +19,7 @@ vec4 toWorld(vec3 objectPoint)
 vec4 toClip(vec4 world)
 {
     // TODO(f1.a): the world-space point WORLD in clip space.
-    // Checked by: raylab check --stage f1 (all views).
+    // Checked by: raylab check --stage f1 (function toClip; all views).
     labTodo();
     return vec4(0.5 * world.xy, 0.0, 1.0);
 }

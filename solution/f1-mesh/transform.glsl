@@ -12,12 +12,12 @@ vec4 toWorld(vec3 objectPoint)
 {
     //@open
     //@ // TODO(f1.a): the object-space point in world space.
-    //@ // Checked by: raylab check --stage f1 (all views).
+    //@ // Checked by: raylab check --stage f1 (function toWorld; all views).
     //@ labTodo();
     //@ return vec4(objectPoint, 1.0);
     //@guided
     // TODO(f1.a): the point in world space.
-    // Checked by: raylab check --stage f1 (all views).
+    // Checked by: raylab check --stage f1 (function toWorld; all views).
     //@solution
     return uModel * vec4(objectPoint, 1.0);
     //@stub
@@ -32,12 +32,12 @@ vec4 toClip(vec4 world)
     //@open
     //@ // TODO(f1.a): the world-space point WORLD in clip space (through the
     //@ // camera's space).
-    //@ // Checked by: raylab check --stage f1 (all views).
+    //@ // Checked by: raylab check --stage f1 (function toClip; all views).
     //@ labTodo();
     //@ return vec4(0.5 * world.xy, 0.0, 1.0);
     //@guided
     // TODO(f1.a): the world-space point WORLD in clip space.
-    // Checked by: raylab check --stage f1 (all views).
+    // Checked by: raylab check --stage f1 (function toClip; all views).
     //@solution
     return uProjection * uView * world;
     //@stub

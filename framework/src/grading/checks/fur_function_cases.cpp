@@ -8,6 +8,8 @@
 #include "mesh_shapes.h"
 #include "silhouette.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 
 namespace raylab {
@@ -285,6 +287,128 @@ FunctionSpec surfaceLightSpec() {
     return s;
 }
 
+// The GLSL that makes the fur uniforms of a transform check from the case:
+// uModel = move a2.xyz, turn a1.x radians about y, scale a1.yzw; uView looks
+// from a3.xyz turned a3.w radians about y; uProjection is a perspective of
+// 45 degrees, aspect 4:3, near 0.1, far 100 (the column-major layout of
+// glm::perspective).
+const char* const kTransformHelpers =
+    "void checkTransforms(vec4 a1, vec4 a2, vec4 a3)\n"
+    "{\n"
+    "    float c = cos(a1.x), s = sin(a1.x);\n"
+    "    mat4 turn = mat4(c, 0.0, -s, 0.0,  0.0, 1.0, 0.0, 0.0,  s, 0.0, c, 0.0,  0.0, 0.0, 0.0, "
+    "1.0);\n"
+    "    mat4 scale = mat4(a1.y, 0.0, 0.0, 0.0,  0.0, a1.z, 0.0, 0.0,  0.0, 0.0, a1.w, 0.0,  0.0, "
+    "0.0, 0.0, 1.0);\n"
+    "    mat4 move = mat4(1.0);\n"
+    "    move[3] = vec4(a2.xyz, 1.0);\n"
+    "    uModel = move * turn * scale;\n"
+    "    float cv = cos(a3.w), sv = sin(a3.w);\n"
+    "    mat4 view = mat4(cv, 0.0, sv, 0.0,  0.0, 1.0, 0.0, 0.0,  -sv, 0.0, cv, 0.0,  0.0, 0.0, "
+    "0.0, 1.0);\n"
+    "    mat4 back = mat4(1.0);\n"
+    "    back[3] = vec4(-a3.xyz, 1.0);\n"
+    "    uView = view * back;\n"
+    "    float f = 1.0 / tan(radians(22.5));\n"
+    "    uProjection = mat4(f / (4.0 / 3.0), 0.0, 0.0, 0.0,  0.0, f, 0.0, 0.0,  0.0, 0.0, "
+    "-100.1 / 99.9, -1.0,  0.0, 0.0, -2.0 * 100.0 * 0.1 / 99.9, 0.0);\n"
+    "}\n";
+
+// The same matrices in double precision.
+struct TransformCase {
+    glm::dmat4 model, view, projection;
+};
+TransformCase transformsOf(const FunctionCase& c) {
+    const dvec4 a1 = c.in[1], a2 = c.in[2], a3 = c.in[3];
+    TransformCase t;
+    t.model = glm::translate(glm::dmat4(1.0), dvec3(a2)) *
+              glm::rotate(glm::dmat4(1.0), a1.x, dvec3(0, 1, 0)) *
+              glm::scale(glm::dmat4(1.0), dvec3(a1.y, a1.z, a1.w));
+    t.view = glm::rotate(glm::dmat4(1.0), -a3.w, dvec3(0, 1, 0)) *
+             glm::translate(glm::dmat4(1.0), -dvec3(a3));
+    t.projection = glm::perspective(glm::radians(45.0), 4.0 / 3.0, 0.1, 100.0);
+    return t;
+}
+
+std::vector<FunctionCase> transformCases() {
+    const struct {
+        const char* label;
+        dvec3 point;
+        dvec4 turnScale;
+        dvec3 move, eye;
+        double yaw;
+    } rows[] = {
+        {"identity model, eye at (0, 0, 3)", {0.5, 0.25, 0}, {0, 1, 1, 1}, {0, 0, 0}, {0, 0, 3}, 0},
+        {"moved by (1, -2, 0.5)", {0.2, 0.3, -0.1}, {0, 1, 1, 1}, {1, -2, 0.5}, {0, 0, 4}, 0},
+        {"turned 30 degrees", {1, 0, 0}, {0.5236, 1, 1, 1}, {0, 0, 0}, {0.5, 0.2, 3}, 0.2},
+        {"squashed (1.5, 0.6, 1) and moved",
+         {0.3, 0.8, -0.4},
+         {0.3, 1.5, 0.6, 1},
+         {0, 1, 0},
+         {-1, 1.5, 4},
+         -0.3},
+        {"scaled 2.5, eye turned 40 degrees",
+         {-0.2, 0.1, 0.6},
+         {-0.7, 2.5, 2.5, 2.5},
+         {0.5, 0, -1},
+         {2, 0.5, 3},
+         0.7},
+        {"a point behind the eye", {0, 0, 5}, {0, 1, 1, 1}, {0, 0, 0}, {0, 0, 3}, 0},
+    };
+    std::vector<FunctionCase> cases;
+    for (const auto& r : rows)
+        cases.push_back(
+            row(r.label, dvec4(r.point, 1.0), r.turnScale, dvec4(r.move, 0), dvec4(r.eye, r.yaw)));
+    return cases;
+}
+
+// toWorld(objectPoint): uModel * (p, 1).
+FunctionSpec toWorldSpec() {
+    FunctionSpec s;
+    s.name = "toWorld";
+    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
+    s.includes = {"fur_uniforms.glsl", "transform.glsl"};
+    s.helpers = std::string(kTransformHelpers) +
+                "vec4 checkToWorld(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    checkTransforms(a1, a2, a3);\n"
+                "    return toWorld(a0.xyz);\n"
+                "}\n";
+    s.call = "checkToWorld(a0, a1, a2, a3)";
+    s.cases = transformCases();
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
+        return transformsOf(c).model * dvec4(dvec3(c.in[0]), 1.0);
+    });
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareVector(c, got, want, 4, 1e-5 * std::max(1.0, glm::length(want)));
+    };
+    return s;
+}
+
+// toClip(world): uProjection * uView * world, not divided by w.
+FunctionSpec toClipSpec() {
+    FunctionSpec s;
+    s.name = "toClip";
+    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
+    s.includes = {"fur_uniforms.glsl", "transform.glsl"};
+    s.helpers = std::string(kTransformHelpers) +
+                "vec4 checkToClip(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                "{\n"
+                "    checkTransforms(a1, a2, a3);\n"
+                "    return toClip(vec4(a0.xyz, 1.0));\n"
+                "}\n";
+    s.call = "checkToClip(a0, a1, a2, a3)";
+    s.cases = transformCases();
+    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
+        const TransformCase t = transformsOf(c);
+        return t.projection * t.view * dvec4(dvec3(c.in[0]), 1.0);
+    });
+    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
+        return compareVector(c, got, want, 4, 1e-4 * std::max(1.0, glm::length(want)));
+    };
+    return s;
+}
+
 FunctionSpec strandPointSpec() {
     FunctionSpec s;
     s.name = "strandPoint";
@@ -376,9 +500,9 @@ FunctionSpec kajiyaKaySpec() {
 }  // namespace
 
 std::vector<FunctionSpec> furFunctionSpecs() {
-    return {normalMatrixSpec(), surfaceLightSpec(), shellLayerSpec(),
-            shellOffsetSpec(),  shellAlphaSpec(),   shellShadowSpec(),
-            silhouetteSpec(),   strandPointSpec(),  kajiyaKaySpec()};
+    return {toWorldSpec(),    toClipSpec(),      normalMatrixSpec(), surfaceLightSpec(),
+            shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(),   shellShadowSpec(),
+            silhouetteSpec(), strandPointSpec(), kajiyaKaySpec()};
 }
 
 }  // namespace raylab

@@ -1,7 +1,8 @@
-// `raylab similarity`: a class of independent solutions of the open labs 01
-// and 04 (the course's own; dana's and eli's, written from the open guides
-// alone by helpers who never saw the solution; kim's and lou's, written in
-// other styles by a developer who had: tests/similarity/independent/) and
+// `raylab similarity`: a class of independent solutions of the open labs 01,
+// 04 and f3 (the course's own; dana's, eli's and bea's, written from the
+// open guides alone by helpers who never saw the solution; kim's and lou's,
+// of 01 and 04, in other styles by a developer who had:
+// tests/similarity/independent/) and
 // copies planted from them as copiers
 // disguise them: variables renamed, functions reordered, comments and layout
 // changed, and all three at once. Every planted pair must be flagged, no
@@ -21,7 +22,7 @@ using namespace raylab::test;
 
 namespace {
 
-const char* const kStages[] = {"01-raycast", "04-recursion"};
+const char* const kStages[] = {"01-raycast", "04-recursion", "f3-fins"};
 
 // Every name declared after a type (a local, a parameter, a struct member)
 // renamed, as a copier does with search and replace.
@@ -72,9 +73,10 @@ std::string recommented(const std::string& text) {
 void plant(const fs::path& from, const fs::path& to,
            const std::vector<std::string (*)(const std::string&)>& disguises) {
     for (const char* stage : kStages) {
+        if (!fs::is_directory(from / stage)) continue;
         fs::create_directories(to / stage);
         for (const auto& e : fs::directory_iterator(from / stage)) {
-            if (e.path().extension() != ".glsl") continue;
+            if (e.path().extension() != ".glsl" && e.path().extension() != ".geom") continue;
             std::string text = readFile(e.path());
             for (auto disguise : disguises) text = disguise(text);
             writeFile(to / stage / e.path().filename(), text);
@@ -111,7 +113,7 @@ TEST(Similarity, PlantedCopiesAreFlaggedAndIndependentSolutionsAreNot) {
         fs::create_directories(cls / "ada" / stage);
         fs::copy(dir / "solved" / stage, cls / "ada" / stage, fs::copy_options::recursive);
     }
-    for (const char* who : {"kim", "lou", "dana", "eli"}) {
+    for (const char* who : {"kim", "lou", "dana", "eli", "bea"}) {
         fs::create_directories(cls / who);
         fs::copy(sourceDir() / "tests/similarity/independent" / who, cls / who,
                  fs::copy_options::recursive);
@@ -121,6 +123,7 @@ TEST(Similarity, PlantedCopiesAreFlaggedAndIndependentSolutionsAreNot) {
     plant(cls / "lou", cls / "quinn", {reordered});
     plant(cls / "ada", cls / "ray", {recommented});
     plant(cls / "lou", cls / "sam", {renamedText, reordered, recommented});
+    plant(cls / "dana", cls / "val", {renamedText, recommented});
     // Someone who handed in the lab untouched: the template is no one's code.
     ASSERT_EQ(runLabgen("--level open --labs " + quote(dir / "open")).exitCode, 0);
     for (const char* who : {"tess", "uma"})
@@ -130,22 +133,24 @@ TEST(Similarity, PlantedCopiesAreFlaggedAndIndependentSolutionsAreNot) {
         }
 
     CommandResult r = runRaylab("similarity --submissions " + quote(cls) +
-                                " --stages 01,04 --level open --out " + quote(dir / "out"));
+                                " --stages 01,04,f3 --level open --out " + quote(dir / "out"));
     ASSERT_EQ(r.exitCode, 0) << r.all();
-    const std::set<std::string> planted = {"kim,pat", "lou,quinn", "ada,ray", "lou,sam",
-                                           "quinn,sam"};
+    const std::set<std::string> planted = {"kim,pat", "lou,quinn", "ada,ray",
+                                           "lou,sam", "quinn,sam", "dana,val"};
     for (const char* stage : kStages) {
         const auto pairs = flaggedPairs(dir / "out" / "pairs.csv", stage);
-        EXPECT_EQ(pairs.size(), 55u) << stage << ": every pair of 11 students";
+        // Who has the stage: 12 students 01 and 04, 8 f3 (kim and lou wrote no f3, bea only f3).
+        const std::size_t n = std::string(stage) == "f3-fins" ? 8 : 12;
+        EXPECT_EQ(pairs.size(), n * (n - 1) / 2) << stage << ": every pair of " << n;
         for (const auto& [pair, flagged] : pairs)
             EXPECT_EQ(flagged, planted.count(pair) > 0) << stage << ": " << pair;
         EXPECT_TRUE(fs::is_regular_file(dir / "out" / (std::string(stage) + ".html")));
         // The report shows a flagged pair side by side, the shared code marked.
         const std::string html = readFile(dir / "out" / (std::string(stage) + ".html"));
-        EXPECT_NE(html.find("kim.glsl"), std::string::npos) << stage;
+        EXPECT_NE(html.find("ray.glsl"), std::string::npos) << stage;
         EXPECT_NE(html.find("highlight-red"), std::string::npos) << stage;
     }
-    EXPECT_NE(r.out.find("10 pairs at or above 0.85"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("14 pairs at or above 0.85"), std::string::npos) << r.out;
     EXPECT_FALSE(flaggedPairs(dir / "out" / "pairs.csv", "04-recursion").at("tess,uma"))
         << "two untouched labs share only the template";
 }

@@ -75,14 +75,6 @@ bool onPath(const std::string& program) {
     return false;
 }
 
-std::string lastLine(const fs::path& log) {
-    std::ifstream in(log);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (!line.empty()) last = line;
-    return last;
-}
-
 int cmdAutograder(const BundleOptions& o) {
     // Everything that can be wrong with the request fails before anything is written.
     if (o.outDir.empty()) throw Error("--out is required");
@@ -162,7 +154,7 @@ int cmdAutograder(const BundleOptions& o) {
                     log, ChildLimits{300.0, 0});
         const ChildOutcome& done = child.wait();
         if (done.exitCode != 0 || !fs::is_regular_file(tmpZip))
-            throw Error("zip failed (" + done.describe() + "): " + lastLine(log));
+            throw Error("zip failed (" + done.describe() + "): " + lastLogLine(log));
         fs::rename(tmpZip, zip);
     } catch (const fs::filesystem_error& e) {
         cleanUp();

@@ -67,14 +67,6 @@ std::string python() {
     return fs::exists(venv, ec) ? venv.string() : "python3";
 }
 
-std::string lastLine(const fs::path& log) {
-    std::ifstream in(log);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (!line.empty()) last = line;
-    return last;
-}
-
 int cmdSimilarity(const SimilarityOptions& o) {
     const Level level = parseLevel(o.level);
     if (!(o.threshold > 0.0 && o.threshold <= 1.0))
@@ -140,8 +132,8 @@ int cmdSimilarity(const SimilarityOptions& o) {
                        log, {600.0, 0});
         const ChildOutcome& done = detector.wait();
         if (done.exitCode != 0)
-            throw Error("the detector failed (" + done.describe() + "): " + lastLine(log));
-        flagged = std::atoi(lastLine(log).c_str());
+            throw Error("the detector failed (" + done.describe() + "): " + lastLogLine(log));
+        flagged = std::atoi(lastLogLine(log).c_str());
     });
     std::printf("raylab similarity: %d pair%s at or above %g of shared code (%zu students, %d "
                 "stage%s compared at the %s level); every pair's scores in %s, the flagged "

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <fstream>
 #include <thread>
 
 namespace raylab {
@@ -112,6 +113,14 @@ Child::~Child() {
         int status = 0;
         waitpid(pid_, &status, 0);
     }
+}
+
+std::string lastLogLine(const std::filesystem::path& log) {
+    std::ifstream in(log);
+    std::string line, last;
+    while (std::getline(in, line))
+        if (!line.empty()) last = line;
+    return last;
 }
 
 }  // namespace raylab

@@ -23,6 +23,9 @@ struct ChildOutcome {
         const;  // "exit code 2", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
 };
 
+// The last non-empty line of a child's LOG (its error, as a rule); "" when none.
+std::string lastLogLine(const std::filesystem::path& log);
+
 class Child {
 public:
     // Starts ARGV (argv[0] a path) with its output appended to LOG; an empty

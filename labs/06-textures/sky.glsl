@@ -10,7 +10,7 @@ vec3 skyColor(vec3 dir)
     if (uHasSky == 0) return uBackground;
     // TODO(06.c): look the direction up in the cube map uSky (level 0, as
     // for every texture in the tracer: textureLod(uSky, dir, 0.0)).
-    // Checked by: raylab check --stage 06 (views front, sky-up).
+    // Checked by: raylab check --stage 06 (function skyColor; views front, sky-up).
     labTodo();
     return uBackground;
 }

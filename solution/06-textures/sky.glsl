@@ -12,14 +12,14 @@ vec3 skyColor(vec3 dir)
     //@ // The colour the sky shows in direction `dir`: the cube map
     //@ // uSky when the scene has one (uHasSky != 0), else uBackground. Read
     //@ // textures at level 0 in the tracer (guide, section 4).
-    //@ // Checked by: raylab check --stage 06 (views front, sky-up).
+    //@ // Checked by: raylab check --stage 06 (function skyColor; views front, sky-up).
     //@ labTodo();
     //@ return uBackground;
     //@guided
     if (uHasSky == 0) return uBackground;
     // TODO(06.c): look the direction up in the cube map uSky (level 0, as
     // for every texture in the tracer: textureLod(uSky, dir, 0.0)).
-    // Checked by: raylab check --stage 06 (views front, sky-up).
+    // Checked by: raylab check --stage 06 (function skyColor; views front, sky-up).
     //@solution
     return textureLod(uSky, dir, 0.0).rgb;
     //@stub

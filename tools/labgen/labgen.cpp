@@ -23,7 +23,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -55,8 +54,6 @@ std::string readIfExists(const fs::path& file) {
     std::error_code ec;
     return fs::is_regular_file(file, ec) ? readTextFile(file) : std::string("\x01missing");
 }
-
-bool isPicture(const fs::path& p) { return !isShaderFile(p) && p.filename() != "README.md"; }
 
 // The lines of code students write, per stage and level (lab_markers.h).
 void printCounts() {
@@ -122,21 +119,9 @@ int main(int argc, char** argv) {
                 for (const auto& e : fs::directory_iterator(dir))
                     if (isShaderFile(e.path()) && !files.count(e.path().filename().string()))
                         stale.insert(e.path().filename().string());
-            if (copyPictures && fs::is_directory(projectLabs / stage.id, ec)) {
-                // The open level's own pictures (NAME-open.png) after the others, in their place.
-                std::vector<fs::path> pictures;
-                for (const auto& e : fs::directory_iterator(projectLabs / stage.id))
-                    if (e.is_regular_file() && isPicture(e.path())) pictures.push_back(e.path());
-                std::sort(pictures.begin(), pictures.end(),
-                          [](const fs::path& a, const fs::path& b) {
-                              return labPictureName(a.filename().string(), Level::Guided).empty() <
-                                     labPictureName(b.filename().string(), Level::Guided).empty();
-                          });
-                for (const fs::path& p : pictures) {
-                    const std::string name = labPictureName(p.filename().string(), level);
-                    if (!name.empty()) files[name] = readTextFile(p);
-                }
-            }
+            if (copyPictures)
+                for (const auto& [name, from] : labPictures(projectLabs / stage.id, level))
+                    files[name] = readTextFile(from);
             for (const auto& [name, text] : files) {
                 if (check) {
                     if (readIfExists(dir / name) != text) {

@@ -16,11 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool isShaderFile(const fs::path& p) {
-    const std::string e = p.extension().string();
-    return e == ".glsl" || e == ".frag" || e == ".vert" || e == ".geom";
-}
-
 std::string readme(const std::vector<HandoutStage>& plan) {
     std::string text = "# Your labs\n\nThe stages released so far, one folder each, with its guide "
                        "(README.md):\n\n";
@@ -67,22 +62,8 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
                                                             : std::map<std::string, std::string>{};
         fs::create_directories(stageTo);
         // The guide and its pictures; the shader files the plan names.
-        // (The open level's own pictures, NAME-open.png, after the others, in their place.)
-        std::vector<fs::path> pictures;
-        for (const fs::directory_entry& e : fs::directory_iterator(from)) {
-            const std::string name = e.path().filename().string();
-            if (!e.is_regular_file() || isShaderFile(e.path()) || name == "README.md") continue;
-            pictures.push_back(e.path());
-        }
-        std::sort(pictures.begin(), pictures.end(), [](const fs::path& a, const fs::path& b) {
-            return labPictureName(a.filename().string(), Level::Guided).empty() <
-                   labPictureName(b.filename().string(), Level::Guided).empty();
-        });
-        for (const fs::path& p : pictures) {
-            const std::string name = labPictureName(p.filename().string(), level);
-            if (!name.empty())
-                fs::copy_file(p, stageTo / name, fs::copy_options::overwrite_existing);
-        }
+        for (const auto& [name, picture] : labPictures(from, level))
+            fs::copy_file(picture, stageTo / name);
         for (const std::string& name : h.files()) {
             const bool own =
                 std::find(h.ownFiles.begin(), h.ownFiles.end(), name) != h.ownFiles.end();

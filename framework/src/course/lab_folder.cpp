@@ -57,12 +57,25 @@ std::string guideAtLevel(const std::string& source, Level level, const std::stri
     return out;
 }
 
-std::string labPictureName(const std::string& name, Level level) {
-    const std::string suffix = "-open.png";
-    const bool openOnly = name.size() > suffix.size() &&
-                          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-    if (!openOnly) return name;
-    return level == Level::Open ? name.substr(0, name.size() - suffix.size()) + ".png" : "";
+std::map<std::string, std::filesystem::path> labPictures(const std::filesystem::path& dir,
+                                                         Level level) {
+    namespace fs = std::filesystem;
+    const std::string openSuffix = "-open.png";
+    std::map<std::string, fs::path> pictures, openOnes;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string(), ext = e.path().extension().string();
+        const bool shader = ext == ".glsl" || ext == ".frag" || ext == ".vert" || ext == ".geom";
+        if (!e.is_regular_file() || shader || name == "README.md") continue;
+        const bool openOnly =
+            name.size() > openSuffix.size() &&
+            name.compare(name.size() - openSuffix.size(), openSuffix.size(), openSuffix) == 0;
+        if (!openOnly) pictures[name] = e.path();
+        else openOnes[name.substr(0, name.size() - openSuffix.size()) + ".png"] = e.path();
+    }
+    if (level == Level::Open)
+        for (const auto& [name, path] : openOnes) pictures[name] = path;
+    return pictures;
 }
 
 std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading) {
@@ -82,19 +95,26 @@ std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level 
 namespace {
 
 constexpr const char* kLevelVariable = "RAYLAB_LEVEL";
+// The open labs' folder, written once by the process that sets the level and
+// read by its child processes (a grading run's one per submission and stage).
+constexpr const char* kOpenLabsVariable = "RAYLAB_OPEN_LABS";
 
-// The open labs' temporary folder, removed when the process ends.
+// The open labs' temporary folder, removed when the process that wrote it ends.
 struct OpenLabs {
     std::filesystem::path root;
+    bool written = false;  // by this process (a child only reads its parent's)
     ~OpenLabs() {
         std::error_code ec;
-        if (!root.empty()) std::filesystem::remove_all(root, ec);
+        if (written) std::filesystem::remove_all(root, ec);
     }
 };
 
 }  // namespace
 
-void setHandedOutLevel(Level level) { setenv(kLevelVariable, levelName(level), 1); }
+void setHandedOutLevel(Level level) {
+    setenv(kLevelVariable, levelName(level), 1);
+    if (level == Level::Open) handedOutLabRoot();  // written once, here, for the children too
+}
 
 Level handedOutLevel() {
     const char* value = std::getenv(kLevelVariable);
@@ -108,6 +128,10 @@ std::filesystem::path handedOutLabRoot() {
     namespace fs = std::filesystem;
     if (handedOutLevel() == Level::Guided) return projectRoot() / "labs";
     static OpenLabs labs;
+    std::error_code ec;
+    const char* inherited = std::getenv(kOpenLabsVariable);
+    if (labs.root.empty() && inherited && *inherited && fs::is_directory(inherited, ec))
+        labs.root = inherited;
     if (labs.root.empty()) {
         const fs::path root =
             fs::temp_directory_path() / ("raylab-open-labs-" + std::to_string(getpid()));
@@ -120,6 +144,8 @@ std::filesystem::path handedOutLabRoot() {
                 if (!out) throw Error("cannot write " + (root / stage.id / name).string());
             }
         labs.root = root;
+        labs.written = true;
+        setenv(kOpenLabsVariable, root.c_str(), 1);
     }
     return labs.root;
 }

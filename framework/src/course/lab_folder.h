@@ -22,11 +22,13 @@ namespace raylab {
 // or a heading inside one.
 std::string guideAtLevel(const std::string& source, Level level, const std::string& file);
 
-// The name a hand-made file of labs/<id>/ (a picture) has in a lab folder at
-// LEVEL, or "" when that level leaves it out: "NAME-open.png" is the open
-// level's NAME.png (the untouched open lab looks other than the guided one),
-// left out at the guided level; other files are the same at both.
-std::string labPictureName(const std::string& fileName, Level level);
+// The hand-made files of the lab folder DIR (labs/<id>/: pictures, not the
+// shader files or README.md) as a lab folder at LEVEL holds them: its name
+// there -> the file. "NAME-open.png" is the open level's NAME.png (the
+// untouched open lab looks other than the guided one), in place of the
+// guided one there and left out at the guided level.
+std::map<std::string, std::filesystem::path> labPictures(const std::filesystem::path& dir,
+                                                         Level level);
 
 // STAGE's guide at LEVEL, its "How you are graded" from GRADING.
 std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading);
@@ -44,7 +46,8 @@ namespace raylab {
 // as "the lab as handed out" (a picture equal to it earns nothing), fills a
 // submission's missing files from, and lays loose uploaded files over.
 // labs/ at the guided level; at the open level the open labs' shader files,
-// written once per process to a temporary folder (removed at exit).
+// written once to a temporary folder by the process that sets the level
+// (removed when it exits) and read by its child processes.
 //
 // The level is the environment's RAYLAB_LEVEL ("guided" when unset), so that
 // the child processes a grading command starts grade at its level too:

@@ -5,6 +5,7 @@
 #include "function_compare.h"
 #include "fur_function_cases.h"
 #include "intersect_function_cases.h"
+#include "mesh_function_cases.h"
 #include "shading_function_cases.h"
 
 #include "reference_intersect.h"
@@ -312,6 +313,7 @@ const std::vector<FunctionSpec>& functionSpecs() {
                                          planeUvSpec(),
                                          skyColorSpec()};
         for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));
+        for (FunctionSpec& f : meshFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));
         return all;
     }();

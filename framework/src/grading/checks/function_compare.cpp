@@ -12,6 +12,13 @@ bool allFinite(const glm::dvec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+FunctionCase caseOf(std::string label, glm::dvec4 a0, glm::dvec4 a1, glm::dvec4 a2, glm::dvec4 a3) {
+    FunctionCase c;
+    c.label = std::move(label);
+    c.in = {a0, a1, a2, a3};
+    return c;
+}
+
 std::string compareVector(const FunctionCase& c, const glm::dvec4& got, const glm::dvec4& want,
                           int components, double tolerance) {
     if (!allFinite(got)) return c.label + ": got NaN or Inf";

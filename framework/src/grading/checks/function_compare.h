@@ -8,6 +8,10 @@
 namespace raylab {
 
 std::string caseNumber(double v);  // 6 significant digits, for messages
+
+// A case of a table: its label and its inputs a0..a3.
+FunctionCase caseOf(std::string label, glm::dvec4 a0, glm::dvec4 a1 = glm::dvec4(0.0),
+                    glm::dvec4 a2 = glm::dvec4(0.0), glm::dvec4 a3 = glm::dvec4(0.0));
 bool allFinite(const glm::dvec4& v);
 // Empty when the first COMPONENTS of GOT are within TOLERANCE of WANT, else
 // "LABEL: expected (w0, w1), got (g0, g1)" (or "got NaN or Inf").

@@ -1,5 +1,6 @@
-// The fur track's function checks: each GLSL function on a table of inputs
-// against fur_reference.h / silhouette.h in double precision.
+// The fur track's function checks from lab f2 on (shells, fins, strands):
+// each GLSL function on a table of inputs against fur_reference.h /
+// silhouette.h in double precision. Lab f1's are mesh_function_cases.cpp.
 #include "fur_function_cases.h"
 
 #include "adjacency.h"
@@ -7,8 +8,6 @@
 #include "fur_reference.h"
 #include "mesh_shapes.h"
 #include "silhouette.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
@@ -18,14 +17,6 @@ namespace {
 
 using glm::dvec3;
 using glm::dvec4;
-
-FunctionCase row(std::string label, dvec4 a0, dvec4 a1 = dvec4(0.0), dvec4 a2 = dvec4(0.0),
-                 dvec4 a3 = dvec4(0.0)) {
-    FunctionCase c;
-    c.label = std::move(label);
-    c.in = {a0, a1, a2, a3};
-    return c;
-}
 
 // A float result within a relative 1e-5 (float gives about 1e-7).
 std::string compareScalar(const FunctionCase& c, const dvec4& got, const dvec4& want) {
@@ -51,7 +42,7 @@ FunctionSpec twoNumberSpec(const char* name, const char* file, const std::string
     s.name = name;
     s.includes = {file};
     s.call = "vec4(" + std::string(name) + "(" + args + "), 0.0, 0.0, 1.0)";
-    for (const TwoNumbers& r : rows) s.cases.push_back(row(r.label, dvec4(r.x, r.y, 0, 0)));
+    for (const TwoNumbers& r : rows) s.cases.push_back(caseOf(r.label, dvec4(r.x, r.y, 0, 0)));
     RAYLAB_REFERENCE(s, [reference](const FunctionCase& c) {
         return dvec4(reference(c.in[0].x, c.in[0].y), 0, 0, 1);
     });
@@ -113,7 +104,7 @@ FunctionSpec shellOffsetSpec() {
                 {"short normal (0.01)", {0.01, 0, 0}, 1.0, 0.1},
                 {"diagonal normal", {-1, 1, -1}, 0.25, 1.0}};
     for (const auto& r : rows)
-        s.cases.push_back(row(r.label, dvec4(r.normal, 0), dvec4(r.layer, r.length, 0, 0)));
+        s.cases.push_back(caseOf(r.label, dvec4(r.normal, 0), dvec4(r.layer, r.length, 0, 0)));
     RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(fur_reference::shellOffset(dvec3(c.in[0]), c.in[1].x, c.in[1].y), 1);
     });
@@ -124,7 +115,7 @@ FunctionSpec shellOffsetSpec() {
 // A silhouette case: a0 = (A, eye.x), a1 = (B, eye.y), a2 = (C, eye.z), a3 = (D, 0).
 FunctionCase edgeCase(std::string label, dvec3 eye, dvec3 a, dvec3 b, dvec3 c, dvec3 d) {
     FunctionCase f =
-        row(std::move(label), dvec4(a, eye.x), dvec4(b, eye.y), dvec4(c, eye.z), dvec4(d, 0.0));
+        caseOf(std::move(label), dvec4(a, eye.x), dvec4(b, eye.y), dvec4(c, eye.z), dvec4(d, 0.0));
     // Edge-on to either triangle: float may call it either way.
     f.hitOrMiss = silhouetteUncertain(eye, a, b, c, d);
     return f;
@@ -184,231 +175,6 @@ FunctionSpec silhouetteSpec() {
     return s;
 }
 
-// normalMatrix(model) applied to a normal: a0..a2 the columns of the
-// model's 3x3 part (w: its translation), a3 the normal. The result need not
-// be unit length: its direction is checked.
-FunctionSpec normalMatrixSpec() {
-    FunctionSpec s;
-    s.name = "normalMatrix";
-    s.includes = {"normal_matrix.glsl"};
-    s.call = "vec4(normalize(normalMatrix(mat4(vec4(a0.xyz, 0.0), vec4(a1.xyz, 0.0), "
-             "vec4(a2.xyz, 0.0), vec4(a0.w, a1.w, a2.w, 1.0))) * a3.xyz), 1.0)";
-    const double c = std::cos(0.6), sn = std::sin(0.6);
-    const struct {
-        const char* label;
-        glm::dmat3 m;
-        dvec3 move, normal;
-    } rows[] = {
-        {"identity", glm::dmat3(1.0), {0, 0, 0}, {0.6, 0.8, 0}},
-        {"moved only: normals do not move", glm::dmat3(1.0), {5, -2, 3}, {0, 0, 1}},
-        {"uniform scale 2.5", glm::dmat3(2.5), {0, 0, 0}, {0.36, 0.48, 0.8}},
-        {"turned 34 degrees about y",
-         glm::dmat3(c, 0, -sn, 0, 1, 0, sn, 0, c),
-         {1, 0, 0},
-         {1, 0, 0}},
-        {"squashed: scale (1.5, 0.6, 1), the normal at 45 degrees",
-         glm::dmat3(1.5, 0, 0, 0, 0.6, 0, 0, 0, 1),
-         {0, 0, 0},
-         {0.7071, 0.7071, 0}},
-        {"squashed and turned",
-         glm::dmat3(c, 0, -sn, 0, 1, 0, sn, 0, c) * glm::dmat3(1.5, 0, 0, 0, 0.6, 0, 0, 0, 1),
-         {0.5, 1, -2},
-         {0.48, 0.6, 0.64}},
-        {"sheared", glm::dmat3(1, 0, 0, 0.8, 1, 0, 0, 0, 1), {0, 0, 0}, {0, 1, 0}},
-        {"scale (3, 0.2, 0.5), a normal along no axis",
-         glm::dmat3(3, 0, 0, 0, 0.2, 0, 0, 0, 0.5),
-         {0, 0, 0},
-         {0.2, 0.9, -0.3}},
-    };
-    for (const auto& r : rows)
-        s.cases.push_back(row(r.label, dvec4(r.m[0], r.move.x), dvec4(r.m[1], r.move.y),
-                              dvec4(r.m[2], r.move.z), dvec4(r.normal, 0.0)));
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        const glm::dmat3 m(dvec3(c.in[0]), dvec3(c.in[1]), dvec3(c.in[2]));
-        return dvec4(glm::normalize(glm::transpose(glm::inverse(m)) * dvec3(c.in[3])), 1.0);
-    });
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        return compareVector(c, got, want, 3, 1e-4);
-    };
-    return s;
-}
-
-// surfaceLight(albedo, normal, toLight): a0 the albedo, a1 the normal (not
-// always unit length: interpolated), a2 the unit direction toward the light,
-// a3.xyz the light's colour and a3.w the ambient light (grey). The fur
-// uniforms are plain variables in a function check (fur_uniforms.glsl).
-FunctionSpec surfaceLightSpec() {
-    FunctionSpec s;
-    s.name = "surfaceLight";
-    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
-    s.includes = {"surface_light.glsl"};
-    s.helpers = "vec4 checkSurfaceLight(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    uLightColor = a3.xyz;\n"
-                "    uAmbient = vec3(a3.w);\n"
-                "    return vec4(surfaceLight(a0.xyz, a1.xyz, a2.xyz), 1.0);\n"
-                "}\n";
-    s.call = "checkSurfaceLight(a0, a1, a2, a3)";
-    const dvec3 albedo(0.8, 0.5, 0.3), up(0, 1, 0), white(1.0);
-    const struct {
-        const char* label;
-        dvec3 albedo, normal, toLight, color;
-        double ambient;
-    } rows[] = {
-        {"light straight above", albedo, up, up, white, 0.2},
-        {"light at 60 degrees", albedo, up, glm::normalize(dvec3(std::sqrt(3.0), 1, 0)), white,
-         0.2},
-        {"light behind the surface: ambient only", albedo, up, {0, -1, 0}, white, 0.2},
-        {"grazing light (N . L = 0)", albedo, up, {1, 0, 0}, white, 0.15},
-        {"an interpolated normal, 0.7 long", albedo, {0, 0.7, 0}, up, white, 0.1},
-        {"an interpolated normal, 1.6 long and tilted",
-         {0.4, 0.6, 0.9},
-         {0.96, 1.28, 0},
-         up,
-         {1.0, 0.9, 0.8},
-         0.18},
-        {"coloured light, no ambient",
-         {1, 1, 1},
-         {0, 0, 1},
-         glm::normalize(dvec3(0, 1, 1)),
-         {0.9, 0.2, 0.1},
-         0.0},
-        {"black albedo", {0, 0, 0}, up, up, white, 0.3},
-    };
-    for (const auto& r : rows)
-        s.cases.push_back(row(r.label, dvec4(r.albedo, 0), dvec4(r.normal, 0), dvec4(r.toLight, 0),
-                              dvec4(r.color, r.ambient)));
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        const dvec3 n = glm::normalize(dvec3(c.in[1]));
-        const double lambert = std::max(glm::dot(n, dvec3(c.in[2])), 0.0);
-        return dvec4(dvec3(c.in[0]) * (dvec3(c.in[3].w) + dvec3(c.in[3]) * lambert), 1.0);
-    });
-    s.compare = compareVec3;
-    return s;
-}
-
-// The GLSL that makes the fur uniforms of a transform check from the case:
-// uModel = move a2.xyz, turn a1.x radians about y, scale a1.yzw; uView looks
-// from a3.xyz turned a3.w radians about y; uProjection is a perspective of
-// 45 degrees, aspect 4:3, near 0.1, far 100 (the column-major layout of
-// glm::perspective).
-const char* const kTransformHelpers =
-    "void checkTransforms(vec4 a1, vec4 a2, vec4 a3)\n"
-    "{\n"
-    "    float c = cos(a1.x), s = sin(a1.x);\n"
-    "    mat4 turn = mat4(c, 0.0, -s, 0.0,  0.0, 1.0, 0.0, 0.0,  s, 0.0, c, 0.0,  0.0, 0.0, 0.0, "
-    "1.0);\n"
-    "    mat4 scale = mat4(a1.y, 0.0, 0.0, 0.0,  0.0, a1.z, 0.0, 0.0,  0.0, 0.0, a1.w, 0.0,  0.0, "
-    "0.0, 0.0, 1.0);\n"
-    "    mat4 move = mat4(1.0);\n"
-    "    move[3] = vec4(a2.xyz, 1.0);\n"
-    "    uModel = move * turn * scale;\n"
-    "    float cv = cos(a3.w), sv = sin(a3.w);\n"
-    "    mat4 view = mat4(cv, 0.0, sv, 0.0,  0.0, 1.0, 0.0, 0.0,  -sv, 0.0, cv, 0.0,  0.0, 0.0, "
-    "0.0, 1.0);\n"
-    "    mat4 back = mat4(1.0);\n"
-    "    back[3] = vec4(-a3.xyz, 1.0);\n"
-    "    uView = view * back;\n"
-    "    float f = 1.0 / tan(radians(22.5));\n"
-    "    uProjection = mat4(f / (4.0 / 3.0), 0.0, 0.0, 0.0,  0.0, f, 0.0, 0.0,  0.0, 0.0, "
-    "-100.1 / 99.9, -1.0,  0.0, 0.0, -2.0 * 100.0 * 0.1 / 99.9, 0.0);\n"
-    "}\n";
-
-// The same matrices in double precision.
-struct TransformCase {
-    glm::dmat4 model, view, projection;
-};
-TransformCase transformsOf(const FunctionCase& c) {
-    const dvec4 a1 = c.in[1], a2 = c.in[2], a3 = c.in[3];
-    TransformCase t;
-    t.model = glm::translate(glm::dmat4(1.0), dvec3(a2)) *
-              glm::rotate(glm::dmat4(1.0), a1.x, dvec3(0, 1, 0)) *
-              glm::scale(glm::dmat4(1.0), dvec3(a1.y, a1.z, a1.w));
-    t.view = glm::rotate(glm::dmat4(1.0), -a3.w, dvec3(0, 1, 0)) *
-             glm::translate(glm::dmat4(1.0), -dvec3(a3));
-    t.projection = glm::perspective(glm::radians(45.0), 4.0 / 3.0, 0.1, 100.0);
-    return t;
-}
-
-std::vector<FunctionCase> transformCases() {
-    const struct {
-        const char* label;
-        dvec3 point;
-        dvec4 turnScale;
-        dvec3 move, eye;
-        double yaw;
-    } rows[] = {
-        {"identity model, eye at (0, 0, 3)", {0.5, 0.25, 0}, {0, 1, 1, 1}, {0, 0, 0}, {0, 0, 3}, 0},
-        {"moved by (1, -2, 0.5)", {0.2, 0.3, -0.1}, {0, 1, 1, 1}, {1, -2, 0.5}, {0, 0, 4}, 0},
-        {"turned 30 degrees", {1, 0, 0}, {0.5236, 1, 1, 1}, {0, 0, 0}, {0.5, 0.2, 3}, 0.2},
-        {"squashed (1.5, 0.6, 1) and moved",
-         {0.3, 0.8, -0.4},
-         {0.3, 1.5, 0.6, 1},
-         {0, 1, 0},
-         {-1, 1.5, 4},
-         -0.3},
-        {"scaled 2.5, eye turned 40 degrees",
-         {-0.2, 0.1, 0.6},
-         {-0.7, 2.5, 2.5, 2.5},
-         {0.5, 0, -1},
-         {2, 0.5, 3},
-         0.7},
-        {"a point behind the eye", {0, 0, 5}, {0, 1, 1, 1}, {0, 0, 0}, {0, 0, 3}, 0},
-    };
-    std::vector<FunctionCase> cases;
-    for (const auto& r : rows)
-        cases.push_back(
-            row(r.label, dvec4(r.point, 1.0), r.turnScale, dvec4(r.move, 0), dvec4(r.eye, r.yaw)));
-    return cases;
-}
-
-// toWorld(objectPoint): uModel * (p, 1).
-FunctionSpec toWorldSpec() {
-    FunctionSpec s;
-    s.name = "toWorld";
-    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
-    s.includes = {"fur_uniforms.glsl", "transform.glsl"};
-    s.helpers = std::string(kTransformHelpers) +
-                "vec4 checkToWorld(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    checkTransforms(a1, a2, a3);\n"
-                "    return toWorld(a0.xyz);\n"
-                "}\n";
-    s.call = "checkToWorld(a0, a1, a2, a3)";
-    s.cases = transformCases();
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        return transformsOf(c).model * dvec4(dvec3(c.in[0]), 1.0);
-    });
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        return compareVector(c, got, want, 4, 1e-5 * std::max(1.0, glm::length(want)));
-    };
-    return s;
-}
-
-// toClip(world): uProjection * uView * world, not divided by w.
-FunctionSpec toClipSpec() {
-    FunctionSpec s;
-    s.name = "toClip";
-    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
-    s.includes = {"fur_uniforms.glsl", "transform.glsl"};
-    s.helpers = std::string(kTransformHelpers) +
-                "vec4 checkToClip(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    checkTransforms(a1, a2, a3);\n"
-                "    return toClip(vec4(a0.xyz, 1.0));\n"
-                "}\n";
-    s.call = "checkToClip(a0, a1, a2, a3)";
-    s.cases = transformCases();
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        const TransformCase t = transformsOf(c);
-        return t.projection * t.view * dvec4(dvec3(c.in[0]), 1.0);
-    });
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        return compareVector(c, got, want, 4, 1e-4 * std::max(1.0, glm::length(want)));
-    };
-    return s;
-}
-
 FunctionSpec strandPointSpec() {
     FunctionSpec s;
     s.name = "strandPoint";
@@ -427,8 +193,8 @@ FunctionSpec strandPointSpec() {
         {"normal not unit length", {0, 0, 1}, {0, 0, 5}, 0.75, 0.1, {0, -0.3, 0}},
         {"hanging down from the bottom", {0, -1, 0}, {0, -1, 0}, 1.0, 0.3, {0, -0.3, 0}}};
     for (const auto& r : rows)
-        s.cases.push_back(row(r.label, dvec4(r.root, 0), dvec4(r.normal, 0),
-                              dvec4(r.at, r.length, 0, 0), dvec4(r.gravity, 0)));
+        s.cases.push_back(caseOf(r.label, dvec4(r.root, 0), dvec4(r.normal, 0),
+                                 dvec4(r.at, r.length, 0, 0), dvec4(r.gravity, 0)));
     RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(fur_reference::strandPoint(dvec3(c.in[0]), dvec3(c.in[1]), c.in[2].x,
                                                 c.in[2].y, dvec3(c.in[3])),
@@ -483,8 +249,8 @@ FunctionSpec kajiyaKaySpec() {
         {"low shininess", {0.36, 0.48, 0.8}, {0, 1, 0}, {0.6, 0, 0.8}, 4},
     };
     for (const auto& w : rows)
-        s.cases.push_back(
-            row(w.label, dvec4(w.t, 0), dvec4(w.l, 0), dvec4(w.e, 0), dvec4(w.shininess, 0, 0, 0)));
+        s.cases.push_back(caseOf(w.label, dvec4(w.t, 0), dvec4(w.l, 0), dvec4(w.e, 0),
+                                 dvec4(w.shininess, 0, 0, 0)));
     RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         return dvec4(
             fur_reference::kajiyaKay(dvec3(c.in[0]), dvec3(c.in[1]), dvec3(c.in[2]), c.in[3].x), 0,
@@ -500,8 +266,7 @@ FunctionSpec kajiyaKaySpec() {
 }  // namespace
 
 std::vector<FunctionSpec> furFunctionSpecs() {
-    return {toWorldSpec(),    toClipSpec(),      normalMatrixSpec(), surfaceLightSpec(),
-            shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(),   shellShadowSpec(),
+    return {shellLayerSpec(), shellOffsetSpec(), shellAlphaSpec(), shellShadowSpec(),
             silhouetteSpec(), strandPointSpec(), kajiyaKaySpec()};
 }
 

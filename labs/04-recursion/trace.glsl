@@ -61,7 +61,7 @@ vec3 trace(Ray primary)
                     // - it starts just INSIDE the surface it crosses, at
                     // offsetRayOrigin(point, -normal) - with weight
                     // current.weight * (1 - F). The reflected ray carries F.
-                    // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
+                    // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass; trace).
                     labTodo();
                     reflectance = vec3(1.0);  // placeholder: glass as a perfect mirror
                 }
@@ -74,7 +74,7 @@ vec3 trace(Ray primary)
         if (!pathGoesOn) {
             // TODO(04.a): this path has ended. Continue with the ray on top
             // of the stack, or stop when the stack is empty.
-            // Checked by: raylab check --stage 04 (views front, inside-glass).
+            // Checked by: raylab check --stage 04 (views front, inside-glass; trace).
             labTodo();
             break;
         }

@@ -19,7 +19,7 @@ vec3 sunGlow(Ray ray)
     // TODO(06.d): the glow above. No glow when the sun is behind the eye
     // (tc < 0) or when findClosest finds something other than the sun
     // closer than tc.
-    // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun).
+    // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun; sunGlow).
     labTodo();
     return vec3(0.0);
 }

@@ -35,7 +35,7 @@ uniform int uMaxDepth;  // rays per path, 1..MAX_DEPTH (arrow keys; MAX_DEPTH = 
 //@ //    (MAT_PLASTIC, MAT_MIRROR, MAT_GLASS or MAT_METAL), .specular (a
 //@ //    mirror's reflectance), .ior (glass), .n and .k (metal). Shade with the
 //@ //    normal facing the incoming ray.
-//@ // Checked by: raylab check --stage 04 (views front, depth-1, depth-2, glass-closeup, inside-glass, gold).
+//@ // Checked by: raylab check --stage 04 (function trace; views front, depth-1, depth-2, glass-closeup, inside-glass, gold).
 //@ vec3 trace(Ray primary)
 //@ {
 //@     labTodo();
@@ -93,7 +93,7 @@ vec3 trace(Ray primary)
                     // - it starts just INSIDE the surface it crosses, at
                     // offsetRayOrigin(point, -normal) - with weight
                     // current.weight * (1 - F). The reflected ray carries F.
-                    // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass).
+                    // Checked by: raylab check --stage 04 (views front, glass-closeup, inside-glass; trace).
                     //@solution
                     vec4 glass = refractGlass(current.ray.dir, normal, entering, m.ior);
                     float F = glass.w;
@@ -117,7 +117,7 @@ vec3 trace(Ray primary)
         if (!pathGoesOn) {
             // TODO(04.a): this path has ended. Continue with the ray on top
             // of the stack, or stop when the stack is empty.
-            // Checked by: raylab check --stage 04 (views front, inside-glass).
+            // Checked by: raylab check --stage 04 (views front, inside-glass; trace).
             //@solution
             if (stackSize == 0) break;
             --stackSize;

@@ -23,7 +23,7 @@ bool findClosest(Ray ray, out Hit hit)
     //@ // uTriangleVertices[3 i .. 3 i + 2]) and tori (intersectTorus(ray, i)),
     //@ // i below each kind's count (uPlaneCount, ...). keepNearer keeps the
     //@ // nearest with its object id.
-    //@ // Checked by: raylab check --stage 05 (views front, floor-level, mirror-back, torus-closeup).
+    //@ // Checked by: raylab check --stage 05 (function findClosestEveryKind; views front, floor-level, mirror-back, torus-closeup).
     //@ labTodo();
     //@ hit = Hit(T_FAR, -1);
     //@ return hit.id >= 0;

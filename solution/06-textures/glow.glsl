@@ -17,7 +17,7 @@ vec3 sunGlow(Ray ray)
     //@ // something other than the sun lies on the ray before its closest point.
     //@ // An index below 0 does not compile where uGlowSphere is a constant -1:
     //@ // index with max(uGlowSphere, 0).
-    //@ // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun).
+    //@ // Checked by: raylab check --stage 06 (function sunGlow; views sun-glow, sun-behind-moon, away-from-sun).
     //@ labTodo();
     //@ return vec3(0.0);
     //@guided
@@ -30,7 +30,7 @@ vec3 sunGlow(Ray ray)
     // TODO(06.d): the glow above. No glow when the sun is behind the eye
     // (tc < 0) or when findClosest finds something other than the sun
     // closer than tc.
-    // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun).
+    // Checked by: raylab check --stage 06 (views sun-glow, sun-behind-moon, away-from-sun; sunGlow).
     //@solution
     float tc = dot(c - ray.origin, ray.dir);
     if (tc < 0.0) return vec3(0.0);

@@ -35,9 +35,12 @@ void insertStage(const fs::path& root) {
     swap("\"id\": \"04-recursion\"", "\"id\": \"04b-sky\"");
     swap("\"builds_on\": \"03-shadows\"", "\"builds_on\": \"04-recursion\"");
     swap("\"title\": \"", "\"title\": \"an inserted stage: the sky, written by the student; ");
-    // Its TODO is the sky; the Fresnel functions stay 04's to check.
-    swap("\"function_checks\": [\"fresnelDielectric\", \"fresnelConductor\", \"refractGlass\"]",
+    // Its TODO is the sky; the Fresnel functions and trace stay 04's to check.
+    swap("\"function_checks\": [\"fresnelDielectric\", \"fresnelConductor\", \"refractGlass\", "
+         "\"trace\"]",
          "\"function_checks\": []");
+    swap("\"weights\": {\"glass-closeup\": 2, \"trace\": 2}",
+         "\"weights\": {\"glass-closeup\": 2}");
     writeFile(dir / "stage.json", json);
     writeFile(dir / "sky.glsl", "// The colour of a ray that hits nothing.\n"
                                 "vec3 skyColor(vec3 dir)\n{\n"

@@ -1,6 +1,7 @@
 // The double-precision references behind the function checks agree with
 // values worked out by hand, and the tables hold the hard cases they promise.
 #include "function_harness.h"
+#include "reference_shading.h"
 
 #include <gtest/gtest.h>
 
@@ -107,6 +108,30 @@ TEST(FunctionCases, ShadingReferencesByHand) {
                {0.9, 0.1, 0.9});
     expectNear(referenceStartingWith("applyColorMode", "mode 4 (GGR), colour (0.1, 0.5, 0.9)"),
                {0.5, 0.5, 0.1});
+}
+
+// trace() in its stand-in world (trace_function_cases.cpp): the hit's
+// stand-in shading is ambient (a tenth of the diffuse colour) plus the
+// diffuse colour times 0.25 + 0.75 N.V, plus a tenth of the specular colour
+// times 0.5 + 0.5 N.y; the sky is (0.35, 0.5, 0.75) + 0.25 dir.
+TEST(FunctionCases, TraceAndGlowReferencesByHand) {
+    const glm::dvec3 gold(0.05, 0.04, 0.02);
+    // Straight at the gold ball, depth 1: N.V = 1, N.y = 0, no specular colour.
+    const std::string straight =
+        "a gold ball beside a red one, ray from (0, 0, 0) along (0, 0, -1)";
+    expectNear(referenceStartingWith("trace", straight + ", uMaxDepth 1"), 1.1 * gold);
+    // Depth 8: the reflected ray goes straight back to the sky, (0.35, 0.5, 1),
+    // weighted by the conductor's reflectance at normal incidence.
+    const glm::dvec3 f0 =
+        reference::fresnelConductor(1.0, {0.143, 0.374, 1.442}, {3.983, 2.385, 1.603});
+    expectNear(referenceStartingWith("trace", straight + ", uMaxDepth 8"),
+               1.1 * gold + f0 * glm::dvec3(0.35, 0.5, 1.0));
+    // The glow: full colour straight at the sun, nothing with the sun
+    // behind the eye or hidden by a plane in front of it.
+    expectNear(referenceFor("sunGlow", "straight at the sun: full glow"), {1.0, 0.8, 0.5});
+    expectNear(referenceFor("sunGlow", "the sun behind the eye"), {0, 0, 0});
+    expectNear(referenceFor("sunGlow", "a plane in front of the sun's closest point"), {0, 0, 0});
+    EXPECT_GT(referenceFor("sunGlow", "a plane behind the sun's closest point").x, 0.1);
 }
 
 // The switches the checked code reads (keys N and 1, the colour mode) are

@@ -5,10 +5,11 @@
 //   raylab-classgen OUTDIR    -> OUTDIR/submissions/<student>/, OUTDIR/expected.json
 //   raylab-classgen --help
 //
-// The class: 4 pristine solutions, 3 untouched labs, one that submitted
+// The class: 2 pristine solutions, 3 untouched labs, one that submitted
 // stages 01-03 only, one that did 01-04, the broken submissions of
-// tests/grading/broken/ (each on top of a solution), and 16 students
-// sharing every mistake of tests/mistakes/ (at most one per stage each).
+// tests/grading/broken/ (each on top of a solution), and the rest of the
+// 30 (14 today) sharing every mistake of tests/mistakes/ (at most one per
+// stage each: a stage can have as many mistakes as there are such students).
 // expected.json: {student: {stage: "100" | "<100" | "not submitted" | "status:A|B"}}.
 #include "child_process.h"
 #include "error.h"
@@ -109,7 +110,7 @@ int main(int argc, char** argv) {
             expectAll(name, "100");
         };
 
-        for (int i = 1; i <= 4; ++i) solvedStudent("pristine-" + std::to_string(i));
+        for (int i = 1; i <= 2; ++i) solvedStudent("pristine-" + std::to_string(i));
         for (int i = 1; i <= 3; ++i) {
             std::string name = "untouched-" + std::to_string(i);
             copyTree(projectRoot() / "labs", subs / name);
@@ -138,7 +139,8 @@ int main(int argc, char** argv) {
                 status == "graded" ? "<100" : "status:" + status;
         }
 
-        // Mistakes: 16 students, each mistake once, never two in one stage of a student.
+        // Mistakes: the remaining students, each mistake once, never two in one
+        // stage of a student.
         const int mistakeStudents = 30 - int(expected.size());
         std::vector<std::vector<Change>> assigned(std::size_t(std::max(mistakeStudents, 1)));
         std::vector<std::pair<fs::path, json>> mistakes;

@@ -6,7 +6,10 @@
 #include "fur_function_cases.h"
 #include "intersect_function_cases.h"
 #include "mesh_function_cases.h"
+#include "search_function_cases.h"
 #include "shading_function_cases.h"
+#include "sky_function_cases.h"
+#include "trace_function_cases.h"
 
 #include "reference_intersect.h"
 #include "reference_shading.h"
@@ -244,58 +247,6 @@ FunctionSpec planeUvSpec() {
     return s;
 }
 
-// skyColor(dir): a0.xyz the direction (any length), a1.x 1 with a sky box,
-// a2.xyz the background colour. The cube map stands in as a function of the
-// direction (0.5 + 0.5 * the unit direction), read at level 0 with
-// textureLod as the tracer reads every texture; any other lookup reads an
-// empty cube map and fails with the colour it got.
-FunctionSpec skyColorSpec() {
-    FunctionSpec s;
-    s.name = "skyColor";
-    s.prelude = "// Stand-ins for the scene's sky, set by the case; the cube map is a function.\n"
-                "int uHasSky;\n"
-                "vec3 uBackground;\n"
-                "uniform samplerCube uSky;\n"
-                "vec4 checkSkyTexel(vec3 dir) { return vec4(0.5 + 0.5 * normalize(dir), 1.0); }\n"
-                "#define textureLod(sampler, dir, level) checkSkyTexel(dir)\n";
-    s.includes = {"sky.glsl"};
-    s.helpers = "vec4 checkSkyColor(vec4 a0, vec4 a1, vec4 a2)\n"
-                "{\n"
-                "    uHasSky = int(a1.x);\n"
-                "    uBackground = a2.xyz;\n"
-                "    return vec4(skyColor(a0.xyz), 1.0);\n"
-                "}\n";
-    s.call = "checkSkyColor(a0, a1, a2)";
-    const dvec3 background(0.55, 0.7, 0.9);
-    const struct {
-        const char* label;
-        dvec3 dir;
-        bool sky;
-    } rows[] = {
-        {"sky box, straight up", {0, 1, 0}, true},
-        {"sky box, toward -x", {-1, 0, 0}, true},
-        {"sky box, a direction 3.7 long", {1.0, 2.0, 3.0}, true},
-        {"sky box, down and back", {0.2, -0.9, -0.4}, true},
-        {"no sky box: the background", {0, 1, 0}, false},
-        {"no sky box, another direction", {0.6, -0.2, 0.77}, false},
-    };
-    for (const auto& r : rows) {
-        FunctionCase c;
-        c.label = r.label;
-        c.in = {dvec4(r.dir, 0), dvec4(r.sky ? 1.0 : 0.0, 0, 0, 0), dvec4(background, 0),
-                dvec4(0.0)};
-        s.cases.push_back(c);
-    }
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        return c.in[1].x > 0.5 ? dvec4(0.5 + 0.5 * glm::normalize(xyz(c.in[0])), 1.0)
-                               : dvec4(xyz(c.in[2]), 1.0);
-    });
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        return compareVector(c, got, want, 3, 1e-4);
-    };
-    return s;
-}
-
 }  // namespace
 
 const std::vector<FunctionSpec>& functionSpecs() {
@@ -304,14 +255,17 @@ const std::vector<FunctionSpec>& functionSpecs() {
                                          fresnelDielectricSpec(),
                                          fresnelConductorSpec(),
                                          refractGlassSpec(),
+                                         traceSpec(),
                                          planeSpec(),
                                          discSpec(),
                                          triangleSpec(),
                                          torusNormalSpec(),
                                          torusQuarticSpec(),
+                                         findClosestEveryKindSpec(),
                                          sphereUvSpec(),
                                          planeUvSpec(),
-                                         skyColorSpec()};
+                                         skyColorSpec(),
+                                         sunGlowSpec()};
         for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : meshFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));

@@ -153,7 +153,7 @@ const char* const kTransformHelpers =
 struct TransformCase {
     glm::dmat4 model, view, projection;
 };
-TransformCase transformsOf(const FunctionCase& c) {
+[[maybe_unused]] TransformCase transformsOf(const FunctionCase& c) {
     const dvec4 a1 = c.in[1], a2 = c.in[2], a3 = c.in[3];
     TransformCase t;
     t.model = glm::translate(glm::dmat4(1.0), dvec3(a2)) *

@@ -25,7 +25,7 @@ bool lightVisible(vec3 point, vec3 normal, int light)
     //@ // first object nearer than maxT (the light's distance), instead of
     //@ // findClosest; and send no shadow ray to a light behind the surface (it
     //@ // adds nothing to blinnPhong).
-    //@ // Checked by: raylab check --stage 08 (views lite-front, pro-front).
+    //@ // Checked by: raylab check --stage 08 (function lightVisibleFast; views lite-front, pro-front).
     //@ labTodo();
     //@ return true;
     //@guided

@@ -44,7 +44,7 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
     //@ //    enters only beyond the nearest hit found meanwhile.
     //@ //  - Sphere i: intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w); mesh
     //@ //    triangle i: intersectMeshTriangle(ray, i).
-    //@ // Checked by: raylab check --stage 08 (views pro-front, pro-cube, mesh-front).
+    //@ // Checked by: raylab check --stage 08 (function walkBvh; views pro-front, pro-cube, mesh-front).
     //@ labTodo();
     //@guided
     vec3 invDir = inverseDirection(ray.dir);

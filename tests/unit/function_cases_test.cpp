@@ -110,11 +110,12 @@ TEST(FunctionCases, ShadingReferencesByHand) {
                {0.5, 0.5, 0.1});
 }
 
-// trace() in its stand-in world (trace_function_cases.cpp): the hit's
+// The open level's whole functions. trace() in its stand-in world
+// (trace_function_cases.cpp): the hit's
 // stand-in shading is ambient (a tenth of the diffuse colour) plus the
 // diffuse colour times 0.25 + 0.75 N.V, plus a tenth of the specular colour
 // times 0.5 + 0.5 N.y; the sky is (0.35, 0.5, 0.75) + 0.25 dir.
-TEST(FunctionCases, TraceAndGlowReferencesByHand) {
+TEST(FunctionCases, WholeFunctionReferencesByHand) {
     const glm::dvec3 gold(0.05, 0.04, 0.02);
     // Straight at the gold ball, depth 1: N.V = 1, N.y = 0, no specular colour.
     const std::string straight =
@@ -132,6 +133,18 @@ TEST(FunctionCases, TraceAndGlowReferencesByHand) {
     expectNear(referenceFor("sunGlow", "the sun behind the eye"), {0, 0, 0});
     expectNear(referenceFor("sunGlow", "a plane in front of the sun's closest point"), {0, 0, 0});
     EXPECT_GT(referenceFor("sunGlow", "a plane behind the sun's closest point").x, 0.1);
+    // The BVH walk's world of eight spheres in a row: the ray along x at
+    // y = 0.1, z = -0.7 passes sphere 0 (radius 0.6, 0.71 off its centre)
+    // and enters sphere 1 (centre (-7.5, 0.3 sin 1, -0.2), radius 0.7).
+    const glm::dvec4 row = referenceStartingWith(
+        "walkBvh", "eight spheres in a row along x, ray from (-20, 0.1, -0.7) along (1, 0, 0)");
+    const double dy = 0.1 - 0.3 * std::sin(1.0), dz = -0.5;
+    EXPECT_EQ(row.z, 1.0);
+    EXPECT_NEAR(row.y, 12.5 - std::sqrt(0.49 - dy * dy - dz * dz), 1e-6);
+    // 08's lightVisible: no shadow ray to a light behind the surface; every
+    // light visible with shadows off.
+    EXPECT_EQ(referenceStartingWith("lightVisibleFast", "a light behind the surface").x, 0.0);
+    EXPECT_EQ(referenceStartingWith("lightVisibleFast", "shadows off").x, 1.0);
 }
 
 // The switches the checked code reads (keys N and 1, the colour mode) are

@@ -61,7 +61,9 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
   const rendererFor = async (scene: string) => {
     let r = renderers.get(scene);
     if (!r) {
-      r = await loadStage(gl, catalog, stage, sources, scene, undefined, undefined, false, true);
+      // With the BVH in every scene, as native's check (its generic program
+      // walks the tree even in a scene of ten spheres, so a wrong walk fails there too).
+      r = await loadStage(gl, catalog, stage, sources, scene, true, undefined, false, true);
       renderers.set(scene, r);
     }
     return r;

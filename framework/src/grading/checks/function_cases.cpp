@@ -1,6 +1,7 @@
 // The function-check tables and their double-precision references. The
 // references follow the course's conventions exactly (T_MIN, NO_HIT = -1,
 // which side counts), so any disagreement is the student's (or float's).
+#include "bvh_function_cases.h"
 #include "function_checks.h"
 #include "function_compare.h"
 #include "fur_function_cases.h"
@@ -10,6 +11,7 @@
 #include "shading_function_cases.h"
 #include "sky_function_cases.h"
 #include "trace_function_cases.h"
+#include "visibility_function_cases.h"
 
 #include "reference_intersect.h"
 #include "reference_shading.h"
@@ -265,7 +267,10 @@ const std::vector<FunctionSpec>& functionSpecs() {
                                          sphereUvSpec(),
                                          planeUvSpec(),
                                          skyColorSpec(),
-                                         sunGlowSpec()};
+                                         sunGlowSpec(),
+                                         walkBvhSpec(),
+                                         lightVisibilitySpec(),
+                                         lightVisibleFastSpec()};
         for (FunctionSpec& f : shadingFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : meshFunctionSpecs()) all.push_back(std::move(f));
         for (FunctionSpec& f : furFunctionSpecs()) all.push_back(std::move(f));

@@ -39,6 +39,9 @@ struct FunctionSpec {
     // lookup), set by HELPERS from the case's inputs.
     std::string prelude;
     std::string helpers;  // GLSL after the includes, for CALL to use
+    // Defines the harness adds to the stage's (RAYLAB_BVH: the BVH's walk,
+    // not the linear search the framework substitutes without it).
+    std::vector<std::string> defines;
     std::vector<FunctionCase> cases;
     std::function<glm::dvec4(const FunctionCase&)> reference;
     // Empty when GOT agrees with WANT, else one line saying how it does not.

@@ -3,10 +3,23 @@
 #include "text_format.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace raylab {
 
 std::string caseNumber(double v) { return significant(v, 6); }
+
+std::string caseVector(const glm::dvec3& v) {
+    return "(" + caseNumber(v.x) + ", " + caseNumber(v.y) + ", " + caseNumber(v.z) + ")";
+}
+
+std::string glslFloat(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.9g", v);
+    std::string s = b;
+    if (s.find_first_of(".en") == std::string::npos) s += ".0";
+    return s;
+}
 
 bool allFinite(const glm::dvec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);

@@ -7,7 +7,11 @@
 
 namespace raylab {
 
-std::string caseNumber(double v);  // 6 significant digits, for messages
+std::string caseNumber(double v);             // 6 significant digits, for messages
+std::string caseVector(const glm::dvec3& v);  // "(x, y, z)", each as caseNumber
+// A GLSL float literal of V (9 significant digits: a float exactly), for
+// tables a harness is given as code (the worlds of trace and walkBvh).
+std::string glslFloat(double v);
 
 // A case of a table: its label and its inputs a0..a3.
 FunctionCase caseOf(std::string label, glm::dvec4 a0, glm::dvec4 a1 = glm::dvec4(0.0),

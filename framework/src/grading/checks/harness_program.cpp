@@ -69,6 +69,7 @@ HarnessProgram assembleHarness(const FunctionSpec& spec, const StageInfo& stage,
             throw Error("cannot write the function-check harness to " + dir.path.string());
     }
     std::vector<std::string> defines = stage.defines();
+    defines.insert(defines.end(), spec.defines.begin(), spec.defines.end());
     defines.insert(defines.end(), extraDefines.begin(), extraDefines.end());
     std::vector<fs::path> search = {dir.path};
     if (webGl2) search.push_back(projectRoot() / "web" / "shaders");

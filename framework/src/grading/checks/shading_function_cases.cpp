@@ -20,10 +20,6 @@ using glm::dvec4;
 
 dvec3 xyz(const dvec4& v) { return dvec3(v); }
 
-std::string text(const dvec3& v) {
-    return "(" + caseNumber(v.x) + ", " + caseNumber(v.y) + ", " + caseNumber(v.z) + ")";
-}
-
 FunctionCase makeCase(std::string label, dvec4 a0, dvec4 a1 = dvec4(0.0), dvec4 a2 = dvec4(0.0),
                       dvec4 a3 = dvec4(0.0)) {
     FunctionCase c;
@@ -60,9 +56,10 @@ const char* kLightsPrelude = "// Stand-ins for the scene's lights, set by the ca
 // point is the origin.
 FunctionCase blinnCase(std::string label, dvec3 normal, dvec3 toEye, double shininess, dvec3 light0,
                        dvec3 light1 = dvec3(0.0), bool twoLights = false) {
-    label += " [N " + text(glm::normalize(normal)) + ", to the eye " + text(glm::normalize(toEye)) +
-             ", shininess " + caseNumber(shininess) + ", light at " + text(light0) +
-             (twoLights ? " and " + text(light1) : "") + "]";
+    label += " [N " + caseVector(glm::normalize(normal)) + ", to the eye " +
+             caseVector(glm::normalize(toEye)) + ", shininess " + caseNumber(shininess) +
+             ", light at " + caseVector(light0) + (twoLights ? " and " + caseVector(light1) : "") +
+             "]";
     return makeCase(std::move(label), dvec4(glm::normalize(normal), shininess),
                     dvec4(glm::normalize(toEye), 0.0), dvec4(light0, 0.0),
                     dvec4(light1, twoLights ? 1.0 : 0.0));
@@ -129,142 +126,6 @@ FunctionSpec blinnPhongSpec() {
     return s;
 }
 
-// ---- 03 light_visibility.glsl ----------------------------------------------
-
-// a0: the point, a0.w the radius of a blocking sphere (0: none); a1: the
-// unit normal facing the eye, a1.w where the blocker's centre lies on the
-// way from the point (0) to the light (1); a2: the light's position; a3 the
-// sphere the point lies on (centre, radius).
-FunctionCase visibilityCase(std::string label, dvec3 center, double radius, dvec3 outward,
-                            bool eyeInside, dvec3 light, double blockerRadius = 0.0,
-                            double blockerAt = 0.0) {
-    const dvec3 out = glm::normalize(outward);
-    label += " [point " + text(center + radius * out) + ", normal " + text(eyeInside ? -out : out) +
-             ", light at " + text(light) + "]";
-    return makeCase(std::move(label), dvec4(center + radius * out, blockerRadius),
-                    dvec4(eyeInside ? -out : out, blockerAt), dvec4(light, 0.0),
-                    dvec4(center, radius));
-}
-
-// Does the open segment from P (on the sphere CENTER, RADIUS) to the light
-// at distance DIST along the unit direction D cross a sphere?
-[[maybe_unused]] bool crosses(const dvec3& p, const dvec3& d, double dist, const dvec3& center,
-                              double radius, bool pointOnIt) {
-    const dvec3 oc = p - center;
-    const double b = glm::dot(oc, d);
-    if (pointOnIt) {  // roots 0 and -2b: the other one is where the segment leaves or enters
-        const double other = -2.0 * b;
-        return other > 0.0 && other < dist;
-    }
-    const double h = b * b - (glm::dot(oc, oc) - radius * radius);
-    if (h < 0.0) return false;
-    const double t0 = -b - std::sqrt(h), t1 = -b + std::sqrt(h);
-    return (t0 > 0.0 && t0 < dist) || (t1 > 0.0 && t1 < dist);
-}
-
-FunctionSpec lightVisibilitySpec() {
-    FunctionSpec s;
-    s.name = "lightVisible";
-    s.prelude = std::string(kLightsPrelude) +
-                "// Stand-ins for the scene's spheres, set by the case.\n"
-                "int uSphereCount;\n"
-                "vec4 uSpheres[MAX_SPHERES];\n";
-    s.includes = {"ray.glsl", "intersect_sphere.glsl", "find_closest.glsl",
-                  "light_visibility.glsl"};
-    s.helpers = "vec4 checkLightVisible(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    uLightCount = 1;\n"
-                "    uLightPositions[0] = a2.xyz;\n"
-                "    uLightColors[0] = vec3(1.0);\n"
-                "    uSphereCount = 1;\n"
-                "    uSpheres[0] = a3;\n"
-                "    if (a0.w > 0.0) {\n"
-                "        uSpheres[1] = vec4(mix(a0.xyz, a2.xyz, a1.w), a0.w);\n"
-                "        uSphereCount = 2;\n"
-                "    }\n"
-                "    return vec4(lightVisible(a0.xyz, a1.xyz, 0) ? 1.0 : 0.0, 0.0, 0.0, 1.0);\n"
-                "}\n";
-    s.call = "checkLightVisible(a0, a1, a2, a3)";
-    const dvec3 o(0.0);
-    s.cases = {
-        visibilityCase("light above the point, nothing between", o, 1, {0, 1, 0}, false, {0, 5, 0}),
-        visibilityCase("a sphere between the point and the light", o, 1, {0, 1, 0}, false,
-                       {0, 5, 0}, 0.5, 0.5),
-        visibilityCase("a sphere beyond the light", o, 1, {0, 1, 0}, false, {0, 5, 0}, 0.5, 1.5),
-        visibilityCase("light on the far side of the point's own sphere", o, 1, {0, 1, 0}, false,
-                       {0.5, -5, 0}),
-        visibilityCase("grazing light, radius 100", o, 100, {0, 1, 0}, false, {400, 101, 0}),
-        // The eye inside the sphere: the normal faces inward, the light is
-        // outside - behind the surface seen from the eye.
-        visibilityCase("eye inside a sphere of radius 100, light outside: the shadow ray starts "
-                       "on the light's side, -normal",
-                       o, 100, {0, 1, 0}, true, {30, 140, 0}),
-        visibilityCase("eye outside a sphere of radius 100, light inside it: the shadow ray "
-                       "starts on the light's side, -normal",
-                       o, 100, {0, 1, 0}, false, {20, 30, 10}),
-    };
-    // The side the shadow ray starts on, at sizes where the offset is longer
-    // than T_MIN (a ray started on the wrong side then meets its own sphere):
-    // the eye inside a sphere with a light outside, and a light inside a
-    // sphere seen from outside.
-    const struct {
-        double radius;
-        dvec3 outward;
-    } sides[] = {{100.0, {0.3, 1.0, -0.2}},
-                 {1000.0, {-0.5, 0.4, 0.7}},
-                 {1e4, {0.8, -0.3, 0.4}},
-                 {1e5, {-0.2, 0.6, -0.9}}};
-    for (const auto& c : sides) {
-        const dvec3 out = glm::normalize(c.outward);
-        const std::string r = caseNumber(c.radius);
-        s.cases.push_back(visibilityCase("eye inside a sphere of radius " + r +
-                                             ", light outside in front of the point",
-                                         o, c.radius, out, true, c.radius * (out * 1.6)));
-        s.cases.push_back(visibilityCase(
-            "eye outside a sphere of radius " + r + ", light inside it, behind the point", o,
-            c.radius, out, false, c.radius * (0.3 * out + dvec3(0.1, -0.2, 0.15))));
-    }
-    // Far from the origin float steps are large (1e-3 near 10^4, 8e-3 near
-    // 10^5): a point computed there lies measurably above or below its
-    // surface, and a shadow ray started on it, or a fixed 1e-3 off it, hits
-    // its own sphere.
-    struct Far {
-        dvec3 center;
-        double radius;
-        const char* name;
-    } far[] = {{{12000.0, -3000.0, 8000.0}, 5000.0, "radius 5000, 10^4 from the origin"},
-               {{120000.0, -30000.0, 80000.0}, 50000.0, "radius 50000, 10^5 from the origin"},
-               {{1.2e6, -3e5, 8e5}, 5e5, "radius 500000, 10^6 from the origin"}};
-    for (const Far& f : far)
-        for (int i = 0; i < 8; ++i) {
-            const double a = 0.7 + 0.61 * i, z = -0.6 + 0.17 * i, r = std::sqrt(1.0 - z * z);
-            const dvec3 outward(r * std::cos(a), z, r * std::sin(a));
-            const dvec3 light = f.center + f.radius * outward +
-                                0.8 * f.radius * glm::normalize(outward + dvec3(0.3, 0.5, -0.2));
-            s.cases.push_back(visibilityCase(std::string("sphere of ") + f.name + ", point " +
-                                                 std::to_string(i + 1) + ", light in front",
-                                             f.center, f.radius, outward, false, light));
-        }
-    for (FunctionCase& c : s.cases) c.uniforms = {{"uShadows", 1}};
-    RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
-        const dvec3 p = xyz(c.in[0]), toLight = xyz(c.in[2]) - p;
-        const double dist = glm::length(toLight);
-        const dvec3 d = toLight / dist;
-        bool blocked = crosses(p, d, dist, xyz(c.in[3]), c.in[3].w, true);
-        if (c.in[0].w > 0.0)
-            blocked = blocked ||
-                      crosses(p, d, dist, glm::mix(p, xyz(c.in[2]), c.in[1].w), c.in[0].w, false);
-        return dvec4(blocked ? 0.0 : 1.0, 0.0, 0.0, 1.0);
-    });
-    s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
-        auto text = [](double v) { return v > 0.5 ? "visible" : "blocked"; };
-        if (!allFinite(got)) return c.label + ": got NaN or Inf";
-        if ((got.x > 0.5) == (want.x > 0.5)) return "";
-        return c.label + ": expected the light " + text(want.x) + ", got " + text(got.x);
-    };
-    return s;
-}
-
 // ---- 07 normal_map.glsl ----------------------------------------------------
 
 // a0: the unit normal N; a1: the tangent (any length, not necessarily
@@ -320,8 +181,8 @@ FunctionSpec applyNormalMapSpec() {
     };
     for (const Row& r : rows)
         s.cases.push_back(makeCase(
-            std::string(r.label) + " [N " + text(glm::normalize(r.normal)) + ", tangent " +
-                text(r.tangent) + ", texel " + text(r.texel) + "]",
+            std::string(r.label) + " [N " + caseVector(glm::normalize(r.normal)) + ", tangent " +
+                caseVector(r.tangent) + ", texel " + caseVector(r.texel) + "]",
             dvec4(glm::normalize(r.normal), 0.0), dvec4(r.tangent, 0.0), dvec4(r.texel, 0.0)));
     for (FunctionCase& c : s.cases) c.uniforms = {{"uNormalMaps", 1}};
     RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
@@ -349,7 +210,7 @@ FunctionSpec applyColorModeSpec() {
     for (int mode = 0; mode < 5; ++mode)
         for (const dvec3& color : {dvec3(0.1, 0.5, 0.9), dvec3(0.8, 0.3, 0.05)}) {
             FunctionCase c = makeCase("mode " + std::to_string(mode) + " (" + names[mode] +
-                                          "), colour " + text(color),
+                                          "), colour " + caseVector(color),
                                       dvec4(color, 0.0));
             c.uniforms = {{"uColorMode", mode}};
             s.cases.push_back(c);
@@ -436,8 +297,7 @@ FunctionSpec findClosestSpec() {
 }  // namespace
 
 std::vector<FunctionSpec> shadingFunctionSpecs() {
-    return {findClosestSpec(), blinnPhongSpec(), lightVisibilitySpec(), applyNormalMapSpec(),
-            applyColorModeSpec()};
+    return {findClosestSpec(), blinnPhongSpec(), applyNormalMapSpec(), applyColorModeSpec()};
 }
 
 }  // namespace raylab

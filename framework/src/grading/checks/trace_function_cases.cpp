@@ -73,16 +73,8 @@ const std::vector<World>& worlds() {
     return all;
 }
 
-std::string glsl(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.9g", v);
-    std::string s = b;
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return s;
-}
-
 std::string glsl(const dvec3& v) {
-    return "vec3(" + glsl(v.x) + ", " + glsl(v.y) + ", " + glsl(v.z) + ")";
+    return "vec3(" + glslFloat(v.x) + ", " + glslFloat(v.y) + ", " + glslFloat(v.z) + ")";
 }
 
 // The worlds as GLSL: loadWorld(w, offset, scale) fills the stand-in spheres.
@@ -93,10 +85,10 @@ std::string worldsGlsl() {
         text += std::string(w ? "    } else " : "    ") + "if (world == " + std::to_string(w) +
                 ") {  // " + worlds()[w].name + "\n";
         for (const WorldSphere& s : worlds()[w].spheres)
-            text += "        addSphere(" + glsl(s.center) + ", " + glsl(s.radius) + ", Material(" +
-                    glsl(0.1 * s.diffuse) + ", " + glsl(s.diffuse) + ", " + glsl(s.specular) +
-                    ", 32.0, " + std::to_string(s.type) + ", " + glsl(s.ior) + ", " + glsl(s.n) +
-                    ", " + glsl(s.k) + ", -1, -1));\n";
+            text += "        addSphere(" + glsl(s.center) + ", " + glslFloat(s.radius) +
+                    ", Material(" + glsl(0.1 * s.diffuse) + ", " + glsl(s.diffuse) + ", " +
+                    glsl(s.specular) + ", 32.0, " + std::to_string(s.type) + ", " +
+                    glslFloat(s.ior) + ", " + glsl(s.n) + ", " + glsl(s.k) + ", -1, -1));\n";
     }
     return text + "    }\n}\n";
 }

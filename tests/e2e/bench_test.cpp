@@ -144,6 +144,32 @@ TEST(Bench, FurQuickRunWritesCsvTablePlotAndTheTechniquesLimits) {
     EXPECT_FALSE(fs::exists(dir / "other"));
 }
 
+// A machine without gnuplot (a lent GPU machine): the bench says so before
+// measuring, writing nothing, and names --no-plot; with it the tables come
+// without a plot, and the Markdown shows none.
+TEST(Bench, WithoutGnuplotItStopsFirstOrWritesTheTablesWithoutAPlot) {
+    ScratchDir dir;
+    const std::string noGnuplot = "env PATH=" + quote((dir / "empty").string()) + " " +
+                                  quote(raylabExe().string()) + " bench --quick ";
+    for (const char* track : {"raytrace", "fur"}) {
+        SCOPED_TRACE(track);
+        const fs::path out = dir / (std::string("plotless-") + track);
+        CommandResult r =
+            runCommand(noGnuplot + "--track " + track + " --out " + quote(out.string()));
+        EXPECT_EQ(r.exitCode, 2) << r.all();
+        EXPECT_NE(r.err.find("gnuplot not found"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("--no-plot"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(out));
+    }
+    const fs::path out = dir / "fur";
+    CommandResult r = runCommand(noGnuplot + "--track fur --no-plot --out " + quote(out.string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("no plot"), std::string::npos) << r.out;
+    EXPECT_EQ(readCsv(out / "fur.csv").size(), 4u);
+    EXPECT_FALSE(fs::exists(out / "fur.png"));
+    EXPECT_EQ(readFile(out / "fur.md").find("fur.png"), std::string::npos);
+}
+
 // `bench --growth --quick`: the files and their rows (no speed is asserted:
 // timings belong in the report, not in a test).
 TEST(Bench, GrowthQuickRunWritesCsvTableAndPlot) {

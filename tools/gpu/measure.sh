@@ -91,9 +91,13 @@ for id in "${ids[@]}"; do
 done
 
 # Both tracks' benches: llvmpipe-sized in quick mode, both sizes otherwise.
+# Without gnuplot (a lent GPU machine has none) the benches write no plot.
+plot=()
+command -v gnuplot >/dev/null || plot=(--no-plot)
 bench() {  # NAME, then raylab bench options
     local name=$1
     shift
+    set -- "$@" "${plot[@]}"
     local limit=()
     [[ $benchTimeout == 0 ]] || limit=(timeout --kill-after=10 "$benchTimeout")
     "${limit[@]}" "$raylab" bench --backend "$backend" --out "$out/bench-$name" "$@" \

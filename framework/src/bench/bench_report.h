@@ -84,10 +84,11 @@ void writeBenchPlot(const std::vector<BenchRow>& rows, const std::filesystem::pa
                     const std::string& title = "RayLab bench: speed vs error",
                     const std::string& gnuplot = "gnuplot");
 
-// DIR/bench.csv, DIR/bench.md and DIR/bench.png, each atomic; DIR is created
-// when missing. The text files are written first, so they are there even when
-// the plot then fails (its Error is thrown after them).
+// DIR/bench.csv, DIR/bench.md and DIR/bench.png (without PLOT: no PNG, and
+// the Markdown does not show one), each atomic; DIR is created when missing.
+// The text files are written first, so they are there even when the plot
+// then fails (its Error is thrown after them).
 void writeBenchFiles(const std::vector<BenchRow>& rows, const std::filesystem::path& dir,
-                     const std::string& title, const std::string& commandLine);
+                     const std::string& title, const std::string& commandLine, bool plot = true);
 
 }  // namespace raylab

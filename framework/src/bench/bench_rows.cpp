@@ -110,13 +110,14 @@ std::string rayLever(const std::string& lever) {
 // ---------------------------------------------------------------- all three
 
 void writeBenchFiles(const std::vector<BenchRow>& rows, const fs::path& dir,
-                     const std::string& title, const std::string& commandLine) {
+                     const std::string& title, const std::string& commandLine, bool plot) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw Error("cannot create folder " + displayPath(dir) + ": " + ec.message());
     writeTextFileAtomic(dir / "bench.csv", benchCsv(rows));
-    writeTextFileAtomic(dir / "bench.md", benchMarkdown(rows, title, commandLine, "bench.png"));
-    writeBenchPlot(rows, dir / "bench.png", title);
+    writeTextFileAtomic(dir / "bench.md",
+                        benchMarkdown(rows, title, commandLine, plot ? "bench.png" : ""));
+    if (plot) writeBenchPlot(rows, dir / "bench.png", title);
 }
 
 }  // namespace raylab

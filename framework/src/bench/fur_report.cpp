@@ -189,15 +189,16 @@ void writeFurPlot(const std::vector<FurRow>& rows, const fs::path& pngPath,
 }
 
 void writeFurFiles(const std::vector<FurRow>& rows, const fs::path& dir, const std::string& title,
-                   const std::string& commandLine, const std::string& notes) {
+                   const std::string& commandLine, const std::string& notes, bool plot) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir))
         throw Error("cannot make the folder " + displayPath(dir) +
                     (ec ? ": " + ec.message() : std::string()));
     writeTextFileAtomic(dir / "fur.csv", furCsv(rows));
-    writeTextFileAtomic(dir / "fur.md", furMarkdown(rows, title, commandLine, notes, "fur.png"));
-    writeFurPlot(rows, dir / "fur.png", title);
+    writeTextFileAtomic(dir / "fur.md",
+                        furMarkdown(rows, title, commandLine, notes, plot ? "fur.png" : ""));
+    if (plot) writeFurPlot(rows, dir / "fur.png", title);
 }
 
 }  // namespace raylab

@@ -43,9 +43,9 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
 void writeFurPlot(const std::vector<FurRow>& rows, const std::filesystem::path& pngPath,
                   const std::string& title, const std::string& gnuplot = "gnuplot");
 
-// DIR/fur.csv, DIR/fur.md, then DIR/fur.png, each atomic.
+// DIR/fur.csv, DIR/fur.md, then DIR/fur.png (not without PLOT), each atomic.
 void writeFurFiles(const std::vector<FurRow>& rows, const std::filesystem::path& dir,
                    const std::string& title, const std::string& commandLine,
-                   const std::string& notes);
+                   const std::string& notes, bool plot = true);
 
 }  // namespace raylab

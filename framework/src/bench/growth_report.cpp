@@ -193,7 +193,7 @@ void writeGrowthPlot(const std::vector<GrowthRow>& rows, const fs::path& pngPath
 
 void writeGrowthFiles(const std::vector<GrowthRow>& rows, const fs::path& dir,
                       const std::string& title, const std::string& commandLine,
-                      const std::string& notes) {
+                      const std::string& notes, bool plot) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir))
@@ -201,8 +201,8 @@ void writeGrowthFiles(const std::vector<GrowthRow>& rows, const fs::path& dir,
                     (ec ? ": " + ec.message() : std::string()));
     writeTextFileAtomic(dir / "growth.csv", growthCsv(rows));
     writeTextFileAtomic(dir / "growth.md",
-                        growthMarkdown(rows, title, commandLine, notes, "growth.png"));
-    writeGrowthPlot(rows, dir / "growth.png", title);
+                        growthMarkdown(rows, title, commandLine, notes, plot ? "growth.png" : ""));
+    if (plot) writeGrowthPlot(rows, dir / "growth.png", title);
 }
 
 }  // namespace raylab

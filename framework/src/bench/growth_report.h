@@ -52,9 +52,10 @@ std::string growthMarkdown(const std::vector<GrowthRow>& rows, const std::string
 void writeGrowthPlot(const std::vector<GrowthRow>& rows, const std::filesystem::path& pngPath,
                      const std::string& title, const std::string& gnuplot = "gnuplot");
 
-// DIR/growth.csv, DIR/growth.md, then DIR/growth.png, each atomic.
+// DIR/growth.csv, DIR/growth.md, then DIR/growth.png (not without PLOT),
+// each atomic.
 void writeGrowthFiles(const std::vector<GrowthRow>& rows, const std::filesystem::path& dir,
                       const std::string& title, const std::string& commandLine,
-                      const std::string& notes);
+                      const std::string& notes, bool plot = true);
 
 }  // namespace raylab

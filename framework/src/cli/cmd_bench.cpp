@@ -31,6 +31,7 @@
 #include "frame_error.h"
 #include "frame_timer.h"
 #include "gl_loader.h"
+#include "gnuplot.h"
 #include "light_buffer.h"
 #include "paths.h"
 #include "reference_tracer.h"
@@ -322,7 +323,11 @@ int cmdBench(const BenchOptions& options) {
     // Everything that can fail on bad input fails before any measuring.
     std::vector<Scene> loaded;
     for (const std::string& name : scenes) loaded.push_back(loadScene(demoSceneFile(name)));
-    // The output folder too: minutes of measuring must not end in "cannot write".
+    // The output folder and the plotter too: minutes of measuring must not end
+    // in "cannot write" or "gnuplot not found".
+    if (options.plot && !bench::gnuplotAvailable())
+        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
+                    "plot out with --no-plot");
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))
@@ -401,9 +406,10 @@ int cmdBench(const BenchOptions& options) {
         }
     }
     const std::string title = "RayLab bench (" + glDescription() + ")";
-    writeBenchFiles(rows, options.outDir, title, options.commandLine);
-    std::printf("raylab bench: wrote %s/bench.csv, bench.md and bench.png\n",
-                std::filesystem::absolute(options.outDir).lexically_normal().c_str());
+    writeBenchFiles(rows, options.outDir, title, options.commandLine, options.plot);
+    std::printf("raylab bench: wrote %s/bench.csv, bench.md%s\n",
+                std::filesystem::absolute(options.outDir).lexically_normal().c_str(),
+                options.plot ? " and bench.png" : " (no plot: --no-plot)");
     return 0;
 }
 
@@ -426,6 +432,10 @@ Command benchCommand() {
                                "image size WIDTHxHEIGHT (default 800x600, quick 160x120)");
                 cmd.add_option("--frames", bench->frames,
                                "timed frames per setting (default 5, quick 1)");
+                cmd.add_flag(
+                    "--no-plot", [bench](std::int64_t) { bench->plot = false; },
+                    "write the CSV and Markdown only, no PNG: for a machine without "
+                    "gnuplot (tools/gpu/measure.sh on a lent GPU)");
                 cmd.add_flag("--growth", bench->growth,
                              "frame and BVH build time against object count (mesh triangles, "
                              "spheres), BVH against linear search (growth.csv, growth.md, "

@@ -101,8 +101,9 @@ int cmdBenchFur(const BenchOptions& options) {
     const FurScene scene = loadFurScene(stageSceneFile(kBenchScene));
     // Everything that could fail at the end of a long run fails first, and
     // before the output folder exists.
-    if (!bench::gnuplotAvailable())
-        throw Error("gnuplot not found: install gnuplot-nox (install.sh does)");
+    if (options.plot && !bench::gnuplotAvailable())
+        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
+                    "plot out with --no-plot");
     auto context = createHeadlessContext(options.backend);
     FurRenderer renderer(stage, solutionSources(stage), scene, size.width, size.height);
     std::error_code ec;
@@ -166,9 +167,11 @@ int cmdBenchFur(const BenchOptions& options) {
     }
     const std::string title = "RayLab fur bench (" + glDescription() + ", " +
                               std::to_string(size.width) + "x" + std::to_string(size.height) + ")";
-    writeFurFiles(rows, options.outDir, title, options.commandLine, limitsNotes(renderer));
-    std::printf("raylab bench: wrote %s/fur.csv, fur.md and fur.png\n",
-                std::filesystem::absolute(options.outDir).lexically_normal().c_str());
+    writeFurFiles(rows, options.outDir, title, options.commandLine, limitsNotes(renderer),
+                  options.plot);
+    std::printf("raylab bench: wrote %s/fur.csv, fur.md%s\n",
+                std::filesystem::absolute(options.outDir).lexically_normal().c_str(),
+                options.plot ? " and fur.png" : " (no plot: --no-plot)");
     return 0;
 }
 

@@ -103,8 +103,9 @@ int cmdBenchGrowth(const BenchOptions& options) {
     std::vector<int> spheres =
         options.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
     // Everything that could fail at the end of a long run fails first.
-    if (!bench::gnuplotAvailable())
-        throw Error("gnuplot not found: install gnuplot-nox (install.sh does)");
+    if (options.plot && !bench::gnuplotAvailable())
+        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
+                    "plot out with --no-plot");
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))
@@ -190,9 +191,10 @@ int cmdBenchGrowth(const BenchOptions& options) {
                                  std::to_string(inStorage.back()) + ". ") +
         "Build: `buildBvh` on the CPU, once.";
     writeGrowthFiles(rows, options.outDir, "RayLab growth (" + glDescription() + ")",
-                     options.commandLine, notes);
-    std::printf("raylab bench --growth: wrote %s/growth.csv, growth.md and growth.png\n",
-                std::filesystem::absolute(options.outDir).lexically_normal().c_str());
+                     options.commandLine, notes, options.plot);
+    std::printf("raylab bench --growth: wrote %s/growth.csv, growth.md%s\n",
+                std::filesystem::absolute(options.outDir).lexically_normal().c_str(),
+                options.plot ? " and growth.png" : " (no plot: --no-plot)");
     return 0;
 }
 

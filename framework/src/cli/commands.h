@@ -96,6 +96,7 @@ struct BenchOptions {
     std::string commandLine;         // for the report
     std::string track = "raytrace";  // "fur": the fur track's bench (cmd_bench_fur.cpp)
     bool growth = false;  // frame and build time against object count (cmd_bench_growth.cpp)
+    bool plot = true;     // false (--no-plot): the CSV and Markdown only, no gnuplot needed
 };
 int cmdBench(const BenchOptions& bench);
 int cmdBenchFur(const BenchOptions& bench);

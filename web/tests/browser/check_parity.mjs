@@ -12,8 +12,12 @@
 //    the student's functions but not from their geometry shader), which the
 //    page must then pass.
 // Default: the first two mistakes of each stage, for trying a change;
-// --all: every mistake (ctest web_parity, labels web and web-parity).
-// Usage: node tests/browser/check_parity.mjs [--all] [--stages 01,f3] [--labgen PATH]
+// --all: every mistake (ctest web_parity, labels web and web-parity);
+// --every N [--offset K]: of all mistakes in course order, those whose index
+// is K modulo N (the second and third engines' parity: Chromium runs every
+// mistake, Firefox and WebKit each a different third; every engine still
+// checks every stage's solution and untouched lab).
+// Usage: node tests/browser/check_parity.mjs [--all | --every N [--offset K]] [--stages 01,f3] [--labgen PATH]
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -22,7 +26,13 @@ import { launchBrowser, openPage, projectRoot, startServer } from './browser.mjs
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
-const all = args.includes('--all');
+const every = Number(option('--every', '0'));
+const offset = Number(option('--offset', '0'));
+if (args.includes('--every') && !(Number.isInteger(every) && every >= 1 && offset >= 0 && offset < every)) {
+  console.error('check_parity.mjs: --every needs a whole number N >= 1 and --offset one below N');
+  process.exit(2);
+}
+const all = args.includes('--all') || every >= 1;
 const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
 const onlyStages = option('--stages', '').split(',').filter(Boolean);
 const NATIVE_ONLY = new Set(['fin_count']);
@@ -38,6 +48,7 @@ const server = await startServer();
 let browser;
 const started = Date.now();
 let mistakesChecked = 0;
+let mistakesSeen = 0;  // in course order, for --every
 const nativeOnly = [];
 try {
   browser = await launchBrowser();
@@ -56,7 +67,9 @@ try {
     const solvedFiles = Object.fromEntries(readdirSync(join(solved, stage.id))
       .filter((n) => /\.(glsl|vert|frag|geom)$/.test(n))
       .map((n) => [n, readFileSync(join(solved, stage.id, n), 'utf8')]));
-    for (const file of all ? files : files.slice(0, 2)) {
+    const chosen = !all ? files.slice(0, 2)
+      : files.filter(() => (mistakesSeen++ % (every || 1)) === (every ? offset : 0));
+    for (const file of chosen) {
       const m = JSON.parse(readFileSync(join(dir, file), 'utf8'));
       const labFiles = { ...solvedFiles };
       for (const [from, to] of m.replace) {

@@ -232,8 +232,7 @@ FunctionSpec walkBvhSpec() {
     };
     RAYLAB_REFERENCE(s, [](const FunctionCase& c) {
         const std::vector<dvec4>& spheres = bvhWorlds()[std::size_t(c.in[0].w)].spheres;
-        const reference::DRay ray{dvec3(glm::vec3(dvec3(c.in[0]))),
-                                  dvec3(glm::vec3(dvec3(c.in[1])))};
+        const reference::DRay ray{dvec3(asHarnessReads(c.in[0])), dvec3(asHarnessReads(c.in[1]))};
         dvec4 best(0.0, c.in[2].x > 0.0 ? c.in[2].x : shader::kTFar, -1.0, 1.0);
         for (std::size_t i = 0; i < spheres.size(); ++i) {
             const double t = reference::intersectSphere(ray, dvec3(spheres[i]), spheres[i].w);

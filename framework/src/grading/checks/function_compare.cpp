@@ -13,6 +13,12 @@ std::string caseVector(const glm::dvec3& v) {
     return "(" + caseNumber(v.x) + ", " + caseNumber(v.y) + ", " + caseNumber(v.z) + ")";
 }
 
+glm::dvec4 asHarnessReads(const glm::dvec4& v) {
+    glm::dvec4 out;
+    for (int i = 0; i < 4; ++i) out[i] = double(static_cast<float>(v[i]));
+    return out;
+}
+
 std::string glslFloat(double v) {
     char b[32];
     std::snprintf(b, sizeof b, "%.9g", v);

@@ -12,6 +12,10 @@ std::string caseVector(const glm::dvec3& v);  // "(x, y, z)", each as caseNumber
 // A GLSL float literal of V (9 significant digits: a float exactly), for
 // tables a harness is given as code (the worlds of trace and walkBvh).
 std::string glslFloat(double v);
+// V as the harness reads it: each component rounded to float. (Written per
+// component: g++ -O3 left two of three components of a glm::vec3(dvec3)
+// conversion unrounded in one function here, while -O0 rounded them.)
+glm::dvec4 asHarnessReads(const glm::dvec4& v);
 
 // A case of a table: its label and its inputs a0..a3.
 FunctionCase caseOf(std::string label, glm::dvec4 a0, glm::dvec4 a1 = glm::dvec4(0.0),

@@ -198,7 +198,8 @@ dvec3 traceReference(const std::vector<Placed>& spheres, const reference::DRay& 
 
 dvec4 traceWant(const FunctionCase& c) {
     // The case's inputs as the harness reads them: rounded to float.
-    const dvec4 a0 = glm::vec4(c.in[0]), a1 = glm::vec4(c.in[1]), a2 = glm::vec4(c.in[2]);
+    const dvec4 a0 = asHarnessReads(c.in[0]), a1 = asHarnessReads(c.in[1]),
+                a2 = asHarnessReads(c.in[2]);
     const dvec3 offset(a2);
     const double scale = a2.w;
     std::vector<Placed> spheres;

@@ -30,7 +30,7 @@ cmp -s "$table" <(sed -n '/^# RayLab/,$p' "$tmp/quick.txt") || fail "the printed
 mkdir -p "$tmp/refs"
 cp -r "$root/tests/reference/01-raycast" "$tmp/refs/"
 cp "$tmp/refs/01-raycast/moving.png" "$tmp/refs/01-raycast/front.png"
-if tools/gpu/measure.sh --quick --stages 01 --references "$tmp/refs" --out "$tmp/wrong" \
+if tools/gpu/measure.sh --no-bench --stages 01 --references "$tmp/refs" --out "$tmp/wrong" \
     >/dev/null 2>&1; then
     fail "a wrong reference picture passed"
 fi

@@ -2,7 +2,7 @@
 # The figures a machine with a GPU gives, in one run and one table:
 #
 #   tools/gpu/measure.sh [--quick] [--out DIR] [--stages LIST] [--references DIR]
-#                        [--backend B] [--bench-timeout SECONDS]
+#                        [--backend B] [--bench-timeout SECONDS] [--no-bench]
 #
 #   1. builds RayLab (cmake, Release) when build/raylab is missing;
 #   2. renders every check view of every stage with the solution and compares
@@ -17,19 +17,21 @@
 # a GPU is lent (tests/gpu/run_measure_test.sh runs it). --stages: a
 # comma-separated subset (ids or numbers); --references: another folder laid
 # out like tests/reference; --bench-timeout: stop each bench after SECONDS
-# (a lent GPU's minutes are counted; the table says which ran out). Exit
+# (a lent GPU's minutes are counted; the table says which ran out);
+# --no-bench: the checks only. Exit
 # status 0 when every check passed and every bench ran, 1 when something
 # failed or ran out of time (the table says what), 2 for bad usage.
 # RAYLAB overrides the binary (default build/raylab of this tree).
 set -uo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
-usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; }
 die() { echo "measure.sh: $*" >&2; exit 2; }
 
-quick=0 out="" stages="" references="$here/tests/reference" backend=auto benchTimeout=0
+quick=0 out="" stages="" references="$here/tests/reference" backend=auto benchTimeout=0 benches=1
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --quick) quick=1 ;;
+        --no-bench) benches=0 ;;
         --out) [[ $# -ge 2 ]] || die "--out needs a folder"; out=$2; shift ;;
         --stages) [[ $# -ge 2 ]] || die "--stages needs a list"; stages=$2; shift ;;
         --references) [[ $# -ge 2 ]] || die "--references needs a folder"; references=$2; shift ;;
@@ -112,7 +114,9 @@ bench() {  # NAME, then raylab bench options
         failed=1
     fi
 }
-if [[ $quick == 1 ]]; then
+if [[ $benches == 0 ]]; then
+    :
+elif [[ $quick == 1 ]]; then
     bench raytrace-quick --quick
     bench fur-quick --track fur --quick
 else

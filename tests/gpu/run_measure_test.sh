@@ -3,15 +3,19 @@
 # gpu): the command docs/bench/README.md shows runs as written and gives a
 # table of every stage and both tracks; a wrong reference picture makes it
 # fail and name the view; bad usage is a one-line error.
+#   run_measure_test.sh RAYLAB_EXE   (ctest passes this build's binary)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+raylab=${1:?usage: run_measure_test.sh RAYLAB_EXE}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# A folder laid out like the RayLab folder, so the docs' command runs as written.
-mkdir "$tmp/raylab"
-for part in build tools tests assets framework solution labs CMakeLists.txt; do
+# A folder laid out like the RayLab folder, so the docs' command runs as
+# written; its build/raylab is the binary under test, from any build folder.
+mkdir -p "$tmp/raylab/build"
+ln -s "$raylab" "$tmp/raylab/build/raylab"
+for part in tools tests assets framework solution labs CMakeLists.txt; do
     ln -s "$root/$part" "$tmp/raylab/$part"
 done
 cd "$tmp/raylab"
@@ -19,7 +23,7 @@ tools/gpu/measure.sh --quick --out gpu-quick >"$tmp/quick.txt" 2>"$tmp/quick.err
     fail "the quick run failed: $(tail -3 "$tmp/quick.err")"
 table=gpu-quick/measure.md
 grep -q '^# RayLab measured on OpenGL' "$table" || fail "no GL strings in $table"
-stages=$("$root/build/raylab" stages | grep -c '^  [0-9a-z]')
+stages=$("$raylab" stages | grep -c '^  [0-9a-z]')
 passed=$(grep -c '^| [0-9a-z-]* | pass |' "$table" || true)
 [[ $passed == "$stages" ]] || fail "$passed of $stages stages pass in $table"
 grep -q '^| 160x120 | lite |' "$table" || fail "no ray-tracer bench row in $table"

@@ -143,28 +143,28 @@ def main():
     print(f"## Every check view against {references}\n")
     print(table(["stage", "result", "views passed", "function checks passed", "worst view (pixels differing)",
                  "failed"], check_rows(out)))
-    ray, fur, missing = [], [], []
+    # Each track: its CSV's name and the function that makes its table rows.
+    tracks = {"bench-raytrace": ("bench.csv", raytrace_rows), "bench-fur": ("fur.csv", fur_rows)}
+    rows = {track: [] for track in tracks}
+    missing = []
     # Every bench that ran left a log; its folder may be missing (it failed early).
     for log in sorted(os.listdir(out)):
         if not (log.startswith("bench-") and log.endswith(".log")):
             continue
         name = log[:-4]
-        folder = os.path.join(out, name)
         size = name.rsplit("-", 1)[-1]
         if size == "quick":  # `raylab bench --quick`: the small grid at 160x120
             size = "160x120 (quick)"
-        if name.startswith("bench-raytrace"):
-            path = os.path.join(folder, "bench.csv")
-            if os.path.exists(path):
-                ray += raytrace_rows(read_csv(path), size)
-            else:
-                missing.append(name)
-        elif name.startswith("bench-fur"):
-            path = os.path.join(folder, "fur.csv")
-            if os.path.exists(path):
-                fur += fur_rows(read_csv(path), size)
-            else:
-                missing.append(name)
+        track = next((t for t in tracks if name.startswith(t)), None)
+        if track is None:
+            continue
+        csv_name, make_rows = tracks[track]
+        path = os.path.join(out, name, csv_name)
+        if os.path.exists(path):
+            rows[track] += make_rows(read_csv(path), size)
+        else:
+            missing.append(name)
+    ray, fur = rows["bench-raytrace"], rows["bench-fur"]
     print("\n## Ray tracer: `raylab bench`, depth 8, shadows on\n")
     print(table(["size", "scene", "baseline (ms)", "the demo's program (ms)", "its x Embree",
                  "fastest setting (ms)", "its x Embree"], ray))

@@ -21,6 +21,7 @@
 // (bench.md's "x Embree" column). Without Embree in the build the row says
 // so and everything else is measured as before.
 #include "bench_report.h"
+#include "cmd_bench_embree.h"
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
@@ -246,58 +247,6 @@ std::vector<Measured> measureAll(const Scene& scene, const StageInfo& stage,
         for (std::size_t i = 0; i < alsoTimed.size(); ++i) alsoMs[i].push_back(alsoTimed[i]());
     }
     return all;
-}
-
-// The rays of one GLSL frame for Embree to cast: the baseline's, or those of
-// a lever that casts fewer (LEVER as in leverName).
-struct RaySet {
-    std::string lever;
-    std::vector<TracedRay> rays;
-};
-
-// An embree-cast row (bench_report.h): the median of its timed casts; NaN
-// times when Embree is not built.
-BenchRow embreeRow(const std::string& sceneName, Size size, const RenderSettings& full,
-                   const RaySet& set, const EmbreeCaster* embree,
-                   const std::vector<double>& castMs) {
-    const std::vector<TracedRay>& rays = set.rays;
-    BenchRow row;
-    row.scene = sceneName;
-    row.width = size.width;
-    row.height = size.height;
-    row.depth = full.maxDepth;
-    row.shadows = full.shadows;
-    row.bvh = true;
-    row.engine = "embree";
-    row.lever = set.lever;
-    row.rays = rays.size();
-    row.frameMs = embree ? summarizeFrameTimes(castMs).medianMs : NAN;
-    row.compileMs = embree ? embree->buildMs() : NAN;
-    row.rmse = row.psnr = row.maxErr = row.badPxShare = row.depthErrP99Ulp = NAN;
-    return row;
-}
-
-// Prints ROWS' last row (the Embree one) with the rays it cast and the
-// scene's baseline GLSL frame as a multiple of it.
-void printEmbreeRow(const std::vector<BenchRow>& rows, const std::vector<TracedRay>& rays,
-                    int threads) {
-    const BenchRow& e = rows.back();
-    if (std::isnan(e.frameMs)) {
-        std::printf("  %-5s %-38s Embree not built (install libembree-dev, run cmake again)\n",
-                    e.scene.c_str(), benchSettingName(e).c_str());
-        return;
-    }
-    const TracedRayCounts c = countRays(rays);
-    std::printf("  %-5s %-38s frame %8.1f ms  (%zu rays: %zu primary, %zu reflected/refracted, "
-                "%zu glow, %zu shadow; %d threads; BVH build %.1f ms)\n",
-                e.scene.c_str(), benchSettingName(e).c_str(), e.frameMs, c.total(), c.primary,
-                c.secondary, c.glow, c.shadow, threads, e.compileMs);
-    for (const BenchRow& r : rows)
-        if (r.scene == e.scene && r.engine == "glsl" && rayLever(r.lever) == e.lever &&
-            r.numerics == "robust" && r.torusSolver == "robust" && r.width == e.width &&
-            r.height == e.height && r.depth == e.depth && r.shadows)
-            std::printf("  %-5s %-38s / %s: %.2f x\n", e.scene.c_str(), benchSettingName(r).c_str(),
-                        benchSettingName(e).c_str(), r.frameMs / e.frameMs);
 }
 
 }  // namespace

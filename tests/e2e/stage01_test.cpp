@@ -34,7 +34,7 @@ TEST(Stage01, GpuPrimaryRaysMatchTheCameraMaths) {
     ScratchDir dir;
     const int w = 64, h = 48;
     const glm::vec3 eye(0.5f, 1.0f, 4.0f);
-    raylab::Camera cam(raylab::CameraPose{eye, 20.0f, -7.0f}, 40.0f);
+    raylab::Camera cam(raylab::CameraPose{glm::dvec3(eye), 20.0f, -7.0f}, 40.0f);
     const int px = 13, py = 37;
     glm::vec3 center = eye + 30.0f * glm::normalize(cam.rayDirection(px, py, w, h));
     writeFile(dir / "dot.json", "{\"background\": [0, 0, 0], \"camera\": {\"position\": [0.5, 1, "

@@ -293,7 +293,7 @@ TEST(Views, RayDumpHoldsTheGpusPrimaryRays) {
         for (int x = 0; x < w; ++x) {
             const float *o = rays.origin(x, y), *d = rays.dir(x, y);
             for (int c = 0; c < 3; ++c)
-                ASSERT_EQ(o[c], cam.pose().position[c]) << "the origin is the eye";
+                ASSERT_EQ(o[c], float(cam.pose().position[c])) << "the origin is the eye";
             glm::dvec3 dir3(d[0], d[1], d[2]);
             maxLengthError = std::max(maxLengthError, std::fabs(glm::length(dir3) - 1.0));
             PrimaryRay ref = primaryRay(cam, w, h, x, y);

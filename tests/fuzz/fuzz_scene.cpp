@@ -43,9 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& x : s.meshes) {
             check(x.material);
             // Every corner index must point into the mesh's vertices.
-            for (std::uint32_t i : x.mesh.indices)
-                if (i >= x.mesh.positions.size() || i >= x.mesh.normals.size() ||
-                    i >= x.mesh.uvs.size())
+            for (std::uint32_t i : x.indices)
+                if (i >= x.positions.size() || i >= x.normals.size() || i >= x.uvs.size())
                     __builtin_trap();
         }
         for (const auto& m : s.materials)

@@ -86,9 +86,8 @@ TEST(DegenerateNumerics, EyeInsideTheGlassSphereRendersAFullFrameWithoutNaN) {
             glass = int(i);
     ASSERT_GE(glass, 0) << "lite.json has a glass sphere";
     const Sphere& s = scene.spheres[std::size_t(glass)];
-    const CameraPose inside{s.center + s.motion.offsetAt(0.0f) +
-                                glm::vec3(0.1f, 0.05f, 0.2f) * s.radius,
-                            -20.0f, -5.0f};
+    const CameraPose inside{
+        s.center + s.motion.offsetAt(0.0f) + glm::dvec3(0.1, 0.05, 0.2) * s.radius, -20.0f, -5.0f};
     ASSERT_LT(glm::length(inside.position - s.center), s.radius);
     const FrameFigures robust = renderFrame("08-full", scene, inside);
     const FrameFigures naive = renderFrame("08-full", scene, inside, {"RAYLAB_NAIVE_NUMERICS"});

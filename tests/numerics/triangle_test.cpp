@@ -74,11 +74,16 @@ TriangleSoup heightField() {
 
 // The mirror: lite.json's triangles (its rectangle); the cube: the last 12
 // triangles of pro.json (its box; the rectangle comes first).
+// A scene triangle's corners as the GPU gets them (rounded once to float).
+Tri asFloats(const Triangle& t) {
+    return {vec3(t.vertices[0]), vec3(t.vertices[1]), vec3(t.vertices[2])};
+}
+
 TriangleSoup mirror() {
     Scene lite = loadScene(projectRoot() / "assets" / "scenes" / "lite.json");
     TriangleSoup m;
     m.name = "mirror";
-    for (const Triangle& t : lite.triangles) m.triangles.push_back(t.vertices);
+    for (const Triangle& t : lite.triangles) m.triangles.push_back(asFloats(t));
     m.eyes = {{0.0, 3.0, 9.5}, {-5.0, 1.8, -7.0}, {1.0, 1.0, 2.0}, {40.0, 20.0, 80.0}};
     return m;
 }
@@ -88,7 +93,7 @@ TriangleSoup glassCube() {
     TriangleSoup m;
     m.name = "glass cube";
     for (std::size_t i = pro.triangles.size() - 12; i < pro.triangles.size(); ++i)
-        m.triangles.push_back(pro.triangles[i].vertices);
+        m.triangles.push_back(asFloats(pro.triangles[i]));
     dvec3 center(0.0);
     for (const Tri& t : m.triangles)
         for (const vec3& v : t) center += toD(v) / 36.0;

@@ -72,6 +72,32 @@ TEST(Bvh, EveryBoxHoldsItsChildrenAndObjects) {
     EXPECT_EQ(failures, 0) << "boxes that do not hold what is under them";
 }
 
+// The tree is built in double (like the scene) and the GPU reads floats:
+// each packed box is rounded outward, so it still holds its double box.
+// Where float numbers are coarse (the scene 1e5 from the origin, not
+// framed, with fractions) rounding to the nearest float would cut some
+// boxes short, which shows the comparison can fail.
+TEST(Bvh, PackedFloatBoxesHoldTheirDoubleBoxes) {
+    Scene far = proScene();
+    const glm::dvec3 shift(1e5 + 0.35, -1e5 - 0.123, 1e5 + 0.7);
+    for (Sphere& s : far.spheres) s.center += shift;
+    const Bvh bvh = buildBvh(far);
+    const std::vector<float> packed = packedBvhNodes(bvh);
+    int nearestWouldCut = 0;
+    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+        const Aabb& box = bvh.nodes[i].box;
+        for (int c = 0; c < 3; ++c) {
+            const float lo = packed[8 * i + std::size_t(c)],
+                        hi = packed[8 * i + 4 + std::size_t(c)];
+            EXPECT_LE(double(lo), box.lo[c]) << "node " << i;
+            EXPECT_GE(double(hi), box.hi[c]) << "node " << i;
+            nearestWouldCut += double(float(box.lo[c])) > box.lo[c];
+            nearestWouldCut += double(float(box.hi[c])) < box.hi[c];
+        }
+    }
+    EXPECT_GT(nearestWouldCut, 0);
+}
+
 TEST(Bvh, TreeFitsTheGlslStackAndIsBalancedEnough) {
     Bvh bvh = buildBvh(proScene());
     int deepest = 0, leaves = 0;
@@ -96,8 +122,8 @@ TEST(Bvh, AMovingSphereStaysInItsBoxAtEveryTime) {
         Aabb box = sphereBounds(scene, int(i));
         for (int k = 0; k <= 64; ++k) {
             float t = s.motion.periodSeconds * float(k) / 64.0f;
-            glm::vec3 c = s.center + s.motion.offsetAt(t);
-            Aabb at{c - glm::vec3(s.radius), c + glm::vec3(s.radius)};
+            const glm::dvec3 c = s.center + s.motion.offsetAt(t);
+            Aabb at{c - glm::dvec3(s.radius), c + glm::dvec3(s.radius)};
             ASSERT_TRUE(box.contains(at)) << "sphere " << i << " leaves its box at t = " << t;
         }
     }
@@ -133,8 +159,8 @@ TEST(Bvh, EverySphereAndMeshTriangleSitsInExactlyOneLeafOfItsKind) {
     // A triangle and a disc of the scene file's own: the default tree
     // leaves them out (find_closest.glsl tests them in a loop); the tree-all
     // one takes them, which shows the count below can fail.
-    scene.triangles.push_back({{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}, 0});
-    scene.discs.push_back({glm::vec3(0, 2, 0), glm::vec3(0, 1, 0), 0.5f, 0});
+    scene.triangles.push_back({{glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0)}, 0});
+    scene.discs.push_back({glm::dvec3(0, 2, 0), glm::vec3(0, 1, 0), 0.5, 0});
     EXPECT_GT(otherKindLeaves(buildBvh(scene, 2, BvhObjects::AllBounded)), 0);
     Bvh bvh = buildBvh(scene);
     std::vector<int> spheres, triangles;
@@ -176,7 +202,7 @@ TEST(Bvh, LeavesHoldOneKindAndTheCountsAddUp) {
 // builder halves by count where the levels left run short).
 TEST(Bvh, AHugeMeshFitsTheGlslStack) {
     Scene scene;
-    scene.meshes.push_back({"sphere", makeShape("sphere", 350), 0});
+    scene.meshes.push_back(placeMesh("sphere", makeShape("sphere", 350), 1.0, glm::dvec3(0.0), 0));
     ASSERT_GT(meshTriangleCount(scene), 480000u);
     Bvh bvh = buildBvh(scene, 2);
     int deepest = 0;
@@ -209,7 +235,7 @@ TEST(Bvh, ALopsidedMeshIsHalvedRatherThanTooDeep) {
         m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
     }
     Scene scene;
-    scene.meshes.push_back({"line", m, 0});
+    scene.meshes.push_back(placeMesh("line", m, 1.0, glm::dvec3(0.0), 0));
     Bvh bvh;
     ASSERT_NO_THROW(bvh = buildBvh(scene, 1));
     EXPECT_LE(bvh.depth, kBvhMaxDepth);

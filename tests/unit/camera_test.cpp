@@ -73,5 +73,5 @@ TEST(Camera, RayThroughCornerPixelCentre) {
 TEST(Camera, MoveFollowsForwardAndRight) {
     Camera cam(CameraPose{{0, 0, 0}, 90.0f, 0.0f}, 40.0f);  // looking down +x
     cam.move(2.0f, 1.0f);
-    expectNear(cam.pose().position, {2.0f, 0.0f, 1.0f}, "position");
+    expectNear(glm::vec3(cam.pose().position), {2.0f, 0.0f, 1.0f}, "position");
 }

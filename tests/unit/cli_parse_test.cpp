@@ -18,9 +18,9 @@ TEST(CliParse, Size) {
 
 TEST(CliParse, Camera) {
     CameraPose p = parseCamera("1,2.5,-3,90,-10");
-    EXPECT_FLOAT_EQ(p.position.x, 1.0f);
-    EXPECT_FLOAT_EQ(p.position.y, 2.5f);
-    EXPECT_FLOAT_EQ(p.position.z, -3.0f);
+    EXPECT_DOUBLE_EQ(p.position.x, 1.0);
+    EXPECT_DOUBLE_EQ(p.position.y, 2.5);
+    EXPECT_DOUBLE_EQ(p.position.z, -3.0);
     EXPECT_FLOAT_EQ(p.yawDeg, 90.0f);
     EXPECT_FLOAT_EQ(p.pitchDeg, -10.0f);
     for (const char* bad : {"", "1,2,3,4", "1,2,3,4,5,6", "1,2,3,4,", "a,2,3,4,5", "1,,3,4,5",

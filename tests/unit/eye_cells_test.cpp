@@ -90,13 +90,15 @@ void expectConservative(const std::string& name, const Scene& scene, glm::vec3 e
 TEST(EyeCells, EverySphereARayMeetsIsInItsCell) {
     for (const char* name : {"pro", "lite"}) {
         const Scene scene = demoScene(name);
-        expectConservative(std::string(name) + " from its camera", scene, scene.camera.position);
+        expectConservative(std::string(name) + " from its camera", scene,
+                           glm::vec3(scene.camera.position));
     }
     // An eye among the spheres, and one inside a sphere (every cell lists it).
     const Scene pro = demoScene("pro");
-    expectConservative("pro from a sphere's side", pro,
-                       pro.spheres[3].center + glm::vec3(0.0f, 0.0f, 1.5f * pro.spheres[3].radius));
-    expectConservative("pro from inside a sphere", pro, pro.spheres[0].center);
+    expectConservative(
+        "pro from a sphere's side", pro,
+        glm::vec3(pro.spheres[3].center + glm::dvec3(0.0, 0.0, 1.5 * pro.spheres[3].radius)));
+    expectConservative("pro from inside a sphere", pro, glm::vec3(pro.spheres[0].center));
 }
 
 // The margins are shares of the scene's size and of the eye's distance from
@@ -107,12 +109,13 @@ TEST(EyeCells, EverySphereARayMeetsIsInItsCellAtAnyScaleAndPlace) {
         SceneTransform t;
         t.scale = scale;
         const Scene scaled = transformScene(pro, t);
-        expectConservative("pro x " + std::to_string(scale), scaled, scaled.camera.position);
+        expectConservative("pro x " + std::to_string(scale), scaled,
+                           glm::vec3(scaled.camera.position));
     }
     SceneTransform far;
     far.offset = glm::dvec3(1e5, 0.0, 0.0);
     const Scene moved = transformScene(pro, far);
-    expectConservative("pro moved by 1e5", moved, moved.camera.position);
+    expectConservative("pro moved by 1e5", moved, glm::vec3(moved.camera.position));
 }
 
 // The audit can fail: lists built for spheres 10% smaller, around an eye
@@ -120,9 +123,9 @@ TEST(EyeCells, EverySphereARayMeetsIsInItsCellAtAnyScaleAndPlace) {
 // the wrong grid, miss spheres.
 TEST(EyeCells, WrongCellsAreCaught) {
     const Scene pro = demoScene("pro");
-    const glm::vec3 eye = pro.camera.position;
+    const glm::vec3 eye(pro.camera.position);
     Scene smaller = pro;
-    for (Sphere& s : smaller.spheres) s.radius *= 0.9f;
+    for (Sphere& s : smaller.spheres) s.radius *= 0.9;
     EyeCells shrunk = buildEyeCells(smaller, eye);
     const Audit a = audit(pro, shrunk, kEyeCellResolution, 2);
     std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld hits missing\n", a.missing,

@@ -25,8 +25,8 @@ std::vector<std::size_t> cubeTriangles(const Scene& scene) {
     std::vector<std::size_t> cube;
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
         bool near = true;
-        for (glm::vec3 v : scene.triangles[i].vertices)
-            near = near && glm::length(v - scene.tori[0].center) < 1.6f;
+        for (const glm::dvec3& v : scene.triangles[i].vertices)
+            near = near && glm::length(v - scene.tori[0].center) < 1.6;
         if (near) cube.push_back(i);
     }
     return cube;
@@ -51,23 +51,23 @@ TEST(HiddenTori, AnyGapKeepsTheTorus) {
     EXPECT_FALSE(toriHiddenFromLights(open)) << "an open shell";
 
     Scene dented = pro();
-    const glm::vec3 centre = dented.tori[0].center;  // the cube's centre too
-    const glm::vec3 corner = dented.triangles[cube[0]].vertices[0];
+    const glm::dvec3 centre = dented.tori[0].center;  // the cube's centre too
+    const glm::dvec3 corner = dented.triangles[cube[0]].vertices[0];
     for (Triangle& t : dented.triangles)  // one corner pushed halfway in, everywhere it is shared
-        for (glm::vec3& v : t.vertices)
-            if (v == corner) v = 0.5f * (v + centre);
+        for (glm::dvec3& v : t.vertices)
+            if (v == corner) v = 0.5 * (v + centre);
     EXPECT_FALSE(toriHiddenFromLights(dented)) << "a shell that is not convex";
 
     Scene torusOut = pro();
-    torusOut.tori[0].center.y += 10.0f;
+    torusOut.tori[0].center.y += 10.0;
     EXPECT_FALSE(toriHiddenFromLights(torusOut)) << "the torus outside the cube";
 
     Scene torusLarge = pro();
-    torusLarge.tori[0].majorRadius *= 3.0f;
+    torusLarge.tori[0].majorRadius *= 3.0;
     EXPECT_FALSE(toriHiddenFromLights(torusLarge)) << "a torus through the cube's faces";
 
     Scene lightIn = pro();
-    lightIn.lights[1].position = lightIn.tori[0].center + glm::vec3(0.0f, 0.7f, 0.0f);
+    lightIn.lights[1].position = lightIn.tori[0].center + glm::dvec3(0.0, 0.7, 0.0);
     EXPECT_FALSE(toriHiddenFromLights(lightIn)) << "a light inside the cube";
 
     Scene none = pro();

@@ -81,7 +81,7 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
         const glm::vec3 point(p);
         const double time = 10.0 * (0.5 + 0.5 * unit(rng));
         for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-            const glm::vec3 toLight = scene.lights[l].position - point;
+            const glm::vec3 toLight = glm::vec3(scene.lights[l].position) - point;
             const float distance = glm::length(toLight);
             if (distance <= 0.0f) continue;
             const glm::vec3 dir = toLight / distance;  // as the GLSL forms it
@@ -95,15 +95,19 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
                        endTriangle = firstTriangle + list.w;
             for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
                 const auto& v = scene.triangles[i].vertices;
-                if (!segmentMeetsTriangle(origin, dir, distance, v[0], v[1], v[2])) continue;
+                if (!segmentMeetsTriangle(glm::dvec3(origin), glm::dvec3(dir), distance, v[0], v[1],
+                                          v[2]))
+                    continue;
                 ++a.blockedRays;
                 ++a.blockedByTriangles;
                 if (std::find(firstTriangle, endTriangle, int(i)) == endTriangle) ++a.missing;
             }
             for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
                 const Sphere& s = scene.spheres[i];
-                const glm::dvec3 centre = glm::dvec3(s.center + s.motion.offsetAt(float(time)));
-                if (!segmentMeetsSphere(origin, dir, distance, centre, s.radius)) continue;
+                const glm::dvec3 centre = s.center + s.motion.offsetAt(float(time));
+                if (!segmentMeetsSphere(glm::dvec3(origin), glm::dvec3(dir), distance, centre,
+                                        s.radius))
+                    continue;
                 ++a.blockedRays;
                 if (std::find(first, end, int(i)) == end) ++a.missing;
             }
@@ -162,14 +166,14 @@ TEST(LightBuffer, ProsListsAreShort) {
 TEST(LightBuffer, AWrongBufferIsCaught) {
     const Scene pro = demoScene("pro");
     Scene smaller = pro;
-    for (Sphere& s : smaller.spheres) s.radius *= 0.9f;
+    for (Sphere& s : smaller.spheres) s.radius *= 0.9;
     const Audit shrunk = audit(pro, buildLightBuffer(smaller), kLightBufferResolution, 2);
     std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld blocked rays missing\n",
                 shrunk.missing, shrunk.blockedRays);
     EXPECT_GT(shrunk.missing, 0);
     Scene movedTriangles = pro;
     for (Triangle& t : movedTriangles.triangles)
-        for (glm::vec3& v : t.vertices) v.x += 3.0f;
+        for (glm::dvec3& v : t.vertices) v.x += 3.0;
     const Audit triangles = audit(pro, buildLightBuffer(movedTriangles), kLightBufferResolution, 4);
     std::printf("[ figure ] lists of triangles moved 3 along x: %ld of %ld blocked rays missing\n",
                 triangles.missing, triangles.blockedRays);

@@ -55,13 +55,13 @@ TEST(SceneMeshes, AnObjFileIsPlacedScaledAndKeepsNormalsAndUvs) {
     Scene s = load(dir, sceneWith(R"([{"file": "quad.obj", "translate": [1, 2, 3], "scale": 2,
                                       "material": "clay"}])"));
     ASSERT_EQ(s.meshes.size(), 1u);
-    const Mesh& m = s.meshes[0].mesh;
+    const MeshObject& m = s.meshes[0];
     EXPECT_EQ(m.triangleCount(), 2u);
     EXPECT_EQ(meshTriangleCount(s), 2u);
     EXPECT_EQ(s.meshes[0].material, 0);
     // (1, 1, 0) * 2 + (1, 2, 3)
     bool found = false;
-    for (const glm::vec3& p : m.positions) found = found || p == glm::vec3(3, 4, 3);
+    for (const glm::dvec3& p : m.positions) found = found || p == glm::dvec3(3, 4, 3);
     EXPECT_TRUE(found) << "the corner (1, 1, 0) should be at (3, 4, 3)";
     for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
     ASSERT_EQ(m.uvs.size(), m.positions.size());

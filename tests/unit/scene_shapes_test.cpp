@@ -38,7 +38,7 @@ std::string errorFor(const std::string& text) {
 }
 
 // The unit normal of a triangle from its corners, counter-clockwise = front.
-glm::vec3 normalOf(const Triangle& t) {
+glm::dvec3 normalOf(const Triangle& t) {
     return glm::normalize(glm::cross(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0]));
 }
 
@@ -53,7 +53,7 @@ TEST(SceneShapes, PlanesAndDiscsHaveUnitNormals) {
                                     "discs": [{"center": [1, 2, 3], "normal": [0, 0, -5], "radius": 0.5, "material": "m"}])"));
     ASSERT_EQ(s.planes.size(), 1u);
     EXPECT_FLOAT_EQ(s.planes[0].normal.y, 1.0f);
-    EXPECT_FLOAT_EQ(s.planes[0].tileSize, 3.0f);
+    EXPECT_DOUBLE_EQ(s.planes[0].tileSize, 3.0);
     ASSERT_EQ(s.discs.size(), 1u);
     EXPECT_FLOAT_EQ(s.discs[0].normal.z, -1.0f);
 }
@@ -76,10 +76,10 @@ TEST(SceneShapes, ABoxIsTwelveTrianglesAllFacingOutward) {
         sceneWith(
             R"("boxes": [{"center": [1, 2, 3], "size": [2, 4, 6], "rotation_y": 30, "material": "m"}])"));
     ASSERT_EQ(s.triangles.size(), 12u);
-    const glm::vec3 center(1, 2, 3);
+    const glm::dvec3 center(1, 2, 3);
     for (const Triangle& t : s.triangles) {
-        glm::vec3 mid = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0f;
-        EXPECT_GT(glm::dot(normalOf(t), mid - center), 0.0f) << "a face points into the box";
+        const glm::dvec3 mid = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
+        EXPECT_GT(glm::dot(normalOf(t), mid - center), 0.0) << "a face points into the box";
     }
 }
 

@@ -48,11 +48,28 @@ TEST(Scene, LoadsAGoodFile) {
     writeFile(dir / "scene.json", kGood);
     Scene s = loadScene(dir / "scene.json");
     ASSERT_EQ(s.spheres.size(), 2u);
-    EXPECT_FLOAT_EQ(s.spheres[1].radius, 0.5f);
+    EXPECT_DOUBLE_EQ(s.spheres[1].radius, 0.5);
     EXPECT_FLOAT_EQ(s.fovYDeg, 50.0f);
     EXPECT_FLOAT_EQ(s.camera.yawDeg, 10.0f);
     EXPECT_NEAR(s.spheres[1].motion.offsetAt(1.0f).y, 2.0f,
                 1e-5f);  // a quarter period: full amplitude
+}
+
+// Positions and lengths are read in double: a scene 1e6 from the origin
+// keeps its centimetres (1000000.35 is 1000000.375 as a float), and so does
+// a camera given there.
+TEST(Scene, PositionsAndLengthsKeepEveryDigitOfTheFile) {
+    ScratchDir dir;
+    std::string text = replaced("\"center\": [2, 1, 0], \"radius\": 0.5",
+                                "\"center\": [1000000.35, -999999.7, 0.1], \"radius\": 1e-7");
+    const std::string eye = "\"position\": [0, 1, 5]";
+    text.replace(text.find(eye), eye.size(), "\"position\": [1000000.35, 1, 1000005.1]");
+    writeFile(dir / "scene.json", text);
+    const Scene s = loadScene(dir / "scene.json");
+    EXPECT_EQ(s.spheres[1].center, glm::dvec3(1000000.35, -999999.7, 0.1));
+    EXPECT_EQ(s.spheres[1].radius, 1e-7);
+    EXPECT_EQ(s.camera.position, glm::dvec3(1000000.35, 1.0, 1000005.1));
+    EXPECT_NE(double(float(1000000.35)), 1000000.35) << "the case needs a number no float holds";
 }
 
 TEST(Scene, TheShippedScenesLoad) {

@@ -12,8 +12,8 @@ using namespace raylab;
 
 namespace {
 
-Triangle triangle(glm::vec3 offset, int material) {
-    return {{offset, offset + glm::vec3(1, 0, 0), offset + glm::vec3(0, 1, 0)}, material};
+Triangle triangle(glm::dvec3 offset, int material) {
+    return {{offset, offset + glm::dvec3(1, 0, 0), offset + glm::dvec3(0, 1, 0)}, material};
 }
 
 }  // namespace
@@ -34,19 +34,19 @@ TEST(TriangleGroups, ProHasTheMirrorAndTheCube) {
 TEST(TriangleGroups, GroupsCoverTheTrianglesInOrderWithExactBoxes) {
     Scene scene;
     for (int i = 0; i < 30; ++i)
-        scene.triangles.push_back(triangle(glm::vec3(float(i), float(i % 7), -float(i % 3)),
-                                           i < 5 ? 0 : (i < 7 ? 1 : 2)));
+        scene.triangles.push_back(
+            triangle(glm::dvec3(i, i % 7, -(i % 3)), i < 5 ? 0 : (i < 7 ? 1 : 2)));
     std::vector<TriangleGroup> groups = triangleGroups(scene);
     int next = 0;
     for (const TriangleGroup& g : groups) {
         EXPECT_EQ(g.first, next);
         EXPECT_GE(g.count, 1);
         EXPECT_LE(g.count, kTriangleGroupMax);
-        glm::vec3 lo(1e30f), hi(-1e30f);
+        glm::dvec3 lo(1e30), hi(-1e30);
         for (int i = g.first; i < g.first + g.count; ++i) {
             EXPECT_EQ(scene.triangles[std::size_t(i)].material,
                       scene.triangles[std::size_t(g.first)].material);
-            for (glm::vec3 p : scene.triangles[std::size_t(i)].vertices) {
+            for (const glm::dvec3& p : scene.triangles[std::size_t(i)].vertices) {
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
             }

@@ -5,6 +5,7 @@
 #include "embree_caster.h"
 
 #include "error.h"
+#include "gpu_values.h"
 #include "reference_intersect.h"
 #include "shader_constants.h"
 
@@ -202,9 +203,9 @@ EmbreeCaster::EmbreeCaster(const Scene& s) : impl_(std::make_unique<Impl>()) {
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
             g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), s.spheres.size()));
         for (std::size_t i = 0; i < s.spheres.size(); ++i) {
-            const glm::vec3 c = s.spheres[i].center + s.spheres[i].motion.offsetAt(0.0f);
+            const glm::vec4 c = gpuSphere(s.spheres[i], 0.0f);
             v[4 * i] = c.x, v[4 * i + 1] = c.y, v[4 * i + 2] = c.z;
-            v[4 * i + 3] = s.spheres[i].radius;
+            v[4 * i + 3] = c.w;
         }
         m.attach(g, shader::kSphere);
     }
@@ -218,7 +219,7 @@ EmbreeCaster::EmbreeCaster(const Scene& s) : impl_(std::make_unique<Impl>()) {
                                     3 * sizeof(unsigned), s.triangles.size()));
         for (std::size_t i = 0; i < s.triangles.size(); ++i)
             for (int k = 0; k < 3; ++k) {
-                const glm::vec3& p = s.triangles[i].vertices[std::size_t(k)];
+                const glm::vec3 p = gpuPoint(s.triangles[i].vertices[std::size_t(k)]);
                 v[9 * i + 3 * std::size_t(k)] = p.x;
                 v[9 * i + 3 * std::size_t(k) + 1] = p.y;
                 v[9 * i + 3 * std::size_t(k) + 2] = p.z;
@@ -228,8 +229,8 @@ EmbreeCaster::EmbreeCaster(const Scene& s) : impl_(std::make_unique<Impl>()) {
     }
     std::size_t meshTriangles = 0, meshCorners = 0;
     for (const MeshObject& mesh : s.meshes) {
-        meshTriangles += mesh.mesh.triangleCount();
-        meshCorners += mesh.mesh.positions.size();
+        meshTriangles += mesh.triangleCount();
+        meshCorners += mesh.positions.size();
     }
     if (meshTriangles > 0) {
         // Every mesh's triangles in one geometry, in the order the GLSL and
@@ -241,23 +242,26 @@ EmbreeCaster::EmbreeCaster(const Scene& s) : impl_(std::make_unique<Impl>()) {
             g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), meshTriangles));
         std::size_t corner = 0, index = 0;
         for (const MeshObject& mesh : s.meshes) {
-            for (const glm::vec3& p : mesh.mesh.positions) {
+            for (const glm::dvec3& d : mesh.positions) {
+                const glm::vec3 p = gpuPoint(d);
                 v[3 * corner] = p.x, v[3 * corner + 1] = p.y, v[3 * corner + 2] = p.z;
                 ++corner;
             }
-            const std::size_t base = corner - mesh.mesh.positions.size();
-            for (std::uint32_t i : mesh.mesh.indices) idx[index++] = unsigned(base + i);
+            const std::size_t base = corner - mesh.positions.size();
+            for (std::uint32_t i : mesh.indices) idx[index++] = unsigned(base + i);
         }
         m.attach(g, shader::kMesh);
     }
     for (const Plane& p : s.planes) {
-        const glm::dvec3 n(p.normal);
-        m.planes.push_back({n, glm::dot(n, glm::dvec3(p.point))});
+        m.planes.push_back({glm::dvec3(p.normal), double(gpuPlane(p).w)});
     }
-    for (const Disc& d : s.discs)
-        m.discs.push_back({glm::dvec3(d.center), glm::dvec3(d.normal), double(d.radius)});
+    for (const Disc& d : s.discs) {
+        const glm::vec4 g = gpuDisc(d);
+        m.discs.push_back({glm::dvec3(glm::vec3(g)), glm::dvec3(d.normal), double(g.w)});
+    }
     for (const Torus& t : s.tori)
-        m.tori.push_back({glm::dvec3(t.center), double(t.majorRadius), double(t.minorRadius),
+        m.tori.push_back({glm::dvec3(gpuPoint(t.center)), double(float(t.majorRadius)),
+                          double(float(t.minorRadius)),
                           reference::torusToLocal(glm::normalize(glm::dvec3(t.axisAt(0.0f))))});
     m.addUser(m.planes, shader::kPlane);
     m.addUser(m.discs, shader::kDisc);

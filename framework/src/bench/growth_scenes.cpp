@@ -11,7 +11,7 @@ Scene growthBaseScene(const std::string& name) {
     Scene s;
     s.file = name;
     s.background = glm::vec3(0.62f, 0.76f, 0.93f);
-    s.camera.position = glm::vec3(0.0f, 0.4f, 3.6f);
+    s.camera.position = glm::dvec3(0.0, 0.4, 3.6);
     s.camera.pitchDeg = -6.0f;
     s.fovYDeg = 45.0f;
     Material clay;
@@ -25,9 +25,9 @@ Scene growthBaseScene(const std::string& name) {
     floor.ambient = glm::vec3(0.06f);
     floor.diffuse = glm::vec3(0.55f, 0.52f, 0.45f);
     s.materials.push_back(floor);
-    s.lights.push_back({glm::vec3(-4.0f, 6.0f, 5.0f), glm::vec3(0.9f)});
+    s.lights.push_back({glm::dvec3(-4.0, 6.0, 5.0), glm::vec3(0.9f)});
     Plane p;
-    p.point = glm::vec3(0.0f, -1.05f, 0.0f);
+    p.point = glm::dvec3(0.0, -1.05, 0.0);
     p.material = 1;
     s.planes.push_back(p);
     return s;
@@ -39,7 +39,7 @@ Scene growthMeshScene(long wanted) {
     Mesh mesh = makeShape("sphere", detail);
     Scene s = growthBaseScene("growth: sphere mesh, " + std::to_string(mesh.triangleCount()) +
                               " triangles");
-    s.meshes.push_back({"sphere", std::move(mesh), 0});
+    s.meshes.push_back(placeMesh("sphere", std::move(mesh), 1.0, glm::dvec3(0.0), 0));
     return s;
 }
 

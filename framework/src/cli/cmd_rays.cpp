@@ -32,8 +32,8 @@ int cmdRays(const StageOptions& options, const std::string& outFile, Backend bac
     dump.width = w;
     dump.height = h;
     dump.records.resize(std::size_t(w) * std::size_t(h) * 6);
-    const glm::vec3 eye =
-        setup.camera.pose().position;  // the camera in the scene's own coordinates
+    // The camera in the scene's own coordinates (the file format holds floats).
+    const glm::vec3 eye(setup.camera.pose().position);
     for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
         float* r = &dump.records[6 * i];
         r[0] = eye.x, r[1] = eye.y, r[2] = eye.z;

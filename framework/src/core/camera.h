@@ -7,9 +7,9 @@
 namespace raylab {
 
 struct CameraPose {
-    glm::vec3 position{0.0f};
-    float yawDeg = 0.0f;    // 0 looks down -z, 90 looks down +x
-    float pitchDeg = 0.0f;  // positive looks up; kept within +-kMaxPitchDeg
+    glm::dvec3 position{0.0};  // double, like a scene's positions (scene.h)
+    float yawDeg = 0.0f;       // 0 looks down -z, 90 looks down +x
+    float pitchDeg = 0.0f;     // positive looks up; kept within +-kMaxPitchDeg
 };
 
 class Camera {

@@ -25,14 +25,14 @@ Size parseSize(const std::string& text) {
 CameraPose parseCamera(const std::string& text) {
     const std::string usage =
         "--camera '" + text + "': expected x,y,z,yaw,pitch (numbers; angles in degrees)";
-    std::vector<float> v;
+    std::vector<double> v;  // the position in double, like a scene file's
     std::stringstream in(text);
     std::string part;
     while (std::getline(in, part, ',')) {
         char* end = nullptr;
-        float f = std::strtof(part.c_str(), &end);
+        const double f = std::strtod(part.c_str(), &end);
         if (part.empty() || end == part.c_str() || *end != '\0' || !std::isfinite(f) ||
-            std::fabs(f) > 1e7f)
+            std::fabs(f) > 1e7)
             throw Error(usage);
         v.push_back(f);
     }
@@ -40,7 +40,7 @@ CameraPose parseCamera(const std::string& text) {
     if (std::fabs(v[4]) > Camera::kMaxPitchDeg)
         throw Error("--camera '" + text + "': pitch must lie within +-" +
                     std::to_string(int(Camera::kMaxPitchDeg)) + " degrees");
-    return CameraPose{{v[0], v[1], v[2]}, v[3], v[4]};
+    return CameraPose{{v[0], v[1], v[2]}, float(v[3]), float(v[4])};
 }
 
 double parseSceneScale(const std::string& text) {

@@ -16,10 +16,14 @@ const json& JsonReader::member(const json& obj, const std::string& where, const 
 }
 
 float JsonReader::number(const json& v, const std::string& where) const {
+    return float(real(v, where));
+}
+
+double JsonReader::real(const json& v, const std::string& where) const {
     if (!v.is_number()) fail(where, "expected a number");
     double d = v.get<double>();
     if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(where, "number out of range");
-    return float(d);
+    return d;
 }
 
 std::string JsonReader::string(const json& v, const std::string& where) const {
@@ -62,6 +66,20 @@ glm::vec3 JsonReader::vec3(const json& v, const std::string& where) const {
     return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
 }
 
+double JsonReader::length(const json& v, const std::string& where) const {
+    const double d = real(v, where);
+    if (!(d > 0.0)) fail(where, "expected a positive number");
+    // Positions and lengths meet floats on the GPU; a length no float holds
+    // would vanish there.
+    if (d < 1e-30) fail(where, "number out of range");
+    return d;
+}
+
+glm::dvec3 JsonReader::point(const json& v, const std::string& where) const {
+    if (!v.is_array() || v.size() != 3) fail(where, "expected [x, y, z]");
+    return {real(v[0], where + "[0]"), real(v[1], where + "[1]"), real(v[2], where + "[2]")};
+}
+
 glm::vec3 JsonReader::direction(const json& v, const std::string& where) const {
     glm::vec3 d = vec3(v, where);
     float length = glm::length(d);
@@ -81,7 +99,7 @@ SceneCamera readSceneCamera(const JsonReader& r, const json& doc) {
     SceneCamera c;
     const json& cam = r.member(doc, "scene", "camera");
     r.allowOnly(cam, "camera", {"position", "yaw", "pitch", "fov_y"});
-    c.pose.position = r.vec3(r.member(cam, "camera", "position"), "camera.position");
+    c.pose.position = r.point(r.member(cam, "camera", "position"), "camera.position");
     c.pose.yawDeg = r.number(r.member(cam, "camera", "yaw"), "camera.yaw");
     c.pose.pitchDeg = r.number(r.member(cam, "camera", "pitch"), "camera.pitch");
     if (cam.contains("fov_y")) {

@@ -27,6 +27,9 @@ struct JsonReader {
     const json& member(const json& obj, const std::string& where, const char* key) const;
     // A finite number within +-1e30, as a float.
     float number(const json& v, const std::string& where) const;
+    // The same number in double precision: a scene's positions and lengths
+    // (1e6 + 0.35 is no float).
+    double real(const json& v, const std::string& where) const;
     std::string string(const json& v, const std::string& where) const;
     // Fails on a key that is not in KNOWN (or "comment"): a typo such as
     // "tile_szie" must not be dropped silently.
@@ -37,6 +40,9 @@ struct JsonReader {
 
     float positive(const json& v, const std::string& where) const;
     glm::vec3 vec3(const json& v, const std::string& where) const;
+    // Double precision: a length (positive, at least 1e-30) and a position.
+    double length(const json& v, const std::string& where) const;
+    glm::dvec3 point(const json& v, const std::string& where) const;
     glm::vec3 direction(const json& v, const std::string& where) const;  // normalised, not zero
     glm::vec3 color(const json& v, const std::string& where) const;      // components in [0, 1]
 };

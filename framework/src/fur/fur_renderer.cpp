@@ -180,10 +180,11 @@ void FurRenderer::drawStrands(const Frame& f) {
 
 FurRenderer::Frame FurRenderer::frameFor(const Camera& camera, float timeSeconds,
                                          const RenderSettings& settings) const {
-    const CameraPose& pose = camera.pose();
+    // Fur draws in float: a fur scene's model sits at the origin.
+    const glm::vec3 eye(camera.pose().position);
     Frame f;
     f.model = scene_.modelMatrix(timeSeconds);
-    f.view = glm::lookAt(pose.position, pose.position + camera.forward(), camera.up());
+    f.view = glm::lookAt(eye, eye + camera.forward(), camera.up());
     const float furLength = scene_.fur.length * settings.furLength;
     // The bounding sphere in world space: the model's largest scale, and the
     // fur (bent strands reach at most (1 + gravity) of its length out).
@@ -192,12 +193,12 @@ FurRenderer::Frame FurRenderer::frameFor(const Camera& camera, float timeSeconds
         std::max({glm::length(glm::vec3(f.model[0])), glm::length(glm::vec3(f.model[1])),
                   glm::length(glm::vec3(f.model[2]))});
     const float radius = boundsRadius_ * scale + furLength * (1.0f + scene_.fur.gravity) * 1.05f;
-    const float distance = glm::length(pose.position - centre);
+    const float distance = glm::length(eye - centre);
     const float far = distance + radius;
     const float near = std::max(far * kNearShareOfFar, distance - radius);
     f.projection = glm::perspective(glm::radians(camera.fovYDeg()),
                                     float(target_->width()) / float(target_->height()), near, far);
-    f.eye = pose.position;
+    f.eye = eye;
     f.time = timeSeconds;
     f.furLength = furLength;
     f.settings = settings;

@@ -1,6 +1,7 @@
 #include "sphere_blocks.h"
 
 #include "error.h"
+#include "gpu_values.h"
 
 #include <algorithm>
 
@@ -63,7 +64,7 @@ SphereBlocks::SphereBlocks(const Scene& scene, int slots, bool storage)
     firstMoving_ = spheres_.size();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const Sphere& s = spheres_[i];
-        centres_[i] = glm::vec4(s.center + s.motion.offsetAt(shownTime_), s.radius);
+        centres_[i] = gpuSphere(s, shownTime_);
         colours[i] = glm::vec4(scene.materials[std::size_t(s.material)].diffuse, 0.0f);
         materials[i].x = s.material;
         if (s.motion.amplitude != 0.0f) {
@@ -106,7 +107,7 @@ void SphereBlocks::moveTo(float t) {
     shownTime_ = t;
     for (std::size_t i = firstMoving_; i < endMoving_; ++i) {
         const Sphere& s = spheres_[i];
-        centres_[i] = glm::vec4(s.center + s.motion.offsetAt(t), s.radius);
+        centres_[i] = gpuSphere(s, t);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, buffers_[0]);
     glBufferSubData(GL_UNIFORM_BUFFER, GLintptr(firstMoving_ * kSphereBlockStride),

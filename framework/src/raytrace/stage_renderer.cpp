@@ -1,6 +1,7 @@
 #include "stage_renderer.h"
 
 #include "error.h"
+#include "gpu_values.h"
 #include "paths.h"
 #include "triangle_groups.h"
 
@@ -158,7 +159,7 @@ void StageRenderer::uploadSceneConstants() {
     // Point lights.
     std::vector<glm::vec3> lightPositions, lightColors;
     for (const PointLight& l : scene_.lights) {
-        lightPositions.push_back(l.position);
+        lightPositions.push_back(gpuPoint(l.position));
         lightColors.push_back(l.color);
     }
     glUniform1i(p.uniform("uLightCount"), GLint(lightPositions.size()));
@@ -173,8 +174,8 @@ void StageRenderer::uploadStaticShapes() {
     std::vector<GLfloat> tiles;
     std::vector<GLint> planeMaterial;
     for (const Plane& pl : scene_.planes) {
-        planes.emplace_back(pl.normal, glm::dot(pl.normal, pl.point));
-        tiles.push_back(pl.tileSize);
+        planes.push_back(gpuPlane(pl));
+        tiles.push_back(float(pl.tileSize));
         planeMaterial.push_back(pl.material);
     }
     glUniform1i(p.uniform("uPlaneCount"), GLint(planes.size()));
@@ -186,7 +187,7 @@ void StageRenderer::uploadStaticShapes() {
     std::vector<glm::vec3> discNormals;
     std::vector<GLint> discMaterial;
     for (const Disc& d : scene_.discs) {
-        discs.emplace_back(d.center, d.radius);
+        discs.push_back(gpuDisc(d));
         discNormals.push_back(d.normal);
         discMaterial.push_back(d.material);
     }
@@ -198,7 +199,7 @@ void StageRenderer::uploadStaticShapes() {
     std::vector<glm::vec3> vertices;
     std::vector<GLint> triangleMaterial;
     for (const Triangle& t : scene_.triangles) {
-        vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
+        for (const glm::dvec3& v : t.vertices) vertices.push_back(gpuPoint(v));
         triangleMaterial.push_back(t.material);
     }
     glUniform1i(p.uniform("uTriangleCount"), GLint(triangleMaterial.size()));
@@ -206,8 +207,8 @@ void StageRenderer::uploadStaticShapes() {
     setIntArray(p, "uTriangleMaterial", triangleMaterial);
     std::vector<glm::vec4> groupLow, groupHigh;
     for (const TriangleGroup& g : triangleGroups(scene_)) {
-        groupLow.emplace_back(g.lo, float(g.first));
-        groupHigh.emplace_back(g.hi, float(g.count));
+        groupLow.emplace_back(gpuPoint(g.lo), float(g.first));
+        groupHigh.emplace_back(gpuPoint(g.hi), float(g.count));
     }
     glUniform1i(p.uniform("uTriangleGroupCount"), GLint(groupLow.size()));
     setVec4Array(p, "uTriangleGroupLow", groupLow);
@@ -217,8 +218,8 @@ void StageRenderer::uploadStaticShapes() {
     std::vector<GLfloat> minor;
     std::vector<GLint> torusMaterial;
     for (const Torus& t : scene_.tori) {
-        tori.emplace_back(t.center, t.majorRadius);
-        minor.push_back(t.minorRadius);
+        tori.push_back(gpuTorus(t));
+        minor.push_back(float(t.minorRadius));
         torusMaterial.push_back(t.material);
     }
     glUniform1i(p.uniform("uTorusCount"), GLint(tori.size()));
@@ -233,8 +234,9 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
     target_->clear(0, 0, 0);
     const ShaderProgram& p = *program_;
     p.use();
-    // The eye moves with the scene into the shaders' frame; directions stay.
-    const glm::vec3 eye = frame_.point(camera.pose().position);
+    // The eye moves with the scene into the shaders' frame (in double, then
+    // rounded once); directions stay.
+    const glm::vec3 eye = gpuPoint(frame_.point(camera.pose().position));
     glUniform3fv(p.uniform("uEye"), 1, glm::value_ptr(eye));
     glUniform3fv(p.uniform("uForward"), 1, glm::value_ptr(camera.forward()));
     glUniform3fv(p.uniform("uRight"), 1, glm::value_ptr(camera.right()));

@@ -6,6 +6,7 @@
 // error(). Students need not read this file.
 #include "embind_support.h"
 #include "error.h"
+#include "gpu_values.h"
 #include "web_fur_stage.h"
 #include "web_ray_stage.h"
 
@@ -25,6 +26,7 @@ namespace raylab {
 namespace {
 
 json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
+json vec3Json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }  // a scene's positions
 
 // A ray-tracing stage for the page (web_ray_stage.h).
 class RayStage {
@@ -95,10 +97,11 @@ public:
     val meshCorners() const { return typedArray("Float32Array", stage_->meshCorners); }
     val meshMaterials() const { return typedArray("Int32Array", stage_->meshMaterials); }
 
-    // The eye (scene file units) in the shaders' frame; rebuilds the eye
-    // cells when it moved (then bvhItems() and eyeCells() change).
-    val placeEye(float x, float y, float z) {
-        const glm::vec3 eye = stage_->frame().point(glm::vec3(x, y, z));
+    // The eye (scene file units, double: JavaScript's numbers) in the
+    // shaders' frame, moved there in double and rounded once; rebuilds the
+    // eye cells when it moved (then bvhItems() and eyeCells() change).
+    val placeEye(double x, double y, double z) {
+        const glm::vec3 eye = gpuPoint(stage_->frame().point(glm::dvec3(x, y, z)));
         const bool moved = stage_->moveEye(eye);
         val out = val::object();
         out.set("eye", typedArray("Float32Array", std::vector<float>{eye.x, eye.y, eye.z}));

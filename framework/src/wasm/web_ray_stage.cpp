@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "eye_cells.h"
+#include "gpu_values.h"
 #include "light_buffer.h"
 #include "paths.h"
 #include "shader_source.h"
@@ -95,9 +96,8 @@ std::vector<float> WebRayStage::sphereCentres(float t) const {
     std::vector<float> out(4 * std::max<std::size_t>(1, scene_.spheres.size()), 0.0f);
     for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
         const Sphere& s = scene_.spheres[i];
-        const glm::vec3 c = s.center + s.motion.offsetAt(t);
-        std::copy_n(&c.x, 3, &out[4 * i]);
-        out[4 * i + 3] = s.radius;
+        const glm::vec4 c = gpuSphere(s, t);  // as the native renderer's blocks hold it
+        std::copy_n(&c.x, 4, &out[4 * i]);
     }
     return out;
 }

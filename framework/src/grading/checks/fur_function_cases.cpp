@@ -152,11 +152,13 @@ FunctionSpec silhouetteSpec() {
     const dvec3 eyes[] = {{0, 0, 3}, {2.5, 1.0, 0.5}, {-0.3, -2.8, 1.1}};
     for (const dvec3& eye : eyes)
         for (std::size_t e = 0; e + 3 < adj.indices.size(); e += 4 * 7)
-            s.cases.push_back(edgeCase(
-                "sphere edge " + std::to_string(e / 4) + " from (" + caseNumber(eye.x) + ", " +
-                    caseNumber(eye.y) + ", " + caseNumber(eye.z) + ")",
-                eye, sphere.positions[adj.indices[e]], sphere.positions[adj.indices[e + 1]],
-                sphere.positions[adj.indices[e + 2]], sphere.positions[adj.indices[e + 3]]));
+            s.cases.push_back(edgeCase("sphere edge " + std::to_string(e / 4) + " from (" +
+                                           caseNumber(eye.x) + ", " + caseNumber(eye.y) + ", " +
+                                           caseNumber(eye.z) + ")",
+                                       eye, dvec3(sphere.positions[adj.indices[e]]),
+                                       dvec3(sphere.positions[adj.indices[e + 1]]),
+                                       dvec3(sphere.positions[adj.indices[e + 2]]),
+                                       dvec3(sphere.positions[adj.indices[e + 3]])));
     RAYLAB_REFERENCE(s, [](const FunctionCase& row) {
         const dvec3 eye(row.in[0].w, row.in[1].w, row.in[2].w);
         return dvec4(silhouetteProduct(eye, dvec3(row.in[0]), dvec3(row.in[1]), dvec3(row.in[2]),

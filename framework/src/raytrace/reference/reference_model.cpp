@@ -2,6 +2,7 @@
 // start, and the text of its log (reference_model.h).
 #include "reference_model.h"
 
+#include "gpu_values.h"
 #include "text_format.h"
 
 #include <cmath>
@@ -86,36 +87,39 @@ ReferenceTracer::ReferenceTracer(const Scene& input, const ReferenceFeatures& fe
         d.normalMap = features.textures ? mat.normalMap : -1;
         m.materials.push_back(d);
     }
+    // The scene's doubles, framed like the GPU's (in double), then each
+    // position and length as the GPU receives it (gpu_values.h: rounded once
+    // to float) and carried on in double: the reference traces the geometry
+    // the GPU is given, so the two differ only by how they compute with it.
+    auto at = [](const glm::dvec3& p) { return glm::dvec3(gpuPoint(p)); };
+    auto length = [](double l) { return double(float(l)); };
     for (const PointLight& l : scene.lights)
-        m.lights.push_back({glm::dvec3(l.position), glm::dvec3(l.color)});
-    // Positions at TIMESECONDS exactly as stage_renderer.cpp computes them
-    // (in float, as the GPU receives them), then carried on in double.
-    for (const Sphere& s : scene.spheres)
-        m.spheres.push_back(
-            {glm::dvec3(s.center + s.motion.offsetAt(timeSeconds)), double(s.radius), s.material});
-    for (const Plane& p : scene.planes) {
-        const glm::dvec3 n(p.normal);
-        m.planes.push_back({n, glm::dot(n, glm::dvec3(p.point)), double(p.tileSize), p.material});
+        m.lights.push_back({at(l.position), glm::dvec3(l.color)});
+    for (const Sphere& s : scene.spheres) {
+        const glm::vec4 c = gpuSphere(s, timeSeconds);  // at TIMESECONDS, as sphere_blocks.cpp
+        m.spheres.push_back({glm::dvec3(glm::vec3(c)), double(c.w), s.material});
     }
+    for (const Plane& p : scene.planes)
+        m.planes.push_back(
+            {glm::dvec3(p.normal), double(gpuPlane(p).w), length(p.tileSize), p.material});
     for (const Disc& d : scene.discs)
-        m.discs.push_back(
-            {glm::dvec3(d.center), glm::dvec3(d.normal), double(d.radius), d.material});
+        m.discs.push_back({at(d.center), glm::dvec3(d.normal), length(d.radius), d.material});
     for (const Triangle& t : scene.triangles)
-        m.triangles.push_back({glm::dvec3(t.vertices[0]), glm::dvec3(t.vertices[1]),
-                               glm::dvec3(t.vertices[2]), t.material});
+        m.triangles.push_back(
+            {at(t.vertices[0]), at(t.vertices[1]), at(t.vertices[2]), t.material});
     for (const Torus& t : scene.tori)
         m.tori.push_back(
-            {glm::dvec3(t.center), double(t.majorRadius), double(t.minorRadius),
+            {at(t.center), length(t.majorRadius), length(t.minorRadius),
              reference::torusToLocal(glm::normalize(glm::dvec3(t.axisAt(timeSeconds)))),
              t.material});
     for (const MeshObject& o : scene.meshes)
-        for (std::size_t t = 0; t < o.mesh.triangleCount(); ++t) {
+        for (std::size_t t = 0; t < o.triangleCount(); ++t) {
             DMeshTriangle d{};
             for (std::size_t k = 0; k < 3; ++k) {
-                const std::uint32_t v = o.mesh.indices[3 * t + k];
-                d.p[k] = glm::dvec3(o.mesh.positions[v]);
-                d.n[k] = glm::dvec3(o.mesh.normals[v]);
-                d.uv[k] = glm::dvec2(o.mesh.uvs[v]);
+                const std::uint32_t v = o.indices[3 * t + k];
+                d.p[k] = at(o.positions[v]);
+                d.n[k] = glm::dvec3(o.normals[v]);
+                d.uv[k] = glm::dvec2(o.uvs[v]);
             }
             d.material = o.material;
             m.meshTriangles.push_back(d);

@@ -1,6 +1,7 @@
 #include "bvh.h"
 
 #include "error.h"
+#include "float_rounding.h"
 #include "shader_constants.h"
 
 #include <algorithm>
@@ -9,10 +10,10 @@
 
 namespace raylab {
 
-float Aabb::area() const {
-    glm::vec3 e = hi - lo;
-    if (e.x < 0.0f || e.y < 0.0f || e.z < 0.0f) return 0.0f;
-    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+double Aabb::area() const {
+    const glm::dvec3 e = hi - lo;
+    if (e.x < 0.0 || e.y < 0.0 || e.z < 0.0) return 0.0;
+    return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
 }
 
 bool Aabb::contains(const Aabb& b) const {
@@ -24,7 +25,7 @@ namespace {
 // Pad a little: float rounding in the GLSL slab test must never cut off a
 // surface that touches the box.
 Aabb padded(Aabb box) {
-    glm::vec3 pad = 1e-4f * (glm::abs(box.lo) + glm::abs(box.hi)) + glm::vec3(1e-5f);
+    const glm::dvec3 pad = 1e-4 * (glm::abs(box.lo) + glm::abs(box.hi)) + glm::dvec3(1e-5);
     box.lo -= pad;
     box.hi += pad;
     return box;
@@ -34,26 +35,23 @@ Aabb padded(Aabb box) {
 
 Aabb sphereBounds(const Scene& scene, int index) {
     const Sphere& s = scene.spheres.at(std::size_t(index));
-    glm::vec3 sweep = glm::abs(s.motion.axis) * std::fabs(s.motion.amplitude);
-    return padded({s.center - glm::vec3(s.radius) - sweep, s.center + glm::vec3(s.radius) + sweep});
+    const glm::dvec3 sweep = glm::abs(glm::dvec3(s.motion.axis)) * std::fabs(s.motion.amplitude);
+    return padded(
+        {s.center - glm::dvec3(s.radius) - sweep, s.center + glm::dvec3(s.radius) + sweep});
 }
 
-std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index) {
+std::array<glm::dvec3, 3> meshTriangleCorners(const Scene& scene, int index) {
     std::size_t i = std::size_t(index);
     for (const MeshObject& m : scene.meshes) {
-        if (i < m.mesh.triangleCount()) {
-            const auto& p = m.mesh.positions;
-            const auto& k = m.mesh.indices;
-            return {p[k[3 * i]], p[k[3 * i + 1]], p[k[3 * i + 2]]};
-        }
-        i -= m.mesh.triangleCount();
+        if (i < m.triangleCount()) return {m.corner(i, 0), m.corner(i, 1), m.corner(i, 2)};
+        i -= m.triangleCount();
     }
     throw Error("mesh triangle " + std::to_string(index) + " does not exist");
 }
 
 Aabb triangleBounds(const Scene& scene, int index) {
     Aabb box;
-    for (glm::vec3 p : scene.triangles.at(std::size_t(index)).vertices) box.grow(p);
+    for (const glm::dvec3& p : scene.triangles.at(std::size_t(index)).vertices) box.grow(p);
     return padded(box);
 }
 
@@ -61,13 +59,14 @@ Aabb triangleBounds(const Scene& scene, int index) {
 // centre along axis i (0 along its normal, r across it).
 Aabb discBounds(const Scene& scene, int index) {
     const Disc& d = scene.discs.at(std::size_t(index));
-    glm::vec3 reach = d.radius * glm::sqrt(glm::max(glm::vec3(1.0f) - d.normal * d.normal, 0.0f));
+    const glm::dvec3 n(d.normal);
+    const glm::dvec3 reach = d.radius * glm::sqrt(glm::max(glm::dvec3(1.0) - n * n, 0.0));
     return padded({d.center - reach, d.center + reach});
 }
 
 Aabb meshTriangleBounds(const Scene& scene, int index) {
     Aabb box;
-    for (glm::vec3 p : meshTriangleCorners(scene, index)) box.grow(p);
+    for (const glm::dvec3& p : meshTriangleCorners(scene, index)) box.grow(p);
     return padded(box);
 }
 
@@ -76,7 +75,7 @@ namespace {
 struct Builder {
     const int maxLeaf;
     std::vector<Aabb> boxes;  // per item
-    std::vector<glm::vec3> centres;
+    std::vector<glm::dvec3> centres;
     std::vector<int> kinds;    // per item: KIND_SPHERE, KIND_MESH, KIND_TRIANGLE or KIND_DISC
     std::vector<int> indices;  // per item: index in its kind's list
     std::vector<int> order;    // item numbers, partitioned in place
@@ -93,8 +92,8 @@ struct Builder {
 
     // The bin of ITEM's centre along AXIS within the centres' box.
     int binOf(int item, int axis, const Aabb& centreBox) const {
-        float lo = centreBox.lo[axis], hi = centreBox.hi[axis];
-        int b = int(float(kBins) * (centres[std::size_t(item)][axis] - lo) / (hi - lo));
+        const double lo = centreBox.lo[axis], hi = centreBox.hi[axis];
+        const int b = int(double(kBins) * (centres[std::size_t(item)][axis] - lo) / (hi - lo));
         return std::clamp(b, 0, kBins - 1);
     }
 
@@ -116,10 +115,10 @@ struct Builder {
         Aabb centreBox;
         for (int i = begin; i < end; ++i)
             centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
-        float bestCost = std::numeric_limits<float>::max();
+        double bestCost = std::numeric_limits<double>::max();
         int bestAxis = -1, bestBin = 0;
         for (int axis = 0; axis < 3; ++axis) {
-            if (centreBox.hi[axis] - centreBox.lo[axis] < 1e-12f) continue;
+            if (centreBox.hi[axis] - centreBox.lo[axis] < 1e-12) continue;
             Aabb bins[kBins];
             int counts[kBins] = {};
             for (int i = begin; i < end; ++i) {
@@ -140,7 +139,7 @@ struct Builder {
                     nr += counts[b];
                 }
                 if (nl == 0 || nr == 0) continue;
-                float cost = left.area() * float(nl) + right.area() * float(nr);
+                const double cost = left.area() * double(nl) + right.area() * double(nr);
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
@@ -151,7 +150,7 @@ struct Builder {
         if (bestAxis < 0)
             return n <= maxLeaf ? -1 : begin + n / 2;  // all centres equal: split by count
         // Cost of a leaf vs. of traversing two children (box test ~ 1 object test).
-        if (n <= maxLeaf && box.area() * float(n) <= box.area() + bestCost) return -1;
+        if (n <= maxLeaf && box.area() * double(n) <= box.area() + bestCost) return -1;
         auto mid = std::partition(order.begin() + begin, order.begin() + end, [&](int item) {
             return binOf(item, bestAxis, centreBox) < bestBin;
         });
@@ -163,13 +162,13 @@ struct Builder {
         Aabb centreBox;
         for (int i = begin; i < end; ++i)
             centreBox.grow(centres[std::size_t(order[std::size_t(i)])]);
-        glm::vec3 e = centreBox.hi - centreBox.lo;
+        const glm::dvec3 e = centreBox.hi - centreBox.lo;
         int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         int mid = begin + (end - begin) / 2;
         std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
                          [&](int a, int b) {
-                             float ca = centres[std::size_t(a)][axis];
-                             float cb = centres[std::size_t(b)][axis];
+                             const double ca = centres[std::size_t(a)][axis];
+                             const double cb = centres[std::size_t(b)][axis];
                              return ca < cb || (ca == cb && a < b);
                          });
         return mid;
@@ -216,10 +215,9 @@ Bvh buildBvh(const Scene& scene, int maxLeaf, BvhObjects objects) {
     // Corner by corner, without meshTriangleBounds' search through the meshes.
     int triangle = 0;
     for (const MeshObject& m : scene.meshes)
-        for (std::size_t t = 0; t < m.mesh.triangleCount(); ++t) {
+        for (std::size_t t = 0; t < m.triangleCount(); ++t) {
             Aabb box;
-            for (int k = 0; k < 3; ++k)
-                box.grow(m.mesh.positions[m.mesh.indices[3 * t + std::size_t(k)]]);
+            for (std::size_t k = 0; k < 3; ++k) box.grow(m.corner(t, k));
             add(shader::kMesh, triangle++, padded(box));
         }
     if (objects == BvhObjects::AllBounded) {
@@ -240,9 +238,10 @@ Bvh buildBvh(const Scene& scene, int maxLeaf, BvhObjects objects) {
 std::vector<float> packedBvhNodes(const Bvh& bvh) {
     std::vector<float> nodes;
     for (const BvhNode& n : bvh.nodes) {
-        nodes.insert(nodes.end(), {n.box.lo.x, n.box.lo.y, n.box.lo.z, float(n.first)});
+        const glm::vec3 lo = floatBelow(n.box.lo), hi = floatAbove(n.box.hi);
+        nodes.insert(nodes.end(), {lo.x, lo.y, lo.z, float(n.first)});
         const int code = n.count > 0 ? kBvhLeafKinds * n.count + n.kind : 0;
-        nodes.insert(nodes.end(), {n.box.hi.x, n.box.hi.y, n.box.hi.z, float(code)});
+        nodes.insert(nodes.end(), {hi.x, hi.y, hi.z, float(code)});
     }
     if (nodes.empty()) nodes.assign(8, 0.0f);
     return nodes;

@@ -37,19 +37,21 @@
 
 namespace raylab {
 
+// In double, like the scene (scene.h); packedBvhNodes rounds each box
+// outward to the floats the GPU reads.
 struct Aabb {
-    glm::vec3 lo{1e30f};
-    glm::vec3 hi{-1e30f};
+    glm::dvec3 lo{1e300};
+    glm::dvec3 hi{-1e300};
     void grow(const Aabb& b) {
         lo = glm::min(lo, b.lo);
         hi = glm::max(hi, b.hi);
     }
-    void grow(glm::vec3 p) {
+    void grow(const glm::dvec3& p) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    glm::vec3 centre() const { return 0.5f * (lo + hi); }
-    float area() const;  // surface area (0 for an empty box)
+    glm::dvec3 centre() const { return 0.5 * (lo + hi); }
+    double area() const;  // surface area (0 for an empty box)
     bool contains(const Aabb& b) const;
 };
 
@@ -83,7 +85,7 @@ Aabb triangleBounds(const Scene& scene, int index);
 Aabb discBounds(const Scene& scene, int index);
 
 // The corners of mesh triangle INDEX, counter-clockwise from the front.
-std::array<glm::vec3, 3> meshTriangleCorners(const Scene& scene, int index);
+std::array<glm::dvec3, 3> meshTriangleCorners(const Scene& scene, int index);
 
 // What goes into the tree: spheres and mesh triangles, or (RAYLAB_TREE_ALL,
 // the bench's tree-all row) also the scene file's triangles and discs.
@@ -101,6 +103,8 @@ inline constexpr int kBvhLeafKinds = 8;
 
 // The nodes as the shaders read them (bvh_access.glsl): two RGBA texels per
 // node, (box min, first) and (box max, code); the code is 0 for an inner node.
+// Each box is rounded outward to float (min down, max up): it still holds
+// everything its double box holds.
 // At least one node's worth (an empty buffer texture is not allowed everywhere).
 std::vector<float> packedBvhNodes(const Bvh& bvh);
 

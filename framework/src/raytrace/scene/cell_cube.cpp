@@ -53,14 +53,14 @@ double spanRadius(int resolution, int face, int row0, int row1, int column0, int
 }  // namespace
 
 CellBall sweptBall(const Sphere& s) {
-    return {s.center, s.radius + glm::length(s.motion.axis) * std::fabs(s.motion.amplitude)};
+    return {s.center,
+            s.radius + double(glm::length(s.motion.axis)) * std::fabs(s.motion.amplitude)};
 }
 
 CellBall triangleBall(const Triangle& t) {
-    const glm::dvec3 centre =
-        (glm::dvec3(t.vertices[0]) + glm::dvec3(t.vertices[1]) + glm::dvec3(t.vertices[2])) / 3.0;
+    const glm::dvec3 centre = (t.vertices[0] + t.vertices[1] + t.vertices[2]) / 3.0;
     double radius = 0.0;
-    for (glm::vec3 v : t.vertices) radius = std::max(radius, glm::length(glm::dvec3(v) - centre));
+    for (const glm::dvec3& v : t.vertices) radius = std::max(radius, glm::length(v - centre));
     return {centre, radius};
 }
 
@@ -73,7 +73,7 @@ double sceneReach(const Scene& scene) {
         grow(ball.centre, ball.radius);
     }
     for (const Triangle& t : scene.triangles)
-        for (glm::vec3 p : t.vertices) grow(p, 0.0);
+        for (const glm::dvec3& p : t.vertices) grow(p, 0.0);
     for (const Disc& d : scene.discs) grow(d.center, d.radius);
     for (const Torus& t : scene.tori) grow(t.center, t.majorRadius + t.minorRadius);
     return r * 1.01;

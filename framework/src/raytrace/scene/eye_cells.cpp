@@ -43,7 +43,7 @@ EyeCells buildEyeCells(const Scene& scene, glm::vec3 eye, const CellCube& cube) 
     std::vector<int> near;
     out.cells.assign(std::size_t(cube.cellCount()), glm::ivec2(0));
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        cube.cellsNear(eye, sweptBall(scene.spheres[i]), margin, near);
+        cube.cellsNear(glm::dvec3(eye), sweptBall(scene.spheres[i]), margin, near);
         for (int c : near) {
             pairs.emplace_back(c, int(i));
             ++out.cells[std::size_t(c)].y;

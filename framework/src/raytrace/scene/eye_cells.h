@@ -26,7 +26,7 @@
 namespace raylab {
 
 struct EyeCells {
-    glm::vec3 eye{0.0f};  // the point the cube is built around
+    glm::vec3 eye{0.0f};  // the point the cube is built around: the eye the GPU gets (uEye)
     int resolution = 0;   // cells along a face's edge
     // Per cell (numbered as cubeCell numbers them): (first, count) of its spheres in `items`.
     std::vector<glm::ivec2> cells;

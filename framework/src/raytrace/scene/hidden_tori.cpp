@@ -12,9 +12,9 @@ namespace raylab {
 
 namespace {
 
-using Corner = std::array<float, 3>;  // a corner's exact coordinates: shared corners compare equal
+using Corner = std::array<double, 3>;  // a corner's exact coordinates: shared corners compare equal
 
-Corner corner(glm::vec3 v) { return {v.x, v.y, v.z}; }
+Corner corner(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 // A closed convex shell of triangles, as the planes of its faces
 // (outward unit normal n, a point p on the face).
@@ -34,7 +34,7 @@ std::vector<std::vector<int>> connectedTriangles(const Scene& scene) {
     };
     std::map<Corner, int> firstWithCorner;
     for (int i = 0; i < n; ++i)
-        for (glm::vec3 v : scene.triangles[std::size_t(i)].vertices) {
+        for (const glm::dvec3& v : scene.triangles[std::size_t(i)].vertices) {
             auto [at, added] = firstWithCorner.emplace(corner(v), i);
             if (!added) parent[std::size_t(find(i))] = find(at->second);
         }

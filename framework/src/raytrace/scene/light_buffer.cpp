@@ -1,6 +1,7 @@
 #include "light_buffer.h"
 
 #include "cell_cube.h"
+#include "float_rounding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +39,7 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     LightBuffer buffer;
     buffer.resolution = resolution;
     const double reach = sceneReach(scene);
-    buffer.reach = float(reach);
+    buffer.reach = floatBelow(reach);  // rounded inward: a point near the edge uses every object
     const double margin = rayOffMargin(reach);
     const CellCube cube(resolution);
     const int perLight = cube.cellCount();

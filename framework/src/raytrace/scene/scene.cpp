@@ -9,9 +9,9 @@
 
 namespace raylab {
 
-glm::vec3 Motion::offsetAt(float t) const {
-    if (amplitude == 0.0f) return glm::vec3(0.0f);
-    return axis * amplitude * std::sin(6.28318530718f * t / periodSeconds);
+glm::dvec3 Motion::offsetAt(float t) const {
+    if (amplitude == 0.0) return glm::dvec3(0.0);
+    return glm::dvec3(axis) * amplitude * std::sin(6.283185307179586 * double(t) / periodSeconds);
 }
 
 namespace {
@@ -75,7 +75,7 @@ void readLights(const SceneReader& r, const json& doc, Scene& scene) {
         std::string where = "lights[" + std::to_string(i) + "]";
         r.allowOnly(lights[i], where, {"position", "color"});
         PointLight light;
-        light.position = r.vec3(r.member(lights[i], where, "position"), where + ".position");
+        light.position = r.point(r.member(lights[i], where, "position"), where + ".position");
         light.color = r.color(r.member(lights[i], where, "color"), where + ".color");
         scene.lights.push_back(light);
     }

@@ -1,6 +1,9 @@
 #pragma once
 // A scene file (JSON, under assets/scenes/): background, camera, materials,
-// lights and objects. Stage 01 uses spheres; stage 05 adds planes, discs,
+// lights and objects. Positions and lengths are held in double precision, as
+// the file gives them: a scene 1e6 from the origin keeps its centimetres. The
+// renderers move it next to the origin in double (sceneFrame) before anything
+// becomes a float for the GPU. Stage 01 uses spheres; stage 05 adds planes, discs,
 // triangles (also as rectangles and boxes) and tori; stage 06 textures and a
 // sky box. The format is documented in assets/scenes/README.md.
 #include "camera.h"
@@ -17,9 +20,9 @@ namespace raylab {
 // A sinusoidal bob: offset = axis * amplitude * sin(2 pi t / period).
 struct Motion {
     glm::vec3 axis{0.0f};
-    float amplitude = 0.0f;
+    double amplitude = 0.0;
     float periodSeconds = 1.0f;
-    glm::vec3 offsetAt(float t) const;
+    glm::dvec3 offsetAt(float t) const;
 };
 
 // Blinn-Phong material. Scenes name materials in a table; objects refer to
@@ -40,36 +43,36 @@ struct Material {
 };
 
 struct PointLight {
-    glm::vec3 position{0.0f};
+    glm::dvec3 position{0.0};
     glm::vec3 color{1.0f};
 };
 
 struct Sphere {
-    glm::vec3 center{0.0f};
-    float radius = 1.0f;
+    glm::dvec3 center{0.0};
+    double radius = 1.0;
     int material = 0;  // index into Scene::materials
     Motion motion;
 };
 
 // An infinite plane through `point`; textures repeat every `tileSize` units.
 struct Plane {
-    glm::vec3 point{0.0f};
+    glm::dvec3 point{0.0};
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
-    float tileSize = 1.0f;
+    double tileSize = 1.0;
     int material = 0;
 };
 
 struct Disc {
-    glm::vec3 center{0.0f};
+    glm::dvec3 center{0.0};
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
-    float radius = 1.0f;
+    double radius = 1.0;
     int material = 0;
 };
 
 // Counter-clockwise seen from the side the normal points to. Rectangles and
 // boxes in the file become triangles.
 struct Triangle {
-    std::array<glm::vec3, 3> vertices{};
+    std::array<glm::dvec3, 3> vertices{};
     int material = 0;
 };
 
@@ -77,10 +80,10 @@ struct Triangle {
 // centre to the middle of the tube, tube radius `minorRadius`. With a spin,
 // the torus turns about `spinAxis` once every `spinPeriod` seconds.
 struct Torus {
-    glm::vec3 center{0.0f};
+    glm::dvec3 center{0.0};
     glm::vec3 axis{0.0f, 1.0f, 0.0f};  // unit
-    float majorRadius = 1.0f;
-    float minorRadius = 0.25f;
+    double majorRadius = 1.0;
+    double minorRadius = 0.25;
     glm::vec3 spinAxis{0.0f, 1.0f, 0.0f};
     float spinPeriod = 0.0f;  // 0: no spin
     int material = 0;
@@ -92,14 +95,23 @@ struct Torus {
 glm::mat3 torusToLocal(glm::vec3 axis);
 
 // A triangle mesh from an OBJ file (stage 08), placed in the world: its
-// positions scaled by `scale` and moved by `translate` when read, so `mesh`
-// is in world coordinates (normals unchanged: the scale is uniform). Its
-// vertex normals and texture coordinates are interpolated across each
-// triangle; one material for the whole mesh.
+// positions scaled by `scale` and moved by `translate` when read (in double,
+// like every position of a scene), so `positions` are world coordinates
+// (normals unchanged: the scale is uniform). Its vertex normals and texture
+// coordinates are interpolated across each triangle; one material for the
+// whole mesh.
 struct MeshObject {
     std::filesystem::path file;
-    Mesh mesh;
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::vec3> normals;      // unit, one per position
+    std::vector<glm::vec2> uvs;          // one per position
+    std::vector<std::uint32_t> indices;  // three per triangle
     int material = 0;
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    // Corner K (0-2) of triangle T.
+    const glm::dvec3& corner(std::size_t t, std::size_t k) const {
+        return positions[indices[3 * t + k]];
+    }
 };
 
 // A halo drawn around a sphere (the "sun"), key G.
@@ -134,6 +146,11 @@ struct Scene {
 // A sphere gives either "material" (a name from "materials") or "color" (a
 // flat colour: a material of its own with that diffuse colour).
 Scene loadScene(const std::filesystem::path& file);
+
+// MESH (as read from FILE, in its own coordinates) placed in the world:
+// positions scaled by SCALE and moved by TRANSLATE, in double.
+MeshObject placeMesh(std::filesystem::path file, Mesh mesh, double scale,
+                     const glm::dvec3& translate, int material);
 
 // The triangles of all meshes together (KIND_MESH indices run through the
 // meshes in order).

@@ -1,4 +1,5 @@
 #include "scene_baking.h"
+#include "gpu_values.h"
 #include "text_format.h"
 #include "triangle_groups.h"
 
@@ -100,25 +101,23 @@ std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage) {
 
     g += constInt("uLightCount", int(scene.lights.size()));
     g += vec3s("uLightPositions",
-               gather(scene.lights, [](const PointLight& l) { return l.position; }));
+               gather(scene.lights, [](const PointLight& l) { return gpuPoint(l.position); }));
     g += vec3s("uLightColors", gather(scene.lights, [](const PointLight& l) { return l.color; }));
 
     g += constInt("uPlaneCount", int(scene.planes.size()));
-    g += vec4s("uPlanes", gather(scene.planes, [](const Plane& p) {
-                   return glm::vec4(p.normal, glm::dot(p.normal, p.point));
-               }));
-    g += floats("uPlaneTileSize", gather(scene.planes, [](const Plane& p) { return p.tileSize; }));
+    g += vec4s("uPlanes", gather(scene.planes, gpuPlane));
+    g += floats("uPlaneTileSize",
+                gather(scene.planes, [](const Plane& p) { return float(p.tileSize); }));
     g += ints("uPlaneMaterial", gather(scene.planes, [](const Plane& p) { return p.material; }));
 
     g += constInt("uDiscCount", int(scene.discs.size()));
-    g += vec4s("uDiscs",
-               gather(scene.discs, [](const Disc& d) { return glm::vec4(d.center, d.radius); }));
+    g += vec4s("uDiscs", gather(scene.discs, gpuDisc));
     g += vec3s("uDiscNormals", gather(scene.discs, [](const Disc& d) { return d.normal; }));
     g += ints("uDiscMaterial", gather(scene.discs, [](const Disc& d) { return d.material; }));
 
     std::vector<glm::vec3> vertices;
     for (const Triangle& t : scene.triangles)
-        vertices.insert(vertices.end(), t.vertices.begin(), t.vertices.end());
+        for (const glm::dvec3& v : t.vertices) vertices.push_back(gpuPoint(v));
     g += constInt("uTriangleCount", int(scene.triangles.size()));
     g += vec3s("uTriangleVertices", vertices);
     g += ints("uTriangleMaterial",
@@ -126,16 +125,16 @@ std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage) {
     const std::vector<TriangleGroup> groups = triangleGroups(scene);
     g += constInt("uTriangleGroupCount", int(groups.size()));
     g += vec4s("uTriangleGroupLow", gather(groups, [](const TriangleGroup& t) {
-                   return glm::vec4(t.lo, float(t.first));
+                   return glm::vec4(gpuPoint(t.lo), float(t.first));
                }));
     g += vec4s("uTriangleGroupHigh", gather(groups, [](const TriangleGroup& t) {
-                   return glm::vec4(t.hi, float(t.count));
+                   return glm::vec4(gpuPoint(t.hi), float(t.count));
                }));
 
     g += constInt("uTorusCount", int(scene.tori.size()));
-    g += vec4s("uTori", gather(scene.tori,
-                               [](const Torus& t) { return glm::vec4(t.center, t.majorRadius); }));
-    g += floats("uTorusMinor", gather(scene.tori, [](const Torus& t) { return t.minorRadius; }));
+    g += vec4s("uTori", gather(scene.tori, gpuTorus));
+    g += floats("uTorusMinor",
+                gather(scene.tori, [](const Torus& t) { return float(t.minorRadius); }));
     g += ints("uTorusMaterial", gather(scene.tori, [](const Torus& t) { return t.material; }));
 
     // Only for scenes with meshes: the others' programs stay as they were

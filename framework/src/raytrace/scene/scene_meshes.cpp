@@ -19,8 +19,8 @@ namespace {
 constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(512) << 20;
 
 // "scale": one positive number (uniform, so the normals stay as they are).
-float scaleOf(const SceneReader& r, const json& m, const std::string& where) {
-    return m.contains("scale") ? r.positive(m["scale"], where + ".scale") : 1.0f;
+double scaleOf(const SceneReader& r, const json& m, const std::string& where) {
+    return m.contains("scale") ? r.length(m["scale"], where + ".scale") : 1.0;
 }
 
 }  // namespace
@@ -34,10 +34,10 @@ void readMeshes(const SceneReader& r, const json& doc, Scene& scene) {
         r.allowOnly(m, where, {"file", "translate", "scale", "material", "color"});
         MeshObject object;
         object.file = r.existingFile(r.member(m, where, "file"), where + ".file");
-        const glm::vec3 translate = m.contains("translate")
-                                        ? r.vec3(m["translate"], where + ".translate")
-                                        : glm::vec3(0.0f);
-        const float scale = scaleOf(r, m, where);
+        const glm::dvec3 translate = m.contains("translate")
+                                         ? r.point(m["translate"], where + ".translate")
+                                         : glm::dvec3(0.0);
+        const double scale = scaleOf(r, m, where);
         object.material = materialOf(r, m, where, scene);
         // Refused before it is read: parsing a file far larger than the
         // triangle limit allows would only cost memory and time first.
@@ -47,11 +47,12 @@ void readMeshes(const SceneReader& r, const json& doc, Scene& scene) {
             r.fail(where + ".file", "the file has " + std::to_string(bytes >> 20) +
                                         " MB; mesh files of at most " +
                                         std::to_string(kMaxMeshFileBytes >> 20) + " MB are read");
+        Mesh mesh;
         try {
-            object.mesh = loadObjMesh(object.file);
+            mesh = loadObjMesh(object.file);
         } catch (const Error& e) { r.fail(where + ".file", e.what()); }
-        for (glm::vec3& p : object.mesh.positions) p = p * scale + translate;
-        triangles += object.mesh.triangleCount();
+        object = placeMesh(object.file, std::move(mesh), scale, translate, object.material);
+        triangles += object.triangleCount();
         // Hit ids number a kind's objects below OBJECT_KIND_STRIDE.
         if (triangles >= std::size_t(shader::kObjectKindStride))
             r.fail(where, "the meshes have " + std::to_string(triangles) + " triangles; at most " +
@@ -65,21 +66,34 @@ void readMeshes(const SceneReader& r, const json& doc, Scene& scene) {
     }
 }
 
+MeshObject placeMesh(std::filesystem::path file, Mesh mesh, double scale,
+                     const glm::dvec3& translate, int material) {
+    MeshObject object;
+    object.file = std::move(file);
+    object.positions.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions)
+        object.positions.push_back(glm::dvec3(p) * scale + translate);
+    object.normals = std::move(mesh.normals);
+    object.uvs = std::move(mesh.uvs);
+    object.indices = std::move(mesh.indices);
+    object.material = material;
+    return object;
+}
+
 std::size_t meshTriangleCount(const Scene& scene) {
     std::size_t n = 0;
-    for (const MeshObject& m : scene.meshes) n += m.mesh.triangleCount();
+    for (const MeshObject& m : scene.meshes) n += m.triangleCount();
     return n;
 }
 
 std::vector<float> meshCornerTexels(const Scene& scene) {
     std::vector<float> corners;
-    for (const MeshObject& object : scene.meshes) {
-        const Mesh& m = object.mesh;
+    for (const MeshObject& m : scene.meshes) {
         for (std::size_t t = 0; t < m.triangleCount(); ++t) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = m.indices[3 * t + std::size_t(k)];
-                corners.insert(corners.end(),
-                               {m.positions[v].x, m.positions[v].y, m.positions[v].z, m.uvs[v].x});
+                const glm::vec3 p(m.positions[v]);  // the scene in the GPU's frame: small
+                corners.insert(corners.end(), {p.x, p.y, p.z, m.uvs[v].x});
             }
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = m.indices[3 * t + std::size_t(k)];
@@ -95,7 +109,7 @@ std::vector<float> meshCornerTexels(const Scene& scene) {
 std::vector<int> meshTriangleMaterials(const Scene& scene) {
     std::vector<int> materials;
     for (const MeshObject& object : scene.meshes)
-        materials.insert(materials.end(), object.mesh.triangleCount(), object.material);
+        materials.insert(materials.end(), object.triangleCount(), object.material);
     if (materials.empty()) materials.push_back(0);
     return materials;
 }

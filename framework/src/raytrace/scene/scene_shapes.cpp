@@ -43,15 +43,15 @@ void readSpheres(const SceneReader& r, const json& doc, Scene& scene) {
         const json& s = spheres[i];
         r.allowOnly(s, where, {"center", "radius", "material", "color", "motion"});
         Sphere sphere;
-        sphere.center = r.vec3(r.member(s, where, "center"), where + ".center");
-        sphere.radius = r.positive(r.member(s, where, "radius"), where + ".radius");
+        sphere.center = r.point(r.member(s, where, "center"), where + ".center");
+        sphere.radius = r.length(r.member(s, where, "radius"), where + ".radius");
         sphere.material = materialOf(r, s, where, scene);
         if (s.contains("motion")) {
             const json& m = s["motion"];
             std::string mw = where + ".motion";
             r.allowOnly(m, mw, {"axis", "amplitude", "period"});
             sphere.motion.axis = r.vec3(r.member(m, mw, "axis"), mw + ".axis");
-            sphere.motion.amplitude = r.number(r.member(m, mw, "amplitude"), mw + ".amplitude");
+            sphere.motion.amplitude = r.real(r.member(m, mw, "amplitude"), mw + ".amplitude");
             sphere.motion.periodSeconds = r.positive(r.member(m, mw, "period"), mw + ".period");
         }
         scene.spheres.push_back(sphere);
@@ -64,10 +64,10 @@ void readPlanes(const SceneReader& r, const json& doc, Scene& scene) {
         std::string where = item("planes", i);
         r.allowOnly(planes[i], where, {"point", "normal", "tile_size", "material", "color"});
         Plane p;
-        p.point = r.vec3(r.member(planes[i], where, "point"), where + ".point");
+        p.point = r.point(r.member(planes[i], where, "point"), where + ".point");
         p.normal = r.direction(r.member(planes[i], where, "normal"), where + ".normal");
         if (planes[i].contains("tile_size"))
-            p.tileSize = r.positive(planes[i]["tile_size"], where + ".tile_size");
+            p.tileSize = r.length(planes[i]["tile_size"], where + ".tile_size");
         p.material = materialOf(r, planes[i], where, scene);
         scene.planes.push_back(p);
     }
@@ -79,17 +79,17 @@ void readDiscs(const SceneReader& r, const json& doc, Scene& scene) {
         std::string where = item("discs", i);
         r.allowOnly(discs[i], where, {"center", "normal", "radius", "material", "color"});
         Disc d;
-        d.center = r.vec3(r.member(discs[i], where, "center"), where + ".center");
+        d.center = r.point(r.member(discs[i], where, "center"), where + ".center");
         d.normal = r.direction(r.member(discs[i], where, "normal"), where + ".normal");
-        d.radius = r.positive(r.member(discs[i], where, "radius"), where + ".radius");
+        d.radius = r.length(r.member(discs[i], where, "radius"), where + ".radius");
         d.material = materialOf(r, discs[i], where, scene);
         scene.discs.push_back(d);
     }
 }
 
-void addTriangle(const SceneReader& r, const std::string& where, Scene& scene, glm::vec3 a,
-                 glm::vec3 b, glm::vec3 c, int material) {
-    if (!(glm::length(glm::cross(b - a, c - a)) > 1e-8f))
+void addTriangle(const SceneReader& r, const std::string& where, Scene& scene, glm::dvec3 a,
+                 glm::dvec3 b, glm::dvec3 c, int material) {
+    if (!(glm::length(glm::cross(b - a, c - a)) > 1e-8))
         r.fail(where, "degenerate: the corners lie on one line");
     scene.triangles.push_back(Triangle{{a, b, c}, material});
 }
@@ -105,9 +105,9 @@ void readTriangles(const SceneReader& r, const json& doc, Scene& scene) {
         int material = materialOf(r, triangles[i], where, scene);
         // One by one: a bad corner is reported in order, whatever the
         // compiler's order of evaluating arguments.
-        const glm::vec3 a = r.vec3(v[0], where + ".vertices[0]");
-        const glm::vec3 b = r.vec3(v[1], where + ".vertices[1]");
-        const glm::vec3 c = r.vec3(v[2], where + ".vertices[2]");
+        const glm::dvec3 a = r.point(v[0], where + ".vertices[0]");
+        const glm::dvec3 b = r.point(v[1], where + ".vertices[1]");
+        const glm::dvec3 c = r.point(v[2], where + ".vertices[2]");
         addTriangle(r, where, scene, a, b, c, material);
     }
 }
@@ -119,9 +119,9 @@ void readRectangles(const SceneReader& r, const json& doc, Scene& scene) {
     for (std::size_t i = 0; i < rects.size(); ++i) {
         std::string where = item("rectangles", i);
         r.allowOnly(rects[i], where, {"corner", "edge_u", "edge_v", "material", "color"});
-        glm::vec3 p = r.vec3(r.member(rects[i], where, "corner"), where + ".corner");
-        glm::vec3 u = r.vec3(r.member(rects[i], where, "edge_u"), where + ".edge_u");
-        glm::vec3 v = r.vec3(r.member(rects[i], where, "edge_v"), where + ".edge_v");
+        const glm::dvec3 p = r.point(r.member(rects[i], where, "corner"), where + ".corner");
+        const glm::dvec3 u = r.point(r.member(rects[i], where, "edge_u"), where + ".edge_u");
+        const glm::dvec3 v = r.point(r.member(rects[i], where, "edge_v"), where + ".edge_v");
         int material = materialOf(r, rects[i], where, scene);
         addTriangle(r, where, scene, p, p + u, p + u + v, material);
         addTriangle(r, where, scene, p, p + u + v, p + v, material);
@@ -135,10 +135,10 @@ void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         std::string where = item("boxes", i);
         r.allowOnly(boxes[i], where, {"center", "size", "rotation_y", "material", "color"});
-        glm::vec3 center = r.vec3(r.member(boxes[i], where, "center"), where + ".center");
-        glm::vec3 size = r.vec3(r.member(boxes[i], where, "size"), where + ".size");
+        const glm::dvec3 center = r.point(r.member(boxes[i], where, "center"), where + ".center");
+        const glm::dvec3 size = r.point(r.member(boxes[i], where, "size"), where + ".size");
         for (int c = 0; c < 3; ++c)
-            if (!(size[c] > 0.0f)) r.fail(where + ".size", "every side must be positive");
+            if (!(size[c] > 0.0)) r.fail(where + ".size", "every side must be positive");
         float turn = boxes[i].contains("rotation_y")
                          ? r.number(boxes[i]["rotation_y"], where + ".rotation_y")
                          : 0.0f;
@@ -150,8 +150,8 @@ void readBoxes(const SceneReader& r, const json& doc, Scene& scene) {
         const glm::dmat4 rotation =
             glm::rotate(glm::dmat4(1.0), glm::radians(double(turn)), glm::dvec3(0, 1, 0));
         auto corner = [&](int x, int y, int z) {
-            glm::dvec3 local = (glm::dvec3(x, y, z) - 0.5) * glm::dvec3(size);
-            return center + glm::vec3(rotation * glm::dvec4(local, 1.0));
+            const glm::dvec3 local = (glm::dvec3(x, y, z) - 0.5) * size;
+            return center + glm::dvec3(rotation * glm::dvec4(local, 1.0));
         };
         // Each face: the axis it is normal to, and which side.
         for (int axis = 0; axis < 3; ++axis) {
@@ -181,10 +181,10 @@ void readTori(const SceneReader& r, const json& doc, Scene& scene) {
             t, where,
             {"center", "axis", "major_radius", "minor_radius", "spin", "material", "color"});
         Torus torus;
-        torus.center = r.vec3(r.member(t, where, "center"), where + ".center");
+        torus.center = r.point(r.member(t, where, "center"), where + ".center");
         torus.axis = r.direction(r.member(t, where, "axis"), where + ".axis");
-        torus.majorRadius = r.positive(r.member(t, where, "major_radius"), where + ".major_radius");
-        torus.minorRadius = r.positive(r.member(t, where, "minor_radius"), where + ".minor_radius");
+        torus.majorRadius = r.length(r.member(t, where, "major_radius"), where + ".major_radius");
+        torus.minorRadius = r.length(r.member(t, where, "minor_radius"), where + ".minor_radius");
         if (torus.minorRadius >= torus.majorRadius)
             r.fail(where, "minor_radius must be smaller than major_radius");
         if (t.contains("spin")) {

@@ -5,10 +5,6 @@
 
 namespace raylab {
 
-glm::vec3 SceneTransform::point(glm::vec3 p) const {
-    return glm::vec3(glm::dvec3(p) * scale + offset);
-}
-
 CameraPose transformPose(const CameraPose& pose, const SceneTransform& t) {
     CameraPose out = pose;
     out.position = t.point(pose.position);
@@ -33,7 +29,7 @@ Scene transformScene(const Scene& scene, const SceneTransform& t) {
         d.radius = t.length(d.radius);
     }
     for (Triangle& tri : out.triangles)
-        for (glm::vec3& v : tri.vertices) v = t.point(v);
+        for (glm::dvec3& v : tri.vertices) v = t.point(v);
     for (Torus& tor : out.tori) {
         tor.center = t.point(tor.center);
         tor.majorRadius = t.length(tor.majorRadius);
@@ -42,7 +38,7 @@ Scene transformScene(const Scene& scene, const SceneTransform& t) {
     // Mesh corners are held in scene coordinates (placed when read); a
     // uniform scale leaves their normals as they are.
     for (MeshObject& m : out.meshes)
-        for (glm::vec3& v : m.mesh.positions) v = t.point(v);
+        for (glm::dvec3& v : m.positions) v = t.point(v);
     return out;
 }
 
@@ -62,16 +58,16 @@ Box sceneBox(const Scene& scene) {
     Box b;
     b.add(scene.camera.position);
     for (const Sphere& s : scene.spheres) {
-        const glm::dvec3 swing = glm::dvec3(s.motion.axis) * double(s.motion.amplitude);
+        const glm::dvec3 swing = glm::dvec3(s.motion.axis) * s.motion.amplitude;
         b.add(glm::dvec3(s.center) + swing, s.radius);
         b.add(glm::dvec3(s.center) - swing, s.radius);
     }
     for (const Disc& d : scene.discs) b.add(d.center, d.radius);
     for (const Triangle& t : scene.triangles)
-        for (const glm::vec3& v : t.vertices) b.add(v);
-    for (const Torus& t : scene.tori) b.add(t.center, double(t.majorRadius) + t.minorRadius);
+        for (const glm::dvec3& v : t.vertices) b.add(v);
+    for (const Torus& t : scene.tori) b.add(t.center, t.majorRadius + t.minorRadius);
     for (const MeshObject& m : scene.meshes)
-        for (const glm::vec3& v : m.mesh.positions) b.add(v);
+        for (const glm::dvec3& v : m.positions) b.add(v);
     return b;
 }
 
@@ -88,13 +84,16 @@ SceneTransform sceneFrame(const Scene& scene) {
     if (size > kSceneSizeMax) unit = std::exp2(std::ceil(std::log2(size / kSceneSizeMax)));
     if (size < kSceneSizeMin) unit = std::exp2(std::floor(std::log2(size / kSceneSizeMin)));
     // The shift: only for a scene farther from the origin than its own size
-    // (there float numbers are coarse compared with the scene), by its
-    // centre rounded to a multiple of GRID, a power of two at least the size.
+    // (there float numbers are coarse compared with the scene), by the eye's
+    // position rounded to a multiple of GRID / 1024 (GRID: a power of two at
+    // least the size).
     const double grid = std::exp2(std::ceil(std::log2(size)));
     const glm::dvec3 centre = (box.lo + box.hi) * 0.5;
     const double distance =
         std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
-    const glm::dvec3 anchor = distance > grid ? glm::round(centre / grid) * grid : glm::dvec3(0.0);
+    const double step = grid / 1024.0;
+    const glm::dvec3 eye = scene.camera.position;
+    const glm::dvec3 anchor = distance > grid ? glm::round(eye / step) * step : glm::dvec3(0.0);
     frame.scale = 1.0 / unit;
     frame.offset = -anchor / unit;
     return frame;

@@ -11,7 +11,7 @@ std::vector<TriangleGroup> triangleGroups(const Scene& scene) {
         if (!joins) groups.push_back({int(i), 0, t.vertices[0], t.vertices[0]});
         TriangleGroup& g = groups.back();
         ++g.count;
-        for (const glm::vec3& p : t.vertices) {
+        for (const glm::dvec3& p : t.vertices) {
             g.lo = glm::min(g.lo, p);
             g.hi = glm::max(g.hi, p);
         }

@@ -22,8 +22,10 @@ namespace raylab {
 struct TriangleGroup {
     int first = 0;  // index of its first triangle in scene.triangles
     int count = 0;  // consecutive triangles, at most kTriangleGroupMax
-    glm::vec3 lo{0.0f},
-        hi{0.0f};  // the corners' smallest and largest coordinates (exact, not padded)
+    // The corners' smallest and largest coordinates (exact, not padded). In
+    // double, like the corners; rounded to the nearest float they are the box
+    // of the float corners the GPU gets (rounding keeps the order).
+    glm::dvec3 lo{0.0}, hi{0.0};
 };
 
 // A group holds at most this many triangles: a long run of one material

@@ -94,7 +94,11 @@ const Variant kVariants[] = {
      {"for (int i = 0; i < uLightCount; ++i) {"}},
     {"solution/08-full/find_closest.glsl",
      "framework/shaders/variants/shared-work/08-full/find_closest.glsl",
-     {}},
+     // The triangle groups one by one (testTriangleGroup), the ray's shear worked out once.
+     {"for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {",
+      "if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;",
+      "keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + "
+      "1], uTriangleVertices[3 * i + 2]),"}},
     {"solution/06-textures/glow.glsl",
      "framework/shaders/variants/shared-work/08-full/glow.glsl",
      {"Hit blocker;",

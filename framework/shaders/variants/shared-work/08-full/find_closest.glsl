@@ -45,6 +45,7 @@ void keepNearer(inout Hit hit, float t, int kind, int index)
 
 #include "scene_meshes.glsl"
 #include "test_spheres.glsl"
+#include "triangle_shear.glsl"
 
 
 // Every object but the spheres, one by one. With stopAtFirst it returns as
@@ -58,13 +59,14 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
     // The triangles group by group (scene_objects.glsl): a group whose box
     // the ray misses, or meets only beyond the nearest hit, is skipped.
     vec3 invDir = inverseDirection(ray.dir);
+    TriangleShear shear = triangleShear(ray.dir);  // once for all the triangles
     for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {
         vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
         vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
         if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;
         int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
         for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
-            keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+            keepNearer(hit, intersectTriangleSheared(ray, shear, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
                        KIND_TRIANGLE, i);
     }
     for (int i = 0; i < uTorusCount && !(stopAtFirst && hit.id >= 0); ++i)

@@ -61,8 +61,10 @@ void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout H
     // A zero the compiler cannot see: the group's bounds are constants in
     // the specialised program, and a loop of constant length would be
     // unrolled into all its triangle tests, run (masked) even where no
-    // pixel's ray meets the group's box.
-    end += int(gl_FragCoord.x < -1.0);
+    // pixel's ray meets the group's box. A group of one or two triangles
+    // (the mirror) is left to be unrolled: a turn of the loop costs about
+    // two tests with constant corners, whose reads are 8 loads each.
+    if (end - first > 2) end += int(gl_FragCoord.x < -1.0);
 #endif
     for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectTriangleSheared(ray, shear, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),

@@ -40,10 +40,22 @@ const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
 // were a quarter of a frame's instructions (this saved 6% of the frame).
 float enterNode(int node, vec3 origin, vec3 invDir, float tMax, out int first, out int code)
 {
+#ifdef RAYLAB_BVH_BOXES
+    // The node's one-texel copy (framework/src/raytrace/scene/bvh_boxes.h):
+    // its box in 12-bit steps of a grid over the root's box, rounded
+    // outwards, and its first and code. One read instead of two.
+    ivec4 q = ivec4(bvhNodeLow(RAYLAB_BVH_BOXES + node));
+    vec3 lo = RAYLAB_BVH_BOX_ORIGIN + vec3(q.xyz & 0xfff) * RAYLAB_BVH_BOX_STEP;
+    vec3 hi = RAYLAB_BVH_BOX_ORIGIN + vec3(q.xyz >> 12) * RAYLAB_BVH_BOX_STEP;
+    first = q.w >> 6;
+    code = q.w & 63;
+    return enterBox(origin, invDir, lo, hi, tMax);
+#else
     vec4 low = bvhNodeLow(node), high = bvhNodeHigh(node);
     first = int(low.w);
     code = int(high.w);
     return enterBox(origin, invDir, low.xyz, high.xyz, tMax);
+#endif
 }
 
 // A waiting node on the stack: its `first` and `code` in one int, not its

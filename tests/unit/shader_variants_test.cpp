@@ -83,14 +83,22 @@ const Variant kVariants[] = {
     {"solution/08-full/test_spheres.glsl",
      "framework/shaders/variants/eye-cells/08-full/test_spheres.glsl",
      {"if (enterNode(0, ray.origin, invDir, hit.t, first, code) == T_FAR) return;",
+      // A waiting node's first and code on the stack, not its index: no read at the pop.
+      "stackNode[size] = nearA ? first + 1 : first;",
       // One read of the sphere: WebGL clamps every indexed read.
-      "keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);"}},
+      "keepNearer(hit, intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w), KIND_SPHERE, i);",
+      "int node = 0;", "node = stackNode[size];", "first = int(bvhNodeLow(node).w);",
+      "code = int(bvhNodeHigh(node).w);"}},
     {"solution/02-shading/blinn_phong.glsl",
      "framework/shaders/variants/shared-work/02-shading/blinn_phong.glsl",
      {"for (int i = 0; i < uLightCount; ++i) {"}},
     {"solution/08-full/find_closest.glsl",
      "framework/shaders/variants/shared-work/08-full/find_closest.glsl",
-     {}},
+     // The triangle groups one by one (testTriangleGroup), the ray's shear worked out once.
+     {"for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {",
+      "if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;",
+      "keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + "
+      "1], uTriangleVertices[3 * i + 2]),"}},
     {"solution/06-textures/glow.glsl",
      "framework/shaders/variants/shared-work/08-full/glow.glsl",
      {"Hit blocker;",

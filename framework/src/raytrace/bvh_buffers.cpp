@@ -1,5 +1,6 @@
 #include "bvh_buffers.h"
 
+#include "bvh_boxes.h"
 #include "shader_constants.h"
 
 #include <vector>
@@ -8,7 +9,8 @@ namespace raylab {
 
 BvhBuffers::BvhBuffers(const Bvh& bvh)
     : nodeCount_(int(bvh.nodes.size())), treeItems_(bvh.items.begin(), bvh.items.end()) {
-    const std::vector<float> nodes = packedBvhNodes(bvh);
+    std::vector<float> nodes = packedBvhNodes(bvh);
+    appendBvhBoxTexels(bvh, nodes);  // the eye-cells walk's one-texel nodes (bvh_boxes.h)
     textures_.fill(0, GL_RGBA32F, nodes.data(), nodes.size() * sizeof(float));
     fillItems({});
 }

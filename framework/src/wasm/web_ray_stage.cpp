@@ -1,5 +1,6 @@
 #include "web_ray_stage.h"
 
+#include "bvh_boxes.h"
 #include "error.h"
 #include "eye_cells.h"
 #include "gpu_values.h"
@@ -61,6 +62,7 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
     if (variant_.bvh && reads("uBvhNodes")) {
         const Bvh bvh = buildBvh(scene_, 2, BvhObjects::SpheresAndMeshes);
         bvhNodes = packedBvhNodes(bvh);
+        appendBvhBoxTexels(bvh, bvhNodes);  // the eye-cells walk's one-texel nodes (bvh_boxes.h)
         bvhItems.assign(bvh.items.begin(), bvh.items.end());
         treeItemCount_ = bvhItems.size();
         if (reads("uEyeCells")) eyeCube_.emplace(kEyeCellResolution);

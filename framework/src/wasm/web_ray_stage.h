@@ -53,7 +53,7 @@ public:
     std::vector<float> torusToLocal(float t) const;
 
     // Filled where the program reads them (empty otherwise).
-    std::vector<float> bvhNodes;  // two RGBA texels per node (bvh_access.glsl)
+    std::vector<float> bvhNodes;  // 2 RGBA texels a node (bvh_access.glsl), then bvh_boxes.h's
     std::vector<int> bvhItems;    // the tree's items, then the eye cells' lists
     std::vector<int> lightCells;  // RGBA per cell
     std::vector<int> lightItems;

@@ -43,10 +43,11 @@ struct LightBuffer {
     double meanList() const;  // the same, on average over the cells that list any
 };
 
-// Cells along a face's edge: 64 (1.4 degrees at a face's centre). On pro
-// (tools/bench/instructions_per_frame.sh) 64 costs 2% less than 32: shorter
-// lists; the CPU builds pro's 3 x 6 x 64^2 cells once.
-inline constexpr int kLightBufferResolution = 64;
+// Cells along a face's edge: 128 (0.9 degrees at a face's centre). On pro
+// (tools/bench/instructions_per_frame.sh) 64 costs 2% less than 32 and 128
+// 1.2% less than 64: shorter lists; the CPU builds pro's 3 x 6 x 128^2
+// cells once (4.7 MB of cells).
+inline constexpr int kLightBufferResolution = 128;
 
 // Scenes with more spheres keep the BVH for shadow rays: the brute-force
 // build below tests every sphere against every cell.

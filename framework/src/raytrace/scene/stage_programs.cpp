@@ -1,6 +1,7 @@
 #include "stage_programs.h"
 
 #include "bvh.h"
+#include "bvh_boxes.h"
 #include "error.h"
 #include "eye_cells.h"
 #include "hidden_tori.h"
@@ -139,6 +140,9 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
         // deterministic build): at most one entry per level.
         const Bvh tree = buildBvh(scene, 2, BvhObjects::SpheresAndMeshes);
         defines.push_back("RAYLAB_BVH_STACK_SIZE " + std::to_string(std::max(1, tree.depth)));
+        // Its nodes one texel each, after the plain ones (bvh_boxes.h; the
+        // renderers append them to the same texture).
+        for (const std::string& d : bvhBoxDefines(tree)) defines.push_back(d);
     }
     const std::string prelude =
         variant.specialized ? bakedSceneGlsl(scene, variant.sphereStorage) : std::string();

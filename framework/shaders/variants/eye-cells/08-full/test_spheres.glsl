@@ -40,10 +40,33 @@ const int BVH_STACK_SIZE = 32;  // the tree's depth is checked on the CPU
 // were a quarter of a frame's instructions (this saved 6% of the frame).
 float enterNode(int node, vec3 origin, vec3 invDir, float tMax, out int first, out int code)
 {
+#ifdef RAYLAB_BVH_BOXES
+    // The node's one-texel copy (framework/src/raytrace/scene/bvh_boxes.h):
+    // its box in 12-bit steps of a grid over the root's box, rounded
+    // outwards, and its first and code. One read instead of two.
+    ivec4 q = ivec4(bvhNodeLow(RAYLAB_BVH_BOXES + node));
+    vec3 lo = RAYLAB_BVH_BOX_ORIGIN + vec3(q.xyz & 0xfff) * RAYLAB_BVH_BOX_STEP;
+    vec3 hi = RAYLAB_BVH_BOX_ORIGIN + vec3(q.xyz >> 12) * RAYLAB_BVH_BOX_STEP;
+    first = q.w >> 6;
+    code = q.w & 63;
+    return enterBox(origin, invDir, lo, hi, tMax);
+#else
     vec4 low = bvhNodeLow(node), high = bvhNodeHigh(node);
     first = int(low.w);
     code = int(high.w);
     return enterBox(origin, invDir, low.xyz, high.xyz, tMax);
+#endif
+}
+
+// A waiting node on the stack: its `first` and `code` in one int, not its
+// index (the pop would read the node again). A code is 8 * count + kind
+// with at most 2 spheres a leaf here (eye cells: spheres only, at most
+// kEyeCellMaxSpheres), far below 1024; `first` stays below 2^21.
+const int NODE_CODE_BITS = 10;
+const int NODE_CODE_MASK = (1 << NODE_CODE_BITS) - 1;
+int packNode(int first, int code)
+{
+    return (first << NODE_CODE_BITS) | code;
 }
 
 // Walks the tree, keeping the nearest hit closer than hit.t. With anyHit it
@@ -80,7 +103,9 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
             bool nearA = enterA <= enterB;
             float enterFar = max(enterA, enterB);
             if (enterFar < T_FAR && size < BVH_STACK_SIZE) {
-                stackNode[size] = nearA ? first + 1 : first;
+                // The far child's `first` and `code`, packed: popping it
+                // needs no read of its node (two fetches of 8 pixels each).
+                stackNode[size] = nearA ? packNode(firstB, codeB) : packNode(firstA, codeA);
                 stackEnter[size] = enterFar;
                 ++size;
             }
@@ -105,17 +130,17 @@ void walkBvh(Ray ray, inout Hit hit, bool anyHit)
         // shadow ray's boxes all can: its hit.t stays the light's distance,
         // the limit they were pushed under, until it stops.)
         bool found = false;
-        int node = 0;
+        int waiting = 0;
         while (size > 0 && !found) {
             --size;
             if (anyHit || stackEnter[size] < hit.t) {
-                node = stackNode[size];
+                waiting = stackNode[size];
                 found = true;
             }
         }
         if (!found) return;
-        first = int(bvhNodeLow(node).w);
-        code = int(bvhNodeHigh(node).w);
+        first = waiting >> NODE_CODE_BITS;
+        code = waiting & NODE_CODE_MASK;
     }
 }
 

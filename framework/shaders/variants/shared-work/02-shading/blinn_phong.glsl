@@ -24,12 +24,16 @@ vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)
     // loop below then runs as often as the pixel with the most of them
     // needs (of the 8 that llvmpipe runs together), and no pixel spends a
     // turn on a light behind its surface, which adds nothing.
-    int lit[MAX_LIGHTS];
-    int litCount = 0;
+    // The list is a mask of bits, one a light, not an array: a write to an
+    // array at an index that differs between the 8 pixels is 8 stores on
+    // llvmpipe, a read 8 loads. The lights still come in index order.
+    int lit = 0;
     for (int i = 0; i < uLightCount; ++i)
-        if (dot(normal, uLightPositions[i] - point) > 0.0) lit[litCount++] = i;
-    for (int k = 0; k < litCount; ++k) {
-        int i = lit[k];
+        if (dot(normal, uLightPositions[i] - point) > 0.0) lit |= 1 << i;
+    while (lit != 0) {
+        int lowest = lit & -lit;
+        lit -= lowest;
+        int i = int(log2(float(lowest)));  // exact: a power of two
         if (!lightVisible(point, normal, i)) continue;  // blocked: in shadow
         vec3 toLight = normalize(uLightPositions[i] - point);
 

@@ -45,7 +45,31 @@ void keepNearer(inout Hit hit, float t, int kind, int index)
 
 #include "scene_meshes.glsl"
 #include "test_spheres.glsl"
+#include "triangle_shear.glsl"
 
+
+// One group of the scene's triangles (scene_objects.glsl): skipped when the
+// ray misses its box, or meets it only beyond the nearest hit.
+void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout Hit hit, bool stopAtFirst)
+{
+    if (stopAtFirst && hit.id >= 0) return;
+    vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
+    vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
+    if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) return;
+    int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
+#if defined(SCENE_BAKED) && defined(RAYLAB_FRAGMENT_SHADER)
+    // A zero the compiler cannot see: the group's bounds are constants in
+    // the specialised program, and a loop of constant length would be
+    // unrolled into all its triangle tests, run (masked) even where no
+    // pixel's ray meets the group's box. A group of one or two triangles
+    // (the mirror) is left to be unrolled: a turn of the loop costs about
+    // two tests with constant corners, whose reads are 8 loads each.
+    if (end - first > 2) end += int(gl_FragCoord.x < -1.0);
+#endif
+    for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
+        keepNearer(hit, intersectTriangleSheared(ray, shear, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+                   KIND_TRIANGLE, i);
+}
 
 // Every object but the spheres, one by one. With stopAtFirst it returns as
 // soon as something nearer than hit.t is found.
@@ -55,22 +79,26 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
         keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);
     for (int i = 0; i < uDiscCount && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
-    // The triangles group by group (scene_objects.glsl): a group whose box
-    // the ray misses, or meets only beyond the nearest hit, is skipped.
     vec3 invDir = inverseDirection(ray.dir);
-    for (int g = 0; g < uTriangleGroupCount && !(stopAtFirst && hit.id >= 0); ++g) {
-        vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
-        vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
-        if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) continue;
-        int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
-        for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
-            keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
-                       KIND_TRIANGLE, i);
-    }
+    TriangleShear shear = triangleShear(ray.dir);  // once for all the triangles
+#ifdef SCENE_BAKED
+    // The groups one by one with constant indices, not in a loop: each
+    // group's box and range are then constants of the program, not reads
+    // (a read at an index the compiler cannot prove the same for all 8
+    // lock-step pixels is 8 loads on llvmpipe). Groups past the eighth, if
+    // any, in the loop.
+#define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) testTriangleGroup(ray, invDir, shear, max(min(G, uTriangleGroupCount - 1), 0), hit, stopAtFirst);
+    TRIANGLE_GROUP(0) TRIANGLE_GROUP(1) TRIANGLE_GROUP(2) TRIANGLE_GROUP(3)
+    TRIANGLE_GROUP(4) TRIANGLE_GROUP(5) TRIANGLE_GROUP(6) TRIANGLE_GROUP(7)
+#undef TRIANGLE_GROUP
+    for (int g = 8; g < uTriangleGroupCount; ++g)
+#else
+    for (int g = 0; g < uTriangleGroupCount; ++g)
+#endif
+        testTriangleGroup(ray, invDir, shear, g, hit, stopAtFirst);
     for (int i = 0; i < uTorusCount && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectTorus(ray, i), KIND_TORUS, i);
 }
-
 
 Hit pixelFirstHit = Hit(T_FAR, -1);
 bool pixelSearched = false;

@@ -20,13 +20,12 @@ Scene demoScene(const char* name) {
     return loadScene(projectRoot() / "assets" / "scenes" / (std::string(name) + ".json"));
 }
 
-// Both ways the GLSL may round origin + q * step.
+// Both ways the GLSL may round origin + q * step (bvh_boxes.h's decoding).
 void decodedBoth(float origin, float step, int q, double& low, double& high) {
-    volatile float product = float(q) * step;
-    const double apart = double(origin + product);
-    const double fused = double(std::fma(float(q), step, origin));
-    low = std::min(apart, fused);
-    high = std::max(apart, fused);
+    float apart, fused;
+    bvh_boxes_detail::decoded(origin, step, q, apart, fused);
+    low = std::min(double(apart), double(fused));
+    high = std::max(double(apart), double(fused));
 }
 
 struct Audit {

@@ -73,25 +73,19 @@ inline void decoded(float origin, float step, int q, float& apart, float& fused)
     fused = std::fma(float(q), step, origin);
 }
 
-inline int stepBelow(float origin, float step, double v) {
-    int q =
-        int(std::clamp(std::floor((v - double(origin)) / double(step)), 0.0, double(kBvhBoxTop)));
+// The step index whose decoded corner (either rounding) lies on V's outer
+// side: at or below V for a box's minimum (DOWN), at or above it for its
+// maximum; from the nearest guess outward, within [0, kBvhBoxTop].
+inline int stepOutside(float origin, float step, double v, bool down) {
+    const double guess = (v - double(origin)) / double(step);
+    int q = int(std::clamp(down ? std::floor(guess) : std::ceil(guess), 0.0, double(kBvhBoxTop)));
     for (;;) {
         float apart, fused;
         decoded(origin, step, q, apart, fused);
-        if ((double(apart) <= v && double(fused) <= v) || q == 0) return q;
-        --q;
-    }
-}
-
-inline int stepAbove(float origin, float step, double v) {
-    int q =
-        int(std::clamp(std::ceil((v - double(origin)) / double(step)), 0.0, double(kBvhBoxTop)));
-    for (;;) {
-        float apart, fused;
-        decoded(origin, step, q, apart, fused);
-        if ((double(apart) >= v && double(fused) >= v) || q == kBvhBoxTop) return q;
-        ++q;
+        const bool outside = down ? double(apart) <= v && double(fused) <= v
+                                  : double(apart) >= v && double(fused) >= v;
+        if (outside || q == (down ? 0 : kBvhBoxTop)) return q;
+        q += down ? -1 : 1;
     }
 }
 
@@ -106,8 +100,8 @@ inline void appendBvhBoxTexels(const Bvh& bvh, std::vector<float>& nodes) {
         const double hi[3] = {double(n.box.hi.x), double(n.box.hi.y), double(n.box.hi.z)};
         float texel[4];
         for (int a = 0; a < 3; ++a) {
-            const int qlo = bvh_boxes_detail::stepBelow(g.origin[a], g.step[a], lo[a]);
-            const int qhi = bvh_boxes_detail::stepAbove(g.origin[a], g.step[a], hi[a]);
+            const int qlo = bvh_boxes_detail::stepOutside(g.origin[a], g.step[a], lo[a], true);
+            const int qhi = bvh_boxes_detail::stepOutside(g.origin[a], g.step[a], hi[a], false);
             texel[a] = float(qlo | qhi << kBvhBoxBits);
         }
         const int code = n.count > 0 ? kBvhLeafKinds * n.count + n.kind : 0;

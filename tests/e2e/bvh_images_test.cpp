@@ -197,6 +197,27 @@ TEST_P(VariantViews, EyeCellsDrawWhatTheWalkDraws) {
     EXPECT_EQ(d.maxDiff, 0) << "the same nearest hits: the same bytes";
 }
 
+// The shells' slots (`raylab demo`): a box-like shell of triangles, pro's
+// glass cube, is tested by the faces a ray can meet it on first, 6 of its
+// 12 triangles (scene/shell_slots.h; tests/unit/shell_slots_test.cpp shows
+// the CPU check of that choice failing on two wrong rules). The same
+// nearest hits: not one byte changes. Views without such a shell are
+// skipped (their program is the same text).
+TEST_P(VariantViews, ShellSlotsDrawWhatEveryTriangleDraws) {
+    const CheckView& v = view(GetParam());
+    ShaderVariant slots, every;
+    slots.specialized = every.specialized = true;
+    slots.useDemoLevers();
+    every.useDemoLevers();
+    every.shellSlots = false;
+    if (!slots.usesShellSlots(sceneOf(v))) GTEST_SKIP() << "no box-like shell in " << v.name;
+    ImageDiff d = diff(render(v, slots), render(v, every));
+    std::printf("[ figure ] %s: shell slots vs every triangle: %.3f%% of pixels differ (max "
+                "%d/255)\n",
+                v.name.c_str(), 100.0 * d.badShare, d.maxDiff);
+    EXPECT_EQ(d.maxDiff, 0) << "the same nearest hits: the same bytes";
+}
+
 // The bench's tree-all row (the scene's triangles and discs in the BVH too)
 // draws what the reference draws (the comparison is shown failing on a
 // broken traversal below).

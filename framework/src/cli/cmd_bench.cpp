@@ -67,7 +67,9 @@ constexpr double kWeightCut = ShaderVariant::kDemoWeightCut;
 // for the scene's triangles and discs in the BVH (RAYLAB_TREE_ALL), "shared"
 // for the shared-work variants (RAYLAB_SHARED_WORK), "lbuf" for shadow rays
 // through a light buffer (RAYLAB_LIGHT_BUFFER), "eye" for primary rays
-// through the eye's cells (RAYLAB_EYE_CELLS).
+// through the eye's cells (RAYLAB_EYE_CELLS). The rows with the demo's
+// levers ("lbuf") also test box-like shells by their slots
+// (RAYLAB_SHELL_SLOTS): the same picture, so no name of its own.
 std::string leverName(const ShaderVariant& v) {
     std::string name = v.oldPath ? "old-path" : (v.treeAll ? "tree-all" : "");
     auto add = [&](const std::string& lever) { name += (name.empty() ? "" : "+") + lever; };

@@ -107,6 +107,7 @@ int cmdDemo(const DemoOptions& demo) {
     std::string levers = "rays under 1/255 of the pixel not traced, shared work (glow and lights)";
     if (variant.usesLightBuffer(setup.scene)) levers += ", shadow rays through a light buffer";
     if (variant.usesEyeCells(setup.scene)) levers += ", primary rays through the eye's cells";
+    if (variant.usesShellSlots(setup.scene)) levers += ", box-like shells by the faces met first";
     std::printf("raylab demo: stage %s, scene %s, %dx%d, depth %d, shadows %s, %s, specialised "
                 "shader, %s, %s backend, %s\n",
                 stage.id.c_str(), setup.scene.file.c_str(), setup.size.width, setup.size.height,

@@ -1,5 +1,6 @@
 #include "scene_baking.h"
 #include "gpu_values.h"
+#include "shell_slots.h"
 #include "text_format.h"
 #include "triangle_groups.h"
 
@@ -70,6 +71,26 @@ auto gather(const std::vector<T>& list, F f) {
     return out;
 }
 
+// The groups that are box-like shells (shell_slots.h), for the demo's
+// program: only for scenes that have one, so that the others' programs
+// stay as they were.
+std::string shellSlotsGlsl(const Scene& scene, const std::vector<TriangleGroup>& groups) {
+    const std::vector<std::vector<ShellSlot>> slots = shellSlots(scene, groups);
+    std::vector<int> firstSlot;
+    std::vector<glm::vec4> planes, sides;
+    for (const std::vector<ShellSlot>& group : slots) {
+        firstSlot.push_back(group.empty() ? -1 : int(planes.size()));
+        for (const ShellSlot& s : group) {
+            planes.emplace_back(glm::vec3(s.normal), float(s.top));
+            sides.emplace_back(float(s.bottom), float(s.topTriangle), float(s.bottomTriangle),
+                               0.0f);
+        }
+    }
+    if (planes.empty()) return {};
+    return ints("uTriangleGroupSlot", firstSlot) + vec4s("uShellSlotPlane", planes) +
+           vec4s("uShellSlotSides", sides);
+}
+
 }  // namespace
 
 std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage) {
@@ -130,6 +151,7 @@ std::string bakedSceneGlsl(const Scene& scene, bool spheresInStorage) {
     g += vec4s("uTriangleGroupHigh", gather(groups, [](const TriangleGroup& t) {
                    return glm::vec4(gpuPoint(t.hi), float(t.count));
                }));
+    g += shellSlotsGlsl(scene, groups);
 
     g += constInt("uTorusCount", int(scene.tori.size()));
     g += vec4s("uTori", gather(scene.tori, gpuTorus));

@@ -8,6 +8,8 @@
 #include "light_buffer.h"
 #include "paths.h"
 #include "scene_baking.h"
+#include "shell_slots.h"
+#include "triangle_groups.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -70,13 +72,15 @@ void ShaderVariant::useDemoLevers() {
     sharedWork = true;
     lightBuffer = true;
     eyeCells = true;
+    shellSlots = true;
 }
 
 bool ShaderVariant::usesLightBuffer(const Scene& scene) const {
     // The old path has its own light_visibility.glsl; tree-all moves the
     // triangles and discs out of testOthers; the naive numerics' fixed ray
     // offset is not covered by the lists' margins.
-    return lightBuffer && !oldPath && !treeAll && !naiveNumerics && lightBufferSuits(scene);
+    return lightBuffer && sharedWork && !oldPath && !treeAll && !naiveNumerics &&
+           lightBufferSuits(scene);
 }
 
 bool ShaderVariant::usesEyeCells(const Scene& scene) const {
@@ -84,6 +88,14 @@ bool ShaderVariant::usesEyeCells(const Scene& scene) const {
     // with tree-all's triangles and discs in it; the old path is the tracer
     // before the bench's levers.
     return eyeCells && bvh && !treeAll && !oldPath && eyeCellsSuit(scene);
+}
+
+bool ShaderVariant::usesShellSlots(const Scene& scene) const {
+    // The slots are constants of the specialised program, and the shell's
+    // test sits in the shared-work variant's find_closest.glsl; tree-all
+    // moves the triangles into the BVH.
+    return shellSlots && specialized && sharedWork && !treeAll && !oldPath &&
+           hasShellSlots(scene, triangleGroups(scene));
 }
 
 std::vector<std::string> ShaderVariant::extensions() const {
@@ -134,6 +146,10 @@ StagePrograms assembleStagePrograms(const StageInfo& stage, const StageSources& 
         // shadow ray meets only behind a shell of triangles (hidden_tori.h).
         if (toriHiddenFromLights(scene)) defines.push_back("RAYLAB_TORI_HIDDEN_FROM_LIGHTS");
     }
+    // A box-like shell of triangles: a nearest-hit search tests the half of
+    // its faces a ray can meet first (shell_slots.h; the constants come
+    // with the baked scene).
+    if (variant.usesShellSlots(scene)) defines.push_back("RAYLAB_SHELL_SLOTS");
     if (variant.usesEyeCells(scene)) {
         defines.push_back("RAYLAB_EYE_CELLS");
         // Its walk's stack sized to the tree the renderer builds (the same

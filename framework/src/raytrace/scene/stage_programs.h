@@ -48,7 +48,8 @@ struct ShaderVariant {
     // the same picture. Where the scene suits it (lightBufferSuits) and not
     // with oldPath, treeAll or naiveNumerics. On with the demo's levers.
     // Its shadow rays also skip tori no light can see (hidden_tori.h:
-    // RAYLAB_TORI_HIDDEN_FROM_LIGHTS).
+    // RAYLAB_TORI_HIDDEN_FROM_LIGHTS). Only with sharedWork, whose triangle
+    // shear its shadow rays use.
     bool lightBuffer = false;
     // RAYLAB_EYE_CELLS: primary rays find the spheres they may meet in the
     // eye's cells (scene/eye_cells.h) instead of walking the BVH from its
@@ -56,6 +57,11 @@ struct ShaderVariant {
     // the program walks a BVH of spheres (not with oldPath or treeAll). On
     // with the demo's levers.
     bool eyeCells = false;
+    // RAYLAB_SHELL_SLOTS: in the specialised program with shared work, a
+    // group of the scene's triangles that is a box-like shell has its
+    // nearest-hit searches test only the faces a ray can meet it on first
+    // (scene/shell_slots.h); the same picture. On with the demo's levers.
+    bool shellSlots = false;
     // RAYLAB_TREE_ALL: stage 08's BVH also holds the scene file's triangles
     // and discs (the bench's tree-all row; bvh.h says why it is not the default).
     bool treeAll = false;
@@ -74,12 +80,14 @@ struct ShaderVariant {
     bool webGl2 = false;
     // Switches on the levers of `raylab demo` and of the window showing the
     // solution: the weight cut (kDemoWeightCut), shared work, the light
-    // buffer and the eye's cells. Only for
+    // buffer, the eye's cells and the shells' slots. Only for
     // the solution: their variant files replace files students write.
     void useDemoLevers();
     std::vector<std::string> defines() const;  // the defines for the switches above
     // Whether a program for SCENE gets RAYLAB_LIGHT_BUFFER (see lightBuffer).
     bool usesLightBuffer(const Scene& scene) const;
+    // Whether a program for SCENE gets RAYLAB_SHELL_SLOTS (see shellSlots).
+    bool usesShellSlots(const Scene& scene) const;
     // Whether a program for SCENE gets RAYLAB_EYE_CELLS (see eyeCells).
     bool usesEyeCells(const Scene& scene) const;
     std::vector<std::string> extensions() const;  // the GLSL extensions they need

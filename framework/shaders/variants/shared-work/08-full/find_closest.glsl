@@ -53,10 +53,8 @@ void keepNearer(inout Hit hit, float t, int kind, int index)
 void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout Hit hit, bool stopAtFirst)
 {
     if (stopAtFirst && hit.id >= 0) return;
-    vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
-    vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
-    if (enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) return;
     int first = int(uTriangleGroupLow[g].w), end = first + int(uTriangleGroupHigh[g].w);
+    bool unrolled = false;
 #if defined(SCENE_BAKED) && defined(RAYLAB_FRAGMENT_SHADER)
     // A zero the compiler cannot see: the group's bounds are constants in
     // the specialised program, and a loop of constant length would be
@@ -65,11 +63,47 @@ void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout H
     // (the mirror) is left to be unrolled: a turn of the loop costs about
     // two tests with constant corners, whose reads are 8 loads each.
     if (end - first > 2) end += int(gl_FragCoord.x < -1.0);
+    else unrolled = true;
 #endif
+    // Not for an unrolled group: llvmpipe runs its tests (masked) whatever
+    // the box says, so the box test would only cost.
+    vec3 lo = uTriangleGroupLow[g].xyz, hi = uTriangleGroupHigh[g].xyz;
+    vec3 pad = 1e-4 * (abs(lo) + abs(hi)) + 1e-5;  // rounding must not cut off a corner
+    if (!unrolled && enterBox(ray.origin, invDir, lo - pad, hi + pad, hit.t) == T_FAR) return;
     for (int i = first; i < end && !(stopAtFirst && hit.id >= 0); ++i)
         keepNearer(hit, intersectTriangleSheared(ray, shear, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
                    KIND_TRIANGLE, i);
 }
+
+#ifdef RAYLAB_SHELL_SLOTS
+// A group that is a box-like shell (framework/src/raytrace/scene/
+// shell_slots.h says why this finds the same first hit): of each pair of
+// opposite faces only the plane a ray can meet the shell on first, so 6
+// triangle tests for pro's glass cube, not 12. Every number here is a
+// constant of the specialised program (g is, and the slots come baked with
+// the scene), so the loop is unrolled into tests with constant corners: no
+// reads, and no box test, which would only cost (as for the unrolled
+// groups above).
+void testShellGroup(Ray ray, TriangleShear shear, int g, inout Hit hit, bool stopAtFirst)
+{
+    if (stopAtFirst && hit.id >= 0) return;
+    int slot = uTriangleGroupSlot[g], slots = int(uTriangleGroupHigh[g].w) / 2;
+    for (int k = 0; k < slots; ++k) {
+        vec4 plane = uShellSlotPlane[slot + k];  // xyz: the top face's normal, w: its plane
+        vec4 sides = uShellSlotSides[slot + k];  // x: the bottom's plane; y, z: the triangles
+        float at = dot(plane.xyz, ray.origin), along = dot(plane.xyz, ray.dir);
+        // Going down (against the top's normal): the top if the ray crosses
+        // its plane beyond T_MIN, else the bottom; going up, the bottom if
+        // it crosses that plane beyond T_MIN, else the top.
+        bool top = along < 0.0 ? at - plane.w > T_MIN * -along : sides.x - at <= T_MIN * along;
+        int t = int(sides.y), b = int(sides.z);  // both corners are constants: chosen, not read
+        vec3 p0 = top ? uTriangleVertices[3 * t] : uTriangleVertices[3 * b];
+        vec3 p1 = top ? uTriangleVertices[3 * t + 1] : uTriangleVertices[3 * b + 1];
+        vec3 p2 = top ? uTriangleVertices[3 * t + 2] : uTriangleVertices[3 * b + 2];
+        keepNearer(hit, intersectTriangleSheared(ray, shear, p0, p1, p2), KIND_TRIANGLE, top ? t : b);
+    }
+}
+#endif
 
 // Every object but the spheres, one by one. With stopAtFirst it returns as
 // soon as something nearer than hit.t is found.
@@ -87,10 +121,20 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
     // (a read at an index the compiler cannot prove the same for all 8
     // lock-step pixels is 8 loads on llvmpipe). Groups past the eighth, if
     // any, in the loop.
-#define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) testTriangleGroup(ray, invDir, shear, max(min(G, uTriangleGroupCount - 1), 0), hit, stopAtFirst);
+#define GROUP_INDEX(G) max(min(G, uTriangleGroupCount - 1), 0)
+#ifdef RAYLAB_SHELL_SLOTS
+    // Which groups are shells is a constant too: each group compiles one
+    // test or the other, not both.
+#define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) { \
+        if (uTriangleGroupSlot[GROUP_INDEX(G)] >= 0) testShellGroup(ray, shear, GROUP_INDEX(G), hit, stopAtFirst); \
+        else testTriangleGroup(ray, invDir, shear, GROUP_INDEX(G), hit, stopAtFirst); }
+#else
+#define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) testTriangleGroup(ray, invDir, shear, GROUP_INDEX(G), hit, stopAtFirst);
+#endif
     TRIANGLE_GROUP(0) TRIANGLE_GROUP(1) TRIANGLE_GROUP(2) TRIANGLE_GROUP(3)
     TRIANGLE_GROUP(4) TRIANGLE_GROUP(5) TRIANGLE_GROUP(6) TRIANGLE_GROUP(7)
 #undef TRIANGLE_GROUP
+#undef GROUP_INDEX
     for (int g = 8; g < uTriangleGroupCount; ++g)
 #else
     for (int g = 0; g < uTriangleGroupCount; ++g)

@@ -1,6 +1,7 @@
 #include "cell_cube.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace raylab {
@@ -62,6 +63,29 @@ CellBall triangleBall(const Triangle& t) {
     double radius = 0.0;
     for (const glm::dvec3& v : t.vertices) radius = std::max(radius, glm::length(v - centre));
     return {centre, radius};
+}
+
+std::vector<CellBall> triangleBalls(const Triangle& t, int splits) {
+    std::vector<Triangle> pieces{t};
+    for (int k = 0; k < splits; ++k) {
+        std::vector<Triangle> finer;
+        finer.reserve(4 * pieces.size());
+        for (const Triangle& p : pieces) {
+            const glm::dvec3 a = p.vertices[0], b = p.vertices[1], c = p.vertices[2];
+            const glm::dvec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
+            for (const auto& corners :
+                 {std::array<glm::dvec3, 3>{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}}) {
+                Triangle piece = p;
+                piece.vertices = corners;
+                finer.push_back(piece);
+            }
+        }
+        pieces = std::move(finer);
+    }
+    std::vector<CellBall> balls;
+    balls.reserve(pieces.size());
+    for (const Triangle& p : pieces) balls.push_back(triangleBall(p));
+    return balls;
 }
 
 double sceneReach(const Scene& scene) {

@@ -24,6 +24,11 @@ struct CellBall {
 CellBall sweptBall(const Sphere& s);
 // The ball around triangle T's corners (triangles never move).
 CellBall triangleBall(const Triangle& t);
+// Balls around the 4^SPLITS pieces of triangle T cut at its edges' middles,
+// SPLITS times over: together they hold the triangle, and hug it far more
+// closely than the one ball (a cube face's triangle in pro is 2.5 units
+// long; its ball is a sphere, its pieces' balls a thin slab).
+std::vector<CellBall> triangleBalls(const Triangle& t, int splits);
 
 // The largest distance from the origin of any point on a bounded object or
 // a light, 1% more: shading points beyond it lie on an infinite plane.

@@ -1,6 +1,7 @@
 #include "light_buffer.h"
 
 #include "cell_cube.h"
+#include "convex_shell.h"
 #include "float_rounding.h"
 
 #include <algorithm>
@@ -35,6 +36,20 @@ int lightBufferCell(int resolution, int light, glm::vec3 d) {
     return light * 6 * resolution * resolution + cubeCell(resolution, d);
 }
 
+std::vector<bool> facesTurnedAway(const Scene& scene, glm::dvec3 light, double room) {
+    std::vector<bool> away(scene.triangles.size(), false);
+    for (const ConvexShell& shell : convexShells(scene)) {
+        const double r = room + shell.flat;
+        double outside = -1e300;
+        for (std::size_t k = 0; k < shell.triangles.size(); ++k)
+            outside = std::max(outside, planeDistance(shell, k, light));
+        if (outside < r) continue;  // the light is inside, or too near to say
+        for (std::size_t k = 0; k < shell.triangles.size(); ++k)
+            if (planeDistance(shell, k, light) <= -r) away[std::size_t(shell.triangles[k])] = true;
+    }
+    return away;
+}
+
 LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     LightBuffer buffer;
     buffer.resolution = resolution;
@@ -58,8 +73,22 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
         };
         for (std::size_t i = 0; i < scene.spheres.size(); ++i)
             list(sweptBall(scene.spheres[i]), int(i), sphereLists);
-        for (std::size_t i = 0; i < scene.triangles.size(); ++i)
-            list(triangleBall(scene.triangles[i]), int(i), triangleLists);
+        // A triangle by the balls of its pieces: the cells that any piece
+        // comes near, each once.
+        const std::vector<bool> away = facesTurnedAway(scene, light, margin);
+        std::vector<int> cells;
+        for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+            if (away[i]) continue;
+            cells.clear();
+            for (const CellBall& piece : triangleBalls(scene.triangles[i], kTriangleSplits)) {
+                cube.cellsNear(light, piece, margin, near);
+                cells.insert(cells.end(), near.begin(), near.end());
+            }
+            std::sort(cells.begin(), cells.end());
+            cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+            for (int c : cells)
+                triangleLists[l * std::size_t(perLight) + std::size_t(c)].push_back(int(i));
+        }
     }
     auto append = [&](const std::vector<int>& list) {
         const glm::ivec2 at(int(buffer.items.size()), int(list.size()));

@@ -53,6 +53,27 @@ inline constexpr int kLightBufferResolution = 128;
 // build below tests every sphere against every cell.
 inline constexpr std::size_t kLightBufferMaxSpheres = 1024;
 
+// How finely a triangle is cut for listing (cell_cube.h: 4^3 = 64 pieces).
+// On pro (tools/bench/instructions_per_frame.sh) the one ball around a
+// cube face's triangle listed it in about as many cells as the whole cube
+// covers; 16 pieces cost 2.4% fewer instructions a frame, 64 pieces 2.8%.
+// Pro's buffer then takes about 30 ms to build (8 ms with one ball).
+inline constexpr int kTriangleSplits = 3;
+
+// The scene's triangles that lie on a closed convex shell (convex_shell.h)
+// with LIGHT outside it, on a face whose plane has the light behind it by
+// more than ROOM (plus the shell's flatness): per triangle of the scene.
+// A shadow ray toward the light never needs them. Why: a segment from a
+// shading point to a light outside a convex shell that crosses the shell
+// leaves it last through a face it runs out of, and the light, further
+// along the segment, is in front of that face's plane. So the segment
+// always crosses a face turned toward the light too, and a shadow ray stops
+// at any blocker. ROOM covers how far the GLSL's ray runs off the exact
+// segment (rayOffMargin). Pro's glass cube: of its 12 triangles a light
+// sees at most 6. (The GPU side, the same picture to the byte:
+// tests/e2e/bvh_images_test.cpp's LightBufferDrawsWhatTheWalkDraws.)
+std::vector<bool> facesTurnedAway(const Scene& scene, glm::dvec3 light, double room);
+
 // Whether a program for SCENE may use a light buffer (spheres, at most
 // kLightBufferMaxSpheres of them, no meshes, at least one light).
 bool lightBufferSuits(const Scene& scene);
@@ -63,7 +84,9 @@ bool lightBufferSuits(const Scene& scene);
 int lightBufferCell(int resolution, int light, glm::vec3 direction);
 
 // Builds the lists for every light of SCENE (in the shaders' units).
-// Triangles are listed by a ball around their corners (they never move).
+// Triangles are listed by the balls of their pieces (cell_cube.h's
+// triangleBalls, kTriangleSplits); a closed convex shell's faces turned away
+// from the light are not listed at all (facesTurnedAway).
 // The cells as the shaders read them: four ints per cell (RGBA texels).
 std::vector<int> lightCellTexels(const LightBuffer& buffer);
 

@@ -8,8 +8,10 @@
 // cell its direction falls in, instead of walking the BVH and testing every
 // group of triangles: one read of the cell and two short loops, where a walk
 // is many steps of reads whose addresses differ between llvmpipe's 8
-// lock-step pixels. The lists are conservative, so the answer - blocked or
-// not - is the same as findBlocker's, bit for bit.
+// lock-step pixels. The lists hold every blocker the ray needs (a convex
+// shell's faces turned away from the light are left out: the ray would
+// cross a face turned toward it as well), so the answer - blocked or not -
+// is the same as findBlocker's, bit for bit.
 #include "light_buffer_access.glsl"  // lightCellList(cell), lightItem(k)
 uniform int uLightBufferSize;        // cells along a cube face's edge
 uniform int uLightBufferEveryCell;   // the cell listing every sphere and triangle
@@ -45,9 +47,12 @@ bool findLightBlocker(Ray ray, float maxT, int light)
         keepNearer(hit, intersectPlane(ray, uPlanes[i].xyz, uPlanes[i].w), KIND_PLANE, i);
     for (int i = 0; i < uDiscCount && hit.id < 0; ++i)
         keepNearer(hit, intersectDisc(ray, uDiscs[i].xyz, uDiscNormals[i], uDiscs[i].w), KIND_DISC, i);
+    // The ray's shear once, not per triangle (the shared-work variant's
+    // triangle_shear.glsl, which the light buffer always comes with).
+    TriangleShear shear = triangleShear(ray.dir);
     for (int k = 0; k < list.w && hit.id < 0; ++k) {
         int i = lightItem(list.z + k);
-        keepNearer(hit, intersectTriangle(ray, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
+        keepNearer(hit, intersectTriangleSheared(ray, shear, uTriangleVertices[3 * i], uTriangleVertices[3 * i + 1], uTriangleVertices[3 * i + 2]),
                    KIND_TRIANGLE, i);
     }
 #ifndef RAYLAB_TORI_HIDDEN_FROM_LIGHTS

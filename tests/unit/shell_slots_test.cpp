@@ -49,7 +49,8 @@ int chosen(const ShellSlot& s, glm::vec3 origin, glm::vec3 dir, Rule rule) {
     const glm::vec3 n(s.normal);
     const float top = float(s.top), bottom = float(s.bottom), tMin = float(kTMin);
     const float at = glm::dot(n, origin), along = glm::dot(n, dir);
-    if (rule == Rule::IgnoringTMin) return (along < 0.0f ? at > top : at >= bottom) ? s.topTriangle : s.bottomTriangle;
+    if (rule == Rule::IgnoringTMin)
+        return (along < 0.0f ? at > top : at >= bottom) ? s.topTriangle : s.bottomTriangle;
     const bool isTop = along < 0.0f ? at - top > tMin * -along : bottom - at <= tMin * along;
     return isTop ? s.topTriangle : s.bottomTriangle;
 }
@@ -102,9 +103,8 @@ Audit audit(const Scene& scene, const std::vector<TriangleGroup>& groups,
         default: p = centre + 1.5 * size * std::cbrt(zeroOne(rng)) * direction();
         }
         const glm::dvec3 aim = centre + 0.5 * size * unit(rng) * direction();
-        const glm::dvec3 d = sample % 2 == 0 && glm::length(aim - p) > 1e-6
-                                 ? glm::normalize(aim - p)
-                                 : direction();
+        const glm::dvec3 d =
+            sample % 2 == 0 && glm::length(aim - p) > 1e-6 ? glm::normalize(aim - p) : direction();
         // The GLSL's ray is in float.
         const glm::vec3 origin(p), dir(d);
         const glm::dvec3 o(origin), dd(dir);
@@ -180,8 +180,8 @@ TEST(ShellSlots, OnlyBoxLikeClosedShells) {
     Scene tetra = pro();
     tetra.triangles.clear();
     const glm::dvec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, 0, 1);
-    for (const auto& corners : {std::array<glm::dvec3, 3>{a, c, b}, {a, b, d}, {a, d, c},
-                                {b, c, d}}) {
+    for (const auto& corners :
+         {std::array<glm::dvec3, 3>{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d}}) {
         Triangle t = pro().triangles.front();
         t.vertices = corners;
         tetra.triangles.push_back(t);

@@ -12,10 +12,10 @@
 namespace raylab {
 
 struct ConvexShell {
-    std::vector<int> triangles;        // indices into scene.triangles, ascending
-    std::vector<glm::dvec3> normals;   // per triangle: its face's outward unit normal
-    std::vector<glm::dvec3> points;    // per triangle: a point on its face (its first corner)
-    double size = 0.0;                 // the diagonal of its corners' box
+    std::vector<int> triangles;       // indices into scene.triangles, ascending
+    std::vector<glm::dvec3> normals;  // per triangle: its face's outward unit normal
+    std::vector<glm::dvec3> points;   // per triangle: a point on its face (its first corner)
+    double size = 0.0;                // the diagonal of its corners' box
     // How far from its face plane a corner may lie and still count as on
     // it: a box's face is two triangles, whose corners sit off one another's
     // plane by the rounding of the file's numbers.

@@ -40,15 +40,16 @@ std::vector<ShellSlot> slotsOf(const ConvexShell& shell) {
     for (std::size_t a = 0; a < all.size(); ++a) {
         if (paired[a]) continue;
         std::size_t b = a + 1;
-        while (b < all.size() && (paired[b] || glm::dot(all[a].normal, all[b].normal) > -(1.0 - 1e-12)))
+        while (b < all.size() &&
+               (paired[b] || glm::dot(all[a].normal, all[b].normal) > -(1.0 - 1e-12)))
             ++b;
         if (b == all.size() || all[a].triangles.size() != all[b].triangles.size()) return {};
         paired[a] = paired[b] = true;
         const Face &top = all[a], &bottom = all[b];
         const glm::dvec3 n = top.normal;  // the bottom's plane too, in the top's normal
         for (std::size_t j = 0; j < top.triangles.size(); ++j)
-            slots.push_back({n, glm::dot(n, top.point), glm::dot(n, bottom.point),
-                             top.triangles[j], bottom.triangles[j]});
+            slots.push_back({n, glm::dot(n, top.point), glm::dot(n, bottom.point), top.triangles[j],
+                             bottom.triangles[j]});
     }
     return slots;
 }

@@ -58,6 +58,21 @@ TEST(ShaderCommand, PrintsTheSpecialisedProgramAndItsOrigins) {
     EXPECT_EQ(generic.out.find("The scene, compiled in"), std::string::npos);
 }
 
+// --scene takes the demo scenes' names, as `raylab demo` does; the demo's
+// program for pro has its levers, the glass cube's shell slots among them.
+TEST(ShaderCommand, TakesTheDemoScenesByName) {
+    CommandResult r = runRaylab("shader --stage 08 --solution --demo --scene pro");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("assets/scenes/pro.json"), std::string::npos);
+    EXPECT_NE(r.out.find("#define RAYLAB_SHELL_SLOTS"), std::string::npos);
+    CommandResult lite = runRaylab("shader --stage 08 --solution --demo --scene lite");
+    ASSERT_EQ(lite.exitCode, 0) << lite.all();
+    EXPECT_EQ(lite.out.find("#define RAYLAB_SHELL_SLOTS"), std::string::npos) << "lite has no box";
+    CommandResult missing = runRaylab("shader --stage 08 --solution --scene pro-typo");
+    EXPECT_EQ(missing.exitCode, 2) << missing.all();
+    EXPECT_NE(missing.err.find("does not exist"), std::string::npos) << missing.err;
+}
+
 TEST(ShaderCommand, RefusesAFurStage) {
     CommandResult r = runRaylab("shader --stage f2 --solution");
     EXPECT_EQ(r.exitCode, 2) << r.all();

@@ -12,7 +12,7 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
             ->expected(0, 1);
     cmd.add_flag("--solution", o.solution, "use the complete solution instead of a lab");
     cmd.add_option("--scene", o.scene,
-                   "scene file (default: the stage's scene under assets/scenes/)");
+                   "lite, pro or a scene file (default: the stage's scene under assets/scenes/)");
     cmd.add_option("--size", o.size, "image size WIDTHxHEIGHT")->capture_default_str();
     if (withCamera) {
         cmd.add_option("--camera", o.camera,

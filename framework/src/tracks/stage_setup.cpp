@@ -38,7 +38,8 @@ StageSetup resolveStageOptions(const StageOptions& o) {
                     : labSources(*s.stage, o.labDir.empty() ? defaultLabRoot()
                                                             : std::filesystem::path(o.labDir));
     s.size = parseSize(o.size);
-    s.sceneFile = o.scene.empty() ? stageSceneFile(s.stage->scene) : std::filesystem::path(o.scene);
+    s.sceneFile = o.scene.empty() ? stageSceneFile(s.stage->scene)
+                                  : std::filesystem::path(demoSceneFile(o.scene));
     SceneTransform& transform = s.transform;
     if (!o.sceneScale.empty()) transform.scale = parseSceneScale(o.sceneScale);
     if (!o.sceneOffset.empty()) transform.offset = parseSceneOffset(o.sceneOffset);

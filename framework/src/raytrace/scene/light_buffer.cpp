@@ -36,16 +36,21 @@ int lightBufferCell(int resolution, int light, glm::vec3 d) {
     return light * 6 * resolution * resolution + cubeCell(resolution, d);
 }
 
-std::vector<bool> facesTurnedAway(const Scene& scene, glm::dvec3 light, double room) {
-    std::vector<bool> away(scene.triangles.size(), false);
+std::vector<std::vector<bool>> facesTurnedAway(const Scene& scene, double room) {
+    std::vector<std::vector<bool>> away(scene.lights.size(),
+                                        std::vector<bool>(scene.triangles.size(), false));
     for (const ConvexShell& shell : convexShells(scene)) {
         const double r = room + shell.flat;
-        double outside = -1e300;
-        for (std::size_t k = 0; k < shell.triangles.size(); ++k)
-            outside = std::max(outside, planeDistance(shell, k, light));
-        if (outside < r) continue;  // the light is inside, or too near to say
-        for (std::size_t k = 0; k < shell.triangles.size(); ++k)
-            if (planeDistance(shell, k, light) <= -r) away[std::size_t(shell.triangles[k])] = true;
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            const glm::dvec3 light = scene.lights[l].position;
+            double outside = -1e300;
+            for (std::size_t k = 0; k < shell.triangles.size(); ++k)
+                outside = std::max(outside, planeDistance(shell, k, light));
+            if (outside < r) continue;  // the light is inside, or too near to say
+            for (std::size_t k = 0; k < shell.triangles.size(); ++k)
+                if (planeDistance(shell, k, light) <= -r)
+                    away[l][std::size_t(shell.triangles[k])] = true;
+        }
     }
     return away;
 }
@@ -62,6 +67,7 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
     const std::size_t cellCount = std::size_t(perLight) * scene.lights.size();
     std::vector<std::vector<int>> sphereLists(cellCount), triangleLists(cellCount);
     std::vector<int> near;
+    const std::vector<std::vector<bool>> away = facesTurnedAway(scene, margin);
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         const glm::dvec3 light = scene.lights[l].position;
         // Adds I to the lists of the cells of light L's cube whose directions
@@ -75,10 +81,9 @@ LightBuffer buildLightBuffer(const Scene& scene, int resolution) {
             list(sweptBall(scene.spheres[i]), int(i), sphereLists);
         // A triangle by the balls of its pieces: the cells that any piece
         // comes near, each once.
-        const std::vector<bool> away = facesTurnedAway(scene, light, margin);
         std::vector<int> cells;
         for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-            if (away[i]) continue;
+            if (away[l][i]) continue;
             cells.clear();
             for (const CellBall& piece : triangleBalls(scene.triangles[i], kTriangleSplits)) {
                 cube.cellsNear(light, piece, margin, near);

@@ -60,9 +60,10 @@ inline constexpr std::size_t kLightBufferMaxSpheres = 1024;
 // Pro's buffer then takes about 30 ms to build (8 ms with one ball).
 inline constexpr int kTriangleSplits = 3;
 
-// The scene's triangles that lie on a closed convex shell (convex_shell.h)
-// with LIGHT outside it, on a face whose plane has the light behind it by
-// more than ROOM (plus the shell's flatness): per triangle of the scene.
+// Per light of SCENE, per triangle: whether the triangle lies on a closed
+// convex shell (convex_shell.h) with the light outside it, on a face whose
+// plane has the light behind it by more than ROOM (plus the shell's
+// flatness).
 // A shadow ray toward the light never needs them. Why: a segment from a
 // shading point to a light outside a convex shell that crosses the shell
 // leaves it last through a face it runs out of, and the light, further
@@ -72,7 +73,7 @@ inline constexpr int kTriangleSplits = 3;
 // segment (rayOffMargin). Pro's glass cube: of its 12 triangles a light
 // sees at most 6. (The GPU side, the same picture to the byte:
 // tests/e2e/bvh_images_test.cpp's LightBufferDrawsWhatTheWalkDraws.)
-std::vector<bool> facesTurnedAway(const Scene& scene, glm::dvec3 light, double room);
+std::vector<std::vector<bool>> facesTurnedAway(const Scene& scene, double room);
 
 // Whether a program for SCENE may use a light buffer (spheres, at most
 // kLightBufferMaxSpheres of them, no meshes, at least one light).

@@ -222,3 +222,20 @@ TEST(DocCommands, SlurmCommandsRunAsWritten) {
         GTEST_SKIP() << "run by ctest -L cluster (RAYLAB_DOC_TEST_CLUSTER=1)";
     runDocs("cluster");
 }
+
+// The docs' count of catalogued mistakes is the catalogue's.
+TEST(DocCommands, TheCountOfCataloguedMistakesIsTheCatalogues) {
+    std::size_t n = 0;
+    for (const auto& stage : fs::directory_iterator(sourceDir() / "tests/mistakes"))
+        if (stage.is_directory())
+            for (const auto& e : fs::directory_iterator(stage.path()))
+                n += e.path().extension() == ".json";
+    const std::string count = std::to_string(n);
+    EXPECT_NE(readFile(sourceDir() / "README.md").find("replacements (" + count + " across"),
+              std::string::npos)
+        << "README.md: the catalogue holds " << count;
+    EXPECT_NE(readFile(sourceDir() / "docs/grading.md")
+                  .find("typical mistakes of each stage (" + count + ")"),
+              std::string::npos)
+        << "docs/grading.md: the catalogue holds " << count;
+}

@@ -307,3 +307,140 @@ TEST(Grade, AtTheOpenLevelTheOpenLabIsTheLabAsHandedOut) {
     EXPECT_EQ(bad.exitCode, 2) << bad.all();
     EXPECT_NE(bad.err.find("unknown level 'expert'"), std::string::npos) << bad.err;
 }
+
+namespace {
+
+// STUDENT's result for STAGE (students/<student>/<stage>/result.json).
+nlohmann::json stageResult(const fs::path& out, const std::string& student,
+                           const std::string& stage) {
+    return nlohmann::json::parse(readFile(out / "students" / student / stage / "result.json"));
+}
+
+// A handout of 01-03 (each stage reads the student's own earlier folders),
+// every file solved, then 01's findClosest keeping the first hit.
+void handoutWithA01Slip(const fs::path& student) {
+    fs::create_directories(student.parent_path());
+    ASSERT_EQ(runRaylab("handout --stages 01-03 --out " + quote(student)).exitCode, 0);
+    ScratchDir solved;
+    writeSolvedLabs(solved.path());
+    for (const char* stage : {"01-raycast", "02-shading", "03-shadows"})
+        for (const auto& e : fs::directory_iterator(student / stage))
+            if (e.path().extension() == ".glsl" || e.path().extension() == ".frag")
+                fs::copy_file(solved / stage / e.path().filename(), e.path(),
+                              fs::copy_options::overwrite_existing);
+    replaceInFile(student / "01-raycast" / "find_closest.glsl", "if (t != NO_HIT && t < hit.t)",
+                  "if (t != NO_HIT && hit.id < 0)");
+}
+
+}  // namespace
+
+// A slip in 01 costs in 01 only: 02 and 03 of a handout read the student's
+// own 01, but grading takes the earlier stages solved (the default), and
+// names the student's 01 file where a later stage reads it. A course that
+// chooses the student's own earlier stages pays the slip again.
+TEST(Grade, AMistakeInAnEarlierStageCostsInItsOwnStageOnly) {
+    ScratchDir dir;
+    handoutWithA01Slip(dir / "class" / "ann");
+    const std::string args =
+        "grade --submissions " + quote(dir / "class") + " --stages 01-03 --jobs 2 --seed 5 --out ";
+    CommandResult r = runRaylab(args + quote(dir / "out"));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_LT(stageResult(dir / "out", "ann", "01-raycast")["score"].get<double>(), 80.0);
+    for (const char* later : {"02-shading", "03-shadows"}) {
+        const nlohmann::json s = stageResult(dir / "out", "ann", later);
+        EXPECT_DOUBLE_EQ(s["score"].get<double>(), 100.0) << later << s.dump(1);
+        const std::string message = s["message"].get<std::string>();
+        EXPECT_NE(message.find("01-raycast/find_closest.glsl (findClosest"), std::string::npos)
+            << later << ": " << message;
+        EXPECT_NE(message.find("graded with the earlier stages solved"), std::string::npos);
+    }
+    EXPECT_NE(readFile(dir / "out" / "report.html").find("01-raycast/find_closest.glsl"),
+              std::string::npos);
+
+    writeFile(dir / "own.json", R"({"earlier_stages": "own"})");
+    CommandResult own =
+        runRaylab(args + quote(dir / "own") + " --course " + quote(dir / "own.json"));
+    ASSERT_EQ(own.exitCode, 0) << own.all();
+    for (const char* later : {"02-shading", "03-shadows"}) {
+        const nlohmann::json s = stageResult(dir / "own", "ann", later);
+        EXPECT_LT(s["score"].get<double>(), 90.0) << later << ": the slip is paid again";
+        EXPECT_EQ(s["message"].get<std::string>().find("01-raycast"), std::string::npos);
+    }
+
+    // `raylab check` of 02 draws the student's own 01: it says so first.
+    CommandResult check = runRaylab("check --stage 02 --lab " + quote(dir / "class" / "ann"));
+    EXPECT_EQ(check.exitCode, 1) << check.all();
+    const std::size_t said = check.out.find("01-raycast/find_closest.glsl, and its findClosest "
+                                            "fails stage 01's check");
+    EXPECT_NE(said, std::string::npos) << check.out;
+    EXPECT_LT(said, check.out.find("function checks")) << "said first: " << check.out;
+    EXPECT_NE(check.out.find("fix it there first (raylab check --stage 01 --lab "),
+              std::string::npos);
+    // Fixed in 01, the note is gone.
+    replaceInFile(dir / "class" / "ann" / "01-raycast" / "find_closest.glsl",
+                  "if (t != NO_HIT && hit.id < 0)", "if (t != NO_HIT && t < hit.t)");
+    CommandResult fixed = runRaylab("check --stage 02 --lab " + quote(dir / "class" / "ann"));
+    EXPECT_EQ(fixed.exitCode, 0) << fixed.all();
+    EXPECT_EQ(fixed.out.find("fix it there first"), std::string::npos) << fixed.out;
+
+    writeFile(dir / "bad.json", R"({"earlier_stages": "mine"})");
+    CommandResult bad =
+        runRaylab(args + quote(dir / "bad") + " --course " + quote(dir / "bad.json"));
+    EXPECT_EQ(bad.exitCode, 2) << bad.all();
+    EXPECT_NE(bad.err.find("earlier_stages: expected \"solved\""), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir / "bad"));
+}
+
+// `raylab check` prints the score the grader gives for the same checks: a
+// course that grades without seeded views gives exactly that score.
+TEST(Grade, CheckPrintsTheScoreGradingGivesForTheSameChecks) {
+    ScratchDir dir;
+    const fs::path lab = dir / "class" / "cy";
+    writeSolvedLabs(lab);
+    // 01: the first hit kept (views and findClosest fail); 03: the shadow ray
+    // not offset (acne; its shadows-off view does not reach the stage's code).
+    replaceInFile(lab / "01-raycast" / "find_closest.glsl", "if (t != NO_HIT && t < hit.t)",
+                  "if (t != NO_HIT && hit.id < 0)");
+    replaceInFile(lab / "03-shadows" / "light_visibility.glsl",
+                  "Ray shadowRay = Ray(offsetRayOrigin(point, side), dir);",
+                  "Ray shadowRay = Ray(point, dir);");
+    writeFile(dir / "course.json", R"({"stages": {
+        "01-raycast": {"grading": {"seeded_views": 0}},
+        "03-shadows": {"grading": {"seeded_views": 0}}}})");
+    CommandResult g = runRaylab("grade --submissions " + quote(dir / "class") +
+                                " --stages 01,03 --jobs 2 --seed 9 --out " + quote(dir / "out") +
+                                " --course " + quote(dir / "course.json"));
+    ASSERT_EQ(g.exitCode, 0) << g.all();
+    for (const char* stage : {"01-raycast", "03-shadows"}) {
+        const nlohmann::json s = stageResult(dir / "out", "cy", stage);
+        EXPECT_FALSE(fs::exists(dir / "out" / "students" / "cy" / stage / "seeded-1.png"));
+        CommandResult c = runRaylab(std::string("check --stage ") + stage + " --lab " + quote(lab) +
+                                    " --course " + quote(dir / "course.json"));
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(c.out, m, std::regex("score: ([0-9.]+)/100"))) << c.out;
+        EXPECT_NEAR(std::stod(m[1]), s["score"].get<double>(), 0.005) << stage << "\n" << c.out;
+        EXPECT_NE(c.out.find("your course grades exactly these checks"), std::string::npos);
+        // Without the course file it says what else the grader draws.
+        CommandResult plain =
+            runRaylab(std::string("check --stage ") + stage + " --lab " + quote(lab));
+        EXPECT_NE(plain.out.find("also draws 3 views close to these"), std::string::npos)
+            << plain.out;
+    }
+}
+
+// f3's isSilhouette table holds degenerate triangles whose neighbour faces
+// the eye: comparing the two signs instead of testing their product (which a
+// zero normal makes 0: no fin) fails there.
+TEST(Grade, ComparingTheSilhouettesSignsFailsItsFunctionCheck) {
+    ScratchDir dir;
+    writeSolvedLabs(dir.path());
+    CommandResult right = runRaylab("check --stage f3 --lab " + quote(dir.path()));
+    EXPECT_NE(right.out.find("PASS isSilhouette"), std::string::npos) << right.out;
+    replaceInFile(dir / "f3-fins" / "silhouette.glsl",
+                  "return dot(pb, nAbc) * dot(pb, nBcd) < 0.0;",
+                  "return (dot(pb, nAbc) < 0.0) != (dot(pb, nBcd) < 0.0);");
+    CommandResult signs = runRaylab("check --stage f3 --lab " + quote(dir.path()));
+    EXPECT_EQ(signs.exitCode, 1) << signs.all();
+    EXPECT_NE(signs.out.find("FAIL isSilhouette"), std::string::npos) << signs.out;
+    EXPECT_NE(signs.out.find("degenerate triangle"), std::string::npos) << signs.out;
+}

@@ -331,3 +331,48 @@ TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
         EXPECT_EQ(c.exitCode, 0) << stage << " solved: " << c.all();
     }
 }
+
+// f3's guide, as a handout hands it out, run from the student's own folder
+// (not the RayLab folder): its render, check and shader commands work as
+// written (only `build/raylab` is this build's binary, and renders are
+// small). A scene path not found there is the project's.
+TEST(Handout, TheF3GuidesCommandsRunFromTheStudentsFolder) {
+    ScratchDir dir;
+    ASSERT_EQ(runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
+                         " handout --stages f1-f3 --out fur/")
+                  .exitCode,
+              0);
+    std::istringstream guide(readFile(dir / "fur" / "f3-fins" / "README.md"));
+    int ran = 0;
+    bool shader = false, scene = false;
+    for (std::string line; std::getline(guide, line);) {
+        if (line.rfind("build/raylab ", 0) != 0) continue;
+        std::string command = line.substr(std::string("build/raylab ").size());
+        command = command.substr(0, command.find('#'));
+        const bool render = command.rfind("render ", 0) == 0;
+        if (!render && command.rfind("check ", 0) != 0 && command.rfind("shader ", 0) != 0)
+            continue;  // run opens a window
+        if (command.find("--solution") != std::string::npos) continue;
+        if (render) command += " --size 40x30";
+        CommandResult r =
+            runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) + " " + command);
+        // check fails on the lab's open TODOs (1), but runs; nothing else may fail.
+        EXPECT_LE(r.exitCode, command.rfind("check ", 0) == 0 ? 1 : 0) << command << "\n"
+                                                                       << r.all();
+        EXPECT_EQ(r.err.find("does not exist"), std::string::npos) << command << "\n" << r.err;
+        shader = shader || (command.rfind("shader ", 0) == 0 &&
+                            r.out.find("uFurLength") != std::string::npos);
+        scene = scene || command.find("assets/scenes/fur/coarse.json") != std::string::npos;
+        ++ran;
+    }
+    EXPECT_GE(ran, 6);
+    EXPECT_TRUE(shader) << "the guide names raylab shader, and it prints the fins' program";
+    EXPECT_TRUE(scene) << "the guide's command with a project scene ran";
+    EXPECT_TRUE(fs::exists(dir / "coarse.png"));
+    // A scene that is nowhere is still a one-line error.
+    CommandResult missing = runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
+                                       " render --stage f3 --lab fur/ --scene assets/scenes/fur/"
+                                       "nope.json --out nope.png");
+    EXPECT_EQ(missing.exitCode, 2) << missing.all();
+    EXPECT_FALSE(fs::exists(dir / "nope.png"));
+}

@@ -3,19 +3,59 @@
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
+#include "course_file.h"
 #include "error.h"
 #include "function_harness.h"
 #include "image_compare.h"
+#include "lab_folder.h"
 #include "paths.h"
+#include "stage_score.h"
 #include "view_renderers.h"
 
 #include <cstdio>
 
 namespace raylab {
 
+namespace {
+
+// The grader's rule for views the lab as handed out draws (stage_score.h):
+// a failing picture equal to the handed-out lab's earns nothing, and a view
+// the handed-out lab draws right reaches none of the stage's code. Drawn only
+// when a view fails (with every view passing, neither rule changes a point).
+void markHandedOutViews(const StageInfo& stage, const std::string& scene, int w, int h,
+                        const SceneTransform& transform, const std::vector<Image>& mine,
+                        const std::vector<Image>& expected, const std::vector<bool>& viewPassed,
+                        std::vector<CheckCredit>& credits) {
+    const std::size_t firstView = credits.size() - mine.size();
+    bool anyFailed = false;
+    for (bool p : viewPassed) anyFailed = anyFailed || !p;
+    if (!anyFailed) return;
+    const CompareTolerance tolerance;
+    try {
+        ViewRenderers handedOut(stage, labSources(stage, handedOutLabRoot()), scene, w, h,
+                                transform);
+        for (std::size_t i = 0; i < mine.size(); ++i) {
+            const Image untouched = handedOut.render(stage.checkViews[i]);
+            CheckCredit& c = credits[firstView + i];
+            c.reaches =
+                !imagesAgree(compareImages(untouched, expected[i], tolerance.channel), tolerance);
+            c.earnsNothing =
+                c.earnsNothing ||
+                (!viewPassed[i] &&
+                 imagesAgree(compareImages(mine[i], untouched, tolerance.channel), tolerance));
+        }
+    } catch (const Error&) {  // no handed-out lab to compare with: grading counts every view
+    }
+}
+
+}  // namespace
+
 int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     StageSetup setup = resolveStageOptions(options);
     const StageInfo& stage = *setup.stage;
+    const CourseSettings course =
+        check.courseFile.empty() ? CourseSettings{} : readCourseFile(check.courseFile);
+    const StageGrading& grading = course.gradingOf(stage);
     // The work runs in a child, as grading runs it: a crash or an endless
     // compile becomes a one-line cause (check_sandbox.h).
     if (!insideCheckSandbox())
@@ -43,6 +83,14 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     const std::vector<OpenTodo> todos =
         students.forView(stage.checkViews.front()).openTodos();  // a compile error stops here
     reportOpenTodos(todos);
+    // An earlier stage's file of the student's own that this stage reads and
+    // that fails that stage's function check: said first, as it is the
+    // cause of what fails below (earlier_stage_checks.h).
+    const std::string labArg =
+        options.labDir.empty() ? "" : " --lab " + displayPath(setup.sources.labRoot);
+    std::fputs(formatEarlierFailures(stage, runEarlierFunctionChecks(stage, setup.sources), labArg)
+                   .c_str(),
+               stdout);
 
     std::printf("raylab check: stage %s, %s against %s, %dx%d, %s backend\n", stage.id.c_str(),
                 setup.sources.label.c_str(),
@@ -55,14 +103,26 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     const auto functions = functionSpecsFor(stage);
     if (!functions.empty()) std::fputs(formatFunctionsHeading().c_str(), stdout);
     std::vector<std::string> failedFunctions;
+    // The grader's points for these checks: the check views, then the
+    // function and count checks (stage_grading.h, stage_score.h).
+    std::vector<std::string> viewWeights, otherNames;
+    for (const CheckView& v : stage.checkViews) viewWeights.push_back(v.name);
+    for (const FunctionSpec* f : functions) otherNames.push_back(f->name);
+    for (const std::string& c : stage.countChecks) otherNames.push_back(c);
+    const std::vector<double> points = checkPoints(grading, viewWeights, otherNames);
+    std::vector<CheckCredit> credits;
     for (const FunctionSpec* spec : functions) {
         FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
         bool ok = f.passed == f.total;
         (ok ? passed : failed) += 1;
         if (!ok) failedFunctions.push_back(f.name);
         std::fputs(formatFunctionLine(f).c_str(), stdout);
+        credits.push_back({false, points[stage.checkViews.size() + credits.size()],
+                           f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0});
     }
     std::fputs(formatViewsHeading().c_str(), stdout);
+    std::vector<Image> mineOf, expectedOf;  // for the score's handed-out comparison
+    std::vector<bool> viewPassed;
     for (const CheckView& view : stage.checkViews) {
         long nonFinite = 0, todoPixels = 0;
         Image mine = students.render(view, &nonFinite, &todoPixels);
@@ -77,7 +137,13 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         const ViewOutcome v = judgeView(stage, view, mine, expected, nonFinite, todoPixels);
         (v.passed ? passed : failed) += 1;
         std::fputs(formatViewLines(v, failedFunctions, todos.size()).c_str(), stdout);
+        credits.push_back({true, points[mineOf.size()], v.diff.badShare, nonFinite > 0});
+        viewPassed.push_back(v.passed);
+        mineOf.push_back(std::move(mine));
+        expectedOf.push_back(std::move(expected));
     }
+    markHandedOutViews(stage, options.scene, w, h, setup.transform, mineOf, expectedOf, viewPassed,
+                       credits);
 
     for (const std::string& name : stage.countChecks) {
         // Counted from the check views' cameras: a number the GPU produced
@@ -85,8 +151,11 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         CountOutcome c = runCountCheck(students, name, stage.checkViews);
         (countPassed(c) ? passed : failed) += 1;
         std::fputs(formatCountLine(c).c_str(), stdout);
+        credits.push_back({false, points[credits.size()],
+                           c.total ? 1.0 - double(c.passed) / double(c.total) : 1.0});
     }
     std::fputs(formatSummary(passed, failed).c_str(), stdout);
+    std::fputs(formatScoreLine(scoreChecks(credits), grading.seededViews).c_str(), stdout);
     return failed == 0 ? 0 : 1;
 }
 
@@ -104,6 +173,8 @@ Command checkCommand() {
             cmd.add_option("--timeout", check->timeoutSeconds,
                            "stop the check after this many seconds (default 600)")
                 ->check(CLI::PositiveNumber);
+            cmd.add_option("--course", check->courseFile,
+                           "score with a course file's weights (raylab grade --course)");
             cmd.add_option("--memory-mb", check->memoryMb,
                            "limit the check's address space, as grading does (default: none)")
                 ->check(CLI::NonNegativeNumber);

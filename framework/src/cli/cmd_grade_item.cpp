@@ -34,8 +34,8 @@ int cmdGradeItem(const std::string& stageId, const std::string& labRoot, const s
         // The course's weights where it sets them (checked by the parent already).
         const CourseSettings course =
             courseFile.empty() ? CourseSettings{} : readCourseFile(courseFile);
-        StageResult result =
-            gradeStage(stage, course.gradingOf(stage), labRoot, student, outDir, seed);
+        StageResult result = gradeStage(stage, course.gradingOf(stage), labRoot, student, outDir,
+                                        seed, course.earlierStages);
         writeTextFileAtomic(resultFile, stageResultToJson(result));
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "raylab grade-item: out of memory\n");

@@ -1,14 +1,20 @@
-// `raylab shader`: prints the GLSL a ray-tracing stage's program is compiled
-// from, assembled exactly as the renderer assembles it (includes resolved,
-// defines, the baked scene). `--es` prints the GLSL ES 3.00 the web build
-// compiles; its tests compare the page's own assembly with this. `--function
-// NAME` prints the harness program of that function check instead.
+// `raylab shader`: prints the GLSL a stage's program is compiled from,
+// assembled exactly as the renderer assembles it (includes resolved, defines,
+// the baked scene for the ray tracer; for the fur track one of the stage's
+// programs, shells, fins or strands, with its geometry shader). `--es` prints the GLSL ES 3.00 the
+// web build compiles; its tests compare the page's own assembly with this. `--function NAME` prints
+// the harness program of that function check instead.
 #include "command.h"
 #include "command_options.h"
 #include "error.h"
+#include "fur_scene.h"
+#include "gl.h"
+#include "gl_context.h"
 #include "harness_program.h"
 #include "scene_transform.h"
 #include "stage_programs.h"
+#include "stage_sources.h"
+#include "strand_budget.h"
 #include "track_registry.h"
 
 #include <cstdio>
@@ -25,8 +31,43 @@ struct ShaderOptions {
     bool noBvh = false;
     bool origins = false;
     bool demo = false;
+    bool geometry = false;
+    std::string program;
     std::string function;
 };
+
+// A fur stage's program NAME ("shells", or one of stage.json's "programs")
+// assembled as fur_renderer.cpp assembles it: the stage's defines, and for
+// the fur shader the strand budget of this machine's driver.
+StagePrograms furPrograms(const StageSetup& setup, const ShaderOptions& o) {
+    const StageInfo& stage = *setup.stage;
+    std::string names = "shells";
+    for (const auto& [name, p] : stage.programs) names += ", " + name;
+    const std::string name = o.program.empty() ? "shells" : o.program;
+    if (name != "shells" && !stage.programs.count(name))
+        throw Error("--program " + name + ": stage " + stage.id + " has the programs " + names);
+    const StageProgram& p = name == "shells" ? stage.program : stage.programs.at(name);
+    if (o.geometry && p.geometry.empty())
+        throw Error("--geometry: the " + name + " program of stage " + stage.id +
+                    " has no geometry shader (" + names + ")");
+    std::vector<std::string> defines = stage.defines();
+    if (!p.geometry.empty() && p.geometry == "strand.geom") {
+        // How many strand points a geometry shader may emit is the driver's.
+        auto context = createHeadlessContext(Backend::Auto);
+        GLint maxVertices = 0, maxComponents = 0;
+        glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
+        glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
+        const FurScene scene = loadFurScene(setup.sceneFile);
+        for (const std::string& d :
+             strandBudget(maxVertices, maxComponents, scene.fur.strandSegments).defines())
+            defines.push_back(d);
+    }
+    const auto search = searchWithVariants(setup.sources, defines);
+    const std::string& entry = o.geometry ? p.geometry : o.vertex ? p.vertex : p.fragment;
+    ShaderSource source = assembleShader(entry, search, defines);
+    if (o.es) source = asGlslEs300(std::move(source));
+    return {source, source};
+}
 
 // The harness program of the function check NAME, one of STAGE's.
 StagePrograms harnessPrograms(const std::string& name, const StageSetup& setup, bool es) {
@@ -49,6 +90,17 @@ int cmdShader(const ShaderOptions& o) {
             throw Error("--function: the harness program takes no --demo, --generic or --no-bvh");
         return printSource(harnessPrograms(o.function, setup, o.es), o);
     }
+    if (setup.stage->track == "fur") {
+        if (o.demo || o.generic || o.noBvh)
+            throw Error("--demo, --generic and --no-bvh are for the ray-tracing stages");
+        if (o.es && o.geometry)
+            throw Error("--es --geometry: WebGL 2 has no geometry shaders (the page draws fins "
+                        "and strands with instanced vertex shaders)");
+        return printSource(furPrograms(setup, o), o);
+    }
+    if (o.geometry || !o.program.empty())
+        throw Error("--geometry and --program are for the fur stages (" + setup.stage->id +
+                    " has one program: its vertex and fragment shaders)");
     requireRayTracingStage(*setup.stage, "raylab shader");
     // The scene in the frame the renderer draws it in (scene_transform.h):
     // the numbers its program holds.
@@ -88,12 +140,17 @@ int printSource(const StagePrograms& programs, const ShaderOptions& o) {
 Command shaderCommand() {
     return {
         "shader",
-        "print the GLSL a ray-tracing stage is compiled from (includes resolved, the scene "
-        "compiled in; --es: as the web build compiles it)",
+        "print the GLSL a stage is compiled from (includes resolved, the defines, the scene "
+        "compiled in; --es: as the web build compiles it): every type, uniform and helper your "
+        "files can use",
         [](CLI::App& cmd) {
             auto o = std::make_shared<ShaderOptions>();
             CLI::Option* lab = addStageOptions(cmd, o->stage, false);
             cmd.add_flag("--vertex", o->vertex, "the vertex shader instead of the fragment shader");
+            cmd.add_flag("--geometry", o->geometry,
+                         "fur stages: the geometry shader of the program (fin.geom, strand.geom)");
+            cmd.add_option("--program", o->program,
+                           "fur stages: which program: shells (default), fins or strands");
             cmd.add_flag(
                 "--es", o->es,
                 "the web page's program: GLSL ES 3.00, web/shaders first on the search path");

@@ -57,6 +57,7 @@ struct CheckOptions {
     Backend backend = Backend::Auto;
     double timeoutSeconds = 600.0;  // the whole check, in its child process (check_sandbox.h)
     long memoryMb = 0;              // its address space; 0: no limit
+    std::string courseFile;         // the course's weights for the score (course_file.h)
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 

@@ -106,9 +106,14 @@ CourseSettings readCourseFile(const fs::path& file) {
     const JsonReader r{shown};
     const json doc = parseJsonFile(file, shown);
     if (!doc.is_object()) r.fail("(top level)", "expected an object");
-    r.allowOnly(doc, "", {"stages", "late"});
+    r.allowOnly(doc, "", {"earlier_stages", "stages", "late"});
     CourseSettings c;
     c.file = file;
+    if (doc.contains("earlier_stages")) {
+        const json& e = doc["earlier_stages"];
+        if (!e.is_string()) r.fail("earlier_stages", "expected \"solved\" or \"own\"");
+        c.earlierStages = parseEarlierStages(e.get<std::string>(), shown + ": earlier_stages");
+    }
     if (doc.contains("stages")) {
         const json& stages = doc["stages"];
         if (!stages.is_object()) r.fail("stages", "expected an object of stage ids");

@@ -5,6 +5,7 @@
 // fall back to a default):
 //
 //   {
+//     "earlier_stages": "solved",
 //     "stages": {
 //       "03-shadows": {"grading": {"views": 40, "weights": {"lightVisible": 2}}}
 //     },
@@ -17,6 +18,14 @@
 //     }
 //   }
 //
+// "earlier_stages" says where a stage's grading takes the earlier stages it
+// builds on from (stage_sources.h): "solved" (the default: the course's
+// solutions, so a slip in 01 costs points in 01 only, each stage graded on
+// its own work) or "own" (the student's own earlier stage folders, as
+// `raylab check` draws them: a stage is graded on what it really draws, but
+// one slip in 01 is paid again in 02, 03, ...). A submission of one stage
+// folder alone is graded the same either way.
+//
 // "grading" is stage.json's (stage_grading.h), over the stage's own: what it
 // sets replaces, the rest stays. The late policy takes penalty_per_day percent
 // of the score a stage earned for every day or part of a day past its deadline (after
@@ -24,6 +33,7 @@
 // is never late. Times are ISO 8601 with a zone: "2026-12-10T23:59:00Z",
 // "2026-12-10T23:59+01:00".
 #include "stage_catalog.h"
+#include "stage_sources.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -50,6 +60,7 @@ struct CourseSettings {
     std::filesystem::path file;                   // empty: no course file
     std::map<std::string, StageGrading> grading;  // stage id -> the course's
     std::optional<LatePolicy> late;
+    EarlierStages earlierStages = EarlierStages::Solved;
     // The stage's grading: the course's where it sets one, else stage.json's.
     const StageGrading& gradingOf(const StageInfo& stage) const;
 };

@@ -311,7 +311,14 @@ StageInfo readStageFile(const fs::path& file) {
 StageGrading readGrading(const JsonReader& r, const json& v, const std::string& where,
                          StageGrading grading) {
     if (!v.is_object()) r.fail(where, "expected an object");
-    r.allowOnly(v, where, {"views", "weights"});
+    r.allowOnly(v, where, {"views", "weights", "seeded_views"});
+    if (v.contains("seeded_views")) {
+        const json& n = v["seeded_views"];
+        if (!n.is_number_integer() || n.get<int>() < 0 || n.get<int>() > kSeededViewsPerStage)
+            r.fail(where + ".seeded_views", "expected a whole number of views from 0 to " +
+                                                std::to_string(kSeededViewsPerStage));
+        grading.seededViews = n.get<int>();
+    }
     if (v.contains("views")) {
         const json& views = v["views"];
         if (!views.is_number() || views.get<double>() < 0.0 || views.get<double>() > 100.0)

@@ -97,15 +97,21 @@ std::string gradingGuideSection(const StageInfo& stage, const StageGrading& g) {
     double total = 0;
     for (const CheckView& v : stage.checkViews) total += g.weight(v.name);
     const double average = total / double(nViews);
-    const double perWeight = viewShare / (total + kSeededViewsPerStage * average);
+    const double perWeight = viewShare / (total + g.seededViews * average);
 
     std::string t;
-    t += "Your instructor grades with `raylab grade`, which checks this stage from the\n" +
-         std::to_string(nViews) + " views of `raylab check` plus " +
-         std::to_string(kSeededViewsPerStage) +
-         " more views close to them, drawn from a\nseed the instructor keeps secret: make the "
-         "stage right everywhere, not only\nin the listed views. The stage is worth 100 "
-         "points:\n\n";
+    if (g.seededViews > 0)
+        t += "Your instructor grades with `raylab grade`, which checks this stage from the\n" +
+             std::to_string(nViews) + " views of `raylab check` plus " +
+             std::to_string(g.seededViews) +
+             " more views close to them, drawn from a\nseed the instructor keeps secret: make "
+             "the stage right everywhere, not only\nin the listed views. The stage is worth 100 "
+             "points:\n\n";
+    else
+        t += "Your instructor grades with `raylab grade`, which checks this stage from the\n" +
+             std::to_string(nViews) +
+             " views of `raylab check` and nothing more: the score `raylab check` prints\n"
+             "is your grade. The stage is worth 100 points:\n\n";
     t += "* **Images, " + points(viewShare) +
          " points**, shared by the views by weight (a view drawn from\n  the seed weighs as "
          "much as the view it varies; one unit of weight is worth\n  about " +

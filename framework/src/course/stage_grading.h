@@ -12,6 +12,9 @@
 //    stage with neither gives the views all 100.
 //  - weights: a check's weight within its share (default 1; 0 leaves it
 //    out of the score). A seeded view weighs as much as the view it varies.
+//  - seeded_views: how many views grading adds, drawn from the seed (0 to
+//    3, default 3). With 0 a stage is graded from exactly the checks
+//    `raylab check` runs, and the score it prints is the grade.
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +29,7 @@ inline constexpr int kSeededViewsPerStage = 3;
 
 struct StageGrading {
     double viewPoints = 70.0;
+    int seededViews = kSeededViewsPerStage;
     std::map<std::string, double> weights;
     double weight(const std::string& check) const;
 };

@@ -5,6 +5,8 @@
 #include "lab_folder.h"
 #include "paths.h"
 
+#include <algorithm>
+
 namespace raylab {
 
 namespace fs = std::filesystem;
@@ -38,7 +40,17 @@ bool solutionCodePresent(const StageInfo& stage) {
 
 }  // namespace
 
-StageSources labSources(const StageInfo& stage, const fs::path& labRoot, MissingLabFiles missing) {
+EarlierStages parseEarlierStages(const std::string& value, const std::string& where) {
+    if (value == "own") return EarlierStages::Own;
+    if (value == "solved") return EarlierStages::Solved;
+    throw Error(where +
+                ": expected \"solved\" (each stage graded with the earlier stages "
+                "solved) or \"own\" (with the student's own earlier stages), not '" +
+                value + "'");
+}
+
+StageSources labSources(const StageInfo& stage, const fs::path& labRoot, MissingLabFiles missing,
+                        EarlierStages earlier) {
     std::error_code ec;
     if (!fs::is_directory(labRoot, ec))
         throw Error("lab folder " + labRoot.string() + " does not exist");
@@ -52,15 +64,28 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot, Missing
     s.chain = solutionSources(stage).chain;
     s.lab = true;
     s.labRoot = labRoot;
-    // The stage's folder, then the lab's folders of the stages it builds on.
-    for (const std::string& id : s.chain)
-        if (fs::is_directory(labRoot / id, ec)) s.search.push_back(labRoot / id);
+    s.earlierSolved = earlier == EarlierStages::Solved && s.chain.size() > 1;
+    // The stage's folder, then the lab's folders of the stages it builds on
+    // (Own), or the solutions of those stages (Solved). A file of the
+    // stage's own that its folder lacks is taken from the lab as handed out
+    // (FromHandedOutLab), in front of the solutions: a later stage may
+    // replace an earlier stage's file of the same name.
+    std::vector<fs::path> earlierDirs;
+    s.search.push_back(labRoot / stage.id);
+    for (std::size_t i = 1; i < s.chain.size(); ++i) {
+        if (!s.earlierSolved && fs::is_directory(labRoot / s.chain[i], ec))
+            s.search.push_back(labRoot / s.chain[i]);
+        if (s.earlierSolved) earlierDirs.push_back(projectRoot() / "solution" / s.chain[i]);
+    }
+    if (s.earlierSolved) s.label += " (earlier stages solved)";
     std::vector<std::string> absent;
     const auto needed =
         solutionCodePresent(stage) ? labFileSources(stage) : std::map<std::string, LabFile>{};
     for (const auto& [name, file] : needed) {
         bool found = false;
         for (const fs::path& dir : s.search) found = found || fs::is_regular_file(dir / name, ec);
+        for (const fs::path& dir : earlierDirs)
+            found = found || fs::is_regular_file(dir / name, ec);
         if (!found) absent.push_back(name);
     }
     if (!absent.empty() && missing == MissingLabFiles::FromHandedOutLab) {
@@ -79,8 +104,41 @@ StageSources labSources(const StageInfo& stage, const fs::path& labRoot, Missing
                                            ", which " + displayPath(labRoot) +
                                            " lacks (copy them in beside " + stage.id + "/)"));
     }
+    s.search.insert(s.search.end(), earlierDirs.begin(), earlierDirs.end());
     s.search.push_back(projectRoot() / "framework" / "shaders");
     return s;
+}
+
+std::vector<OwnEarlierStage> ownEarlierStagesRead(const StageInfo& stage,
+                                                  const StageSources& sources) {
+    std::vector<OwnEarlierStage> out;
+    if (!sources.lab || sources.earlierSolved || sources.chain.size() < 2) return out;
+    if (!solutionCodePresent(stage)) return out;
+    std::error_code ec;
+    for (const auto& [name, file] : labFileSources(stage)) {
+        // The first folder of the search that has the file is the one read.
+        for (const fs::path& dir : sources.search) {
+            if (!fs::is_regular_file(dir / name, ec)) continue;
+            for (std::size_t i = 1; i < sources.chain.size(); ++i) {
+                if (dir != sources.labRoot / sources.chain[i]) continue;
+                auto it = std::find_if(out.begin(), out.end(), [&](const OwnEarlierStage& e) {
+                    return e.id == sources.chain[i];
+                });
+                if (it == out.end()) it = out.insert(out.end(), {sources.chain[i], {}});
+                it->files.push_back(name);
+            }
+            break;
+        }
+    }
+    // Newest first, as the search reads them.
+    std::sort(out.begin(), out.end(), [&](const OwnEarlierStage& a, const OwnEarlierStage& b) {
+        auto rank = [&](const std::string& id) {
+            return std::find(sources.chain.begin(), sources.chain.end(), id) -
+                   sources.chain.begin();
+        };
+        return rank(a.id) < rank(b.id);
+    });
+    return out;
 }
 
 namespace {

@@ -31,6 +31,8 @@ struct StageSources {
     // Files no folder of the lab has, taken from the lab as handed out
     // (MissingLabFiles::FromHandedOutLab only).
     std::vector<std::string> filledIn;
+    // EarlierStages::Solved: the earlier stages' files come from solution/.
+    bool earlierSolved = false;
 };
 
 // What labSources does when a file the stage needs is in none of the lab's
@@ -49,10 +51,34 @@ std::vector<std::filesystem::path> searchWithVariants(const StageSources& source
 
 StageSources solutionSources(const StageInfo& stage);
 
+// Where a lab's files of the earlier stages it builds on come from.
+//  - Own: the student's own folders of those stages beside it (LAB/01-raycast/
+//    for 02-shading), what `raylab run` and `check` draw: a fix in stage 01
+//    shows in 02 at once, and so does a slip.
+//  - Solved: the course's solutions of those stages (solution/<earlier>/),
+//    what grading uses by default: a slip in 01 costs in 01 only, and each
+//    stage is graded on its own work (course_file.h, "earlier_stages").
+enum class EarlierStages { Own, Solved };
+
+// "own" or "solved"; throws Error("WHERE: ...") otherwise.
+EarlierStages parseEarlierStages(const std::string& value, const std::string& where);
+
 // Throws Error when LABROOT or LABROOT/<stage> is missing, or (MissingLabFiles::
 // Error) a file the stage needs is in none of the lab's folders.
 StageSources labSources(const StageInfo& stage, const std::filesystem::path& labRoot,
-                        MissingLabFiles missing = MissingLabFiles::Error);
+                        MissingLabFiles missing = MissingLabFiles::Error,
+                        EarlierStages earlier = EarlierStages::Own);
+
+// The earlier stages whose files a lab's programs read from the student's
+// own folders (LAB/<earlier>/, not the stage's own folder nor the
+// framework), newest first, each with the file names read there. Empty for
+// a self-contained lab folder (labs/<stage>/ holds every earlier file).
+struct OwnEarlierStage {
+    std::string id;                  // "01-raycast"
+    std::vector<std::string> files;  // "find_closest.glsl", ...
+};
+std::vector<OwnEarlierStage> ownEarlierStagesRead(const StageInfo& stage,
+                                                  const StageSources& sources);
 
 // labs/ of the project.
 std::filesystem::path defaultLabRoot();

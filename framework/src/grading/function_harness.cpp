@@ -88,4 +88,17 @@ FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stag
     return scoreFunctionResults(spec, results);
 }
 
+std::vector<EarlierFailure> runEarlierFunctionChecks(const StageInfo& stage,
+                                                     const StageSources& sources) {
+    std::vector<EarlierFailure> failures;
+    for (const EarlierFunctionCheck& check : earlierFunctionChecks(stage, sources)) {
+        // The earlier stage as the student's folders draw it.
+        const StageSources own =
+            labSources(*check.stage, sources.labRoot, MissingLabFiles::FromHandedOutLab);
+        FunctionOutcome outcome = runFunctionCheck(*check.spec, *check.stage, own);
+        if (outcome.passed != outcome.total) failures.push_back({check, outcome});
+    }
+    return failures;
+}
+
 }  // namespace raylab

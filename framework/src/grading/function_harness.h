@@ -2,6 +2,7 @@
 // Function checks run natively: the harness program (checks/harness_program.h)
 // drawn into a one-row float target on the current GL context, and scored
 // (checks/function_checks.h). Used by `raylab check` and `raylab grade`.
+#include "earlier_stage_checks.h"
 #include "function_checks.h"
 #include "stage_sources.h"
 
@@ -15,6 +16,13 @@ namespace raylab {
 // (compiled = false), not an exception.
 FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage,
                                  const StageSources& sources);
+
+// The function checks of the earlier stages that the lab in SOURCES reads
+// from the student's own folders (earlier_stage_checks.h), run on those
+// folders; the failing ones, newest earlier stage first. Needs a current GL
+// context.
+std::vector<EarlierFailure> runEarlierFunctionChecks(const StageInfo& stage,
+                                                     const StageSources& sources);
 
 // The raw harness output: one vec4 per case (w = kHarnessTodoMarker when the
 // call reached a labTodo() stub). EXTRADEFINES are added to the stage's

@@ -7,6 +7,7 @@
 #include "lab_folder.h"
 #include "paths.h"
 #include "shader_program.h"
+#include "stage_score.h"
 #include "stage_setup.h"
 #include "stage_sources.h"
 #include "view_renderers.h"
@@ -26,6 +27,13 @@ namespace {
 
 // Beside a stage's reference pictures: the handed-out lab's, from the same views.
 constexpr const char* kUntouchedFolder = "untouched";
+
+// A function or count check's score (stage_score.h's rule).
+double caseScore(double points, double wrongShare) {
+    std::vector<CheckCredit> one{{false, points, wrongShare}};
+    scoreChecks(one);
+    return one[0].score;
+}
 
 std::string relativeTo(const fs::path& p, const fs::path& base) {
     return p.lexically_relative(base).generic_string();
@@ -58,7 +66,8 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed, const fs::pa
 }
 
 StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, const fs::path& labRoot,
-                       const std::string& student, const fs::path& outDir, unsigned seed) {
+                       const std::string& student, const fs::path& outDir, unsigned seed,
+                       EarlierStages earlier) {
     StageResult result;
     result.stage = stage.id;
     result.status = "graded";
@@ -68,13 +77,16 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
     // Files the submission lacks (a stage folder without the earlier stage
     // folders it builds on) come from the lab as handed out: the stage is
     // graded on its own work, and the report says so.
-    StageSources sources = labSources(stage, labRoot, MissingLabFiles::FromHandedOutLab);
+    StageSources sources = labSources(stage, labRoot, MissingLabFiles::FromHandedOutLab, earlier);
+    auto addMessage = [&](const std::string& line) {
+        result.message += (result.message.empty() ? "" : "\n") + line;
+    };
     if (!sources.filledIn.empty()) {
         std::string names;
         for (const std::string& n : sources.filledIn) names += (names.empty() ? "" : ", ") + n;
-        result.message = "not in the submission, taken from the lab as handed out: " + names;
+        addMessage("not in the submission, taken from the lab as handed out: " + names);
     }
-    const std::vector<CheckView> views = gradingViews(stage, seed);
+    const std::vector<CheckView> views = gradingViews(stage, seed, grading.seededViews);
     const auto functions = functionSpecsFor(stage);
     // Every check's points, from the stage's weights (stage_grading.h).
     std::vector<std::string> viewWeights, otherNames;
@@ -100,7 +112,7 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             check.maxScore = pointsOfOther(name);
             check.passed = c.total > 0 && c.passed == c.total;
             check.difference = c.total ? 1.0 - double(c.passed) / double(c.total) : 1.0;
-            check.score = check.maxScore * caseCredit(check.difference);
+            check.score = caseScore(check.maxScore, check.difference);
             check.output = std::to_string(c.passed) + "/" + std::to_string(c.total) +
                            " views agree" +
                            (c.firstFailure.empty() ? "" : "; first failure: " + c.firstFailure);
@@ -124,6 +136,7 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
                                       tolerance);
         }
         const std::size_t firstView = result.checks.size();
+        std::vector<CheckCredit> viewCredits;
         for (std::size_t i = 0; i < views.size(); ++i) {
             const CheckView& view = views[i];
             CheckResult check;
@@ -141,8 +154,8 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             const bool asHandedOut =
                 !check.passed && untouched[i] &&
                 imagesAgree(compareImages(mine, *untouched[i], tolerance.channel), tolerance);
-            check.score =
-                nonFinite || asHandedOut ? 0.0 : check.maxScore * viewCredit(diff.badShare);
+            viewCredits.push_back(
+                {true, check.maxScore, diff.badShare, nonFinite > 0 || asHandedOut, reaches[i]});
             check.output = describe(diff);
             if (asHandedOut) check.output += "; the same picture as the lab as handed out";
             if (nonFinite)
@@ -164,23 +177,18 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             check.diffImage = relativeTo(imageDir / (view.name + "-diff.png"), outDir);
             result.checks.push_back(check);
         }
-        double earned = 0, possible = 0;
-        for (std::size_t i = 0; i < views.size(); ++i)
-            if (reaches[i]) {
-                earned += result.checks[firstView + i].score;
-                possible += result.checks[firstView + i].maxScore;
-            }
-        const double share = possible > 0 ? earned / possible : 1.0;
+        // The scores, by the rule `raylab check` prints them by (stage_score.h).
+        const StageScore score = scoreChecks(viewCredits);
         for (std::size_t i = 0; i < views.size(); ++i) {
             CheckResult& c = result.checks[firstView + i];
-            if (reaches[i] || share >= 1.0) continue;
-            c.score *= share;
-            c.passed = c.passed && share >= 1.0;
+            c.score = viewCredits[i].score;
+            if (reaches[i] || score.reachShare >= 1.0) continue;
+            c.passed = false;
             char note[160];
             std::snprintf(note, sizeof note,
                           "; this view does not reach the stage's code (the lab as handed out "
                           "draws it right): it earns %.0f%%, the share the other views earned",
-                          100.0 * share);
+                          100.0 * score.reachShare);
             c.output += note;
         }
     } catch (const ShaderError& e) {
@@ -199,14 +207,22 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
         check.maxScore = pointsOfOther(f.name);
         check.passed = f.total > 0 && f.passed == f.total;
         check.difference = f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0;
-        check.score = check.maxScore * caseCredit(check.difference);
+        check.score = caseScore(check.maxScore, check.difference);
         check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
                        (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure);
         result.checks.push_back(check);
     }
     for (CheckResult& c : countResults) result.checks.push_back(std::move(c));
+    // Graded with the earlier stages solved: a slip there that this stage
+    // would read from the student's own folder is named, so that the student
+    // fixes it where it is (the slip costs points in its own stage only).
+    if (sources.earlierSolved) {
+        const StageSources own = labSources(stage, labRoot, MissingLabFiles::FromHandedOutLab);
+        const std::string note = earlierFailuresNote(runEarlierFunctionChecks(stage, own));
+        if (!note.empty()) addMessage(note);
+    }
     for (const CheckResult& c : result.checks) result.score += c.score;
-    result.score = std::round(result.score * 100.0) / 100.0;
+    result.score = std::round(result.score * 100.0) / 100.0;  // scoreChecks' rounding
     return result;
 }
 

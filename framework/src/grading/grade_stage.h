@@ -16,6 +16,7 @@
 //     other views earned, so an untouched lab scores 0.
 #include "grade_result.h"
 #include "stage_catalog.h"
+#include "stage_sources.h"
 
 #include <filesystem>
 
@@ -40,9 +41,13 @@ void renderGradingReferences(const StageInfo& stage, unsigned seed,
 // Grades LABROOT/<stage>/ against OUT/reference/<stage>/; writes the
 // student's images and diff heat maps to OUT/students/<student>/<stage>/. A compile
 // error gives status "compile error" with the log mapped to file:line.
+// EARLIER: where the earlier stages' files come from (stage_sources.h); with
+// Solved, a student's own earlier file that fails its stage's function check
+// and that this stage would read is named in the result's message.
 StageResult gradeStage(const StageInfo& stage, const StageGrading& grading,
                        const std::filesystem::path& labRoot, const std::string& student,
-                       const std::filesystem::path& outDir, unsigned seed);
+                       const std::filesystem::path& outDir, unsigned seed,
+                       EarlierStages earlier = EarlierStages::Solved);
 
 // StageResult <-> JSON, for the child to hand its result to the parent.
 std::string stageResultToJson(const StageResult& result);

@@ -37,7 +37,7 @@ std::uint64_t stageHash(const std::string& id) {
 
 }  // namespace
 
-std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
+std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed, int count) {
     std::vector<CheckView> views = stage.checkViews;
     // Seeded views are small moves away from the check views (a random pose
     // anywhere would mostly look at nothing): the camera shifts by up to 0.4
@@ -47,7 +47,7 @@ std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed) {
     std::vector<const CheckView*> posed;
     for (const CheckView& v : stage.checkViews) posed.push_back(&v);
     SeededRandom rng{stageHash(stage.id) ^ (std::uint64_t(seed) * 0x2545f4914f6cdd1dull)};
-    for (int i = 0; i < kSeededViewsPerStage; ++i) {
+    for (int i = 0; i < count; ++i) {
         const CheckView& base = *posed[rng.next() % posed.size()];
         CheckView v = base;
         v.name = "seeded-" + std::to_string(i + 1);

@@ -11,6 +11,9 @@ namespace raylab {
 
 // Same seed, same views, on every machine (no std:: distributions, whose
 // results differ between standard libraries).
-std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed);
+// COUNT seeded views (StageGrading::seededViews) follow the check views; the
+// first N of any count are the same views.
+std::vector<CheckView> gradingViews(const StageInfo& stage, unsigned seed,
+                                    int count = kSeededViewsPerStage);
 
 }  // namespace raylab

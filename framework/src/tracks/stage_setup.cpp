@@ -82,6 +82,13 @@ StageSetup resolveStageOptions(const StageOptions& o) {
 std::string demoSceneFile(const std::string& name) {
     if (name == "lite" || name == "pro")
         return (projectRoot() / "assets" / "scenes" / (name + ".json")).string();
+    // A guide's "--scene assets/scenes/fur/coarse.json" run from a handout
+    // folder: a relative path not found here is the project's.
+    const std::filesystem::path path(name);
+    std::error_code ec;
+    if (path.is_relative() && !std::filesystem::exists(path, ec) &&
+        std::filesystem::exists(projectRoot() / path, ec))
+        return (projectRoot() / path).string();
     return name;
 }
 

@@ -57,7 +57,9 @@ struct StageSetup {
 StageSetup resolveStageOptions(const StageOptions& options);
 
 // "lite" and "pro" name the demo scenes (assets/scenes/); anything else is a
-// scene file as given. Empty stays empty (the stage's own scene).
+// scene file as given, or, when a relative path is not found from the current
+// folder, the project's (a guide's command run from a handout folder). Empty
+// stays empty (the stage's own scene).
 std::string demoSceneFile(const std::string& name);
 
 // The camera a check view uses in SCENE.

@@ -142,6 +142,12 @@ FunctionSpec silhouetteSpec() {
         edgeCase("boundary edge (D = A), seen from below", {0.5, -3, 0.2}, a, b, c, a),
         edgeCase("degenerate triangle ABC (A on the edge's line)", {0.5, 0.2, -5}, {2, 0, 0}, b, c,
                  d),
+        // The guide's contract: a zero normal makes the product 0, no fin,
+        // even where the other triangle faces the eye (comparing the two
+        // signs instead of testing the product's would stand a fin here).
+        edgeCase("degenerate triangle ABC, BCD facing the eye", {0.5, 0.2, 5}, {2, 0, 0}, b, c, d),
+        edgeCase("degenerate triangle BCD (D on the edge's line), ABC facing the eye",
+                 {0.5, 0.2, -5}, a, b, c, {-1, 0, 0}),
         edgeCase("grazing: the eye in the plane of ABC", {0.5, -0.5 * 3, -3}, a, b, c, d),
         edgeCase("far away (1e3) on one side", {0.5, -200, -1000}, a, b, c, d),
         edgeCase("far away (1e3), both faces toward the eye", {0.5, 1000, 10}, a, b, c, d),

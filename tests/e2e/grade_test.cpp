@@ -444,3 +444,52 @@ TEST(Grade, ComparingTheSilhouettesSignsFailsItsFunctionCheck) {
     EXPECT_NE(signs.out.find("FAIL isSilhouette"), std::string::npos) << signs.out;
     EXPECT_NE(signs.out.find("degenerate triangle"), std::string::npos) << signs.out;
 }
+
+// The report's known mistakes match the failing checks and the causes their
+// hints name: two students whose only failing check is 04's trace, for two
+// different causes (a secondary ray's offset, the stack's size), are told
+// apart, and the two offset mistakes, which look alike in both, share one
+// row: every catalogue entry is listed once.
+TEST(Grade, TheReportsKnownMistakesReadTheHintsAndListAnEntryOnce) {
+    ScratchDir dir;
+    const struct {
+        const char* student;
+        const char* mistake;
+    } class_[] = {{"ona", "reflected-ray-not-offset"}, {"sam", "stack-too-small"}};
+    for (const auto& s : class_) {
+        writeSolvedLabs(dir / "class" / s.student);
+        const auto m = nlohmann::json::parse(readFile(sourceDir() / "tests/mistakes/04-recursion" /
+                                                      (std::string(s.mistake) + ".json")));
+        for (const auto& pair : m["replace"])
+            replaceInFile(dir / "class" / s.student / "04-recursion" / m["file"].get<std::string>(),
+                          pair[0], pair[1]);
+    }
+    CommandResult r = runRaylab("grade --submissions " + quote(dir / "class") +
+                                " --stages 04 --jobs 2 --seed 3 --out " + quote(dir / "out"));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    const std::string html = readFile(dir / "out" / "report.html");
+    auto count = [&](const std::string& text) {
+        std::size_t n = 0;
+        for (std::size_t at = html.find(text); at != std::string::npos;
+             at = html.find(text, at + 1))
+            ++n;
+        return n;
+    };
+    const std::string offset = "the reflected ray starts exactly on the surface";
+    const std::string fixed = "the refracted ray starts a fixed 0.001 inside";
+    const std::string stack = "a stack of 3 rays";
+    EXPECT_EQ(count(offset), 1u) << html;
+    EXPECT_EQ(count(fixed), 1u);
+    EXPECT_EQ(count(stack), 1u);
+    // One row for the two offset mistakes, matched once (ona); the stack's
+    // row matched once (sam).
+    const std::size_t row = html.find(offset);
+    ASSERT_NE(row, std::string::npos);
+    const std::string offsetRow = html.substr(row, html.find("</tr>", row) - row);
+    EXPECT_NE(offsetRow.find(fixed), std::string::npos) << offsetRow;
+    EXPECT_NE(offsetRow.find(">1</td>"), std::string::npos) << offsetRow;
+    const std::size_t stackAt = html.find(stack);
+    const std::string stackRow = html.substr(stackAt, html.find("</tr>", stackAt) - stackAt);
+    EXPECT_NE(stackRow.find(">1</td>"), std::string::npos) << stackRow;
+    EXPECT_EQ(count("No failure repeats"), 0u);
+}

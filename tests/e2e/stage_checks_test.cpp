@@ -5,6 +5,7 @@
 //  - every known mistake in tests/mistakes/<stage>/ fails on the views it names.
 // A new stage gets these tests by adding its references and mistakes.
 // Metric and tolerance: tests/README.md ("How images are compared").
+#include "check_report.h"
 #include "stage_catalog.h"
 #include "test_support.h"
 
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
 
 using namespace raylab::test;
 
@@ -85,6 +87,12 @@ TEST_P(StageChecks, EveryKnownMistakeIsCaught) {
         std::sort(expected.begin(), expected.end());
         EXPECT_EQ(failed, expected) << "caught_by must list every check it fails, and only those\n"
                                     << r.out;
+        // Exactly the causes the file accepts: a hint that names a cause the
+        // mistake does not have (or misses the one it has) fails here.
+        EXPECT_EQ(raylab::causesNamed(r.out, raylab::findStage(stage())),
+                  spec["hints"].get<std::vector<std::string>>())
+            << "hints must list every cause the check's hints name, and only those\n"
+            << r.out;
         ++mistakes;
     }
     EXPECT_GE(mistakes, 2) << "at least two typical mistakes per stage";
@@ -115,11 +123,48 @@ TEST(TodoHints, AnOpenTodoThatNoPixelReachesIsNotBlamed) {
     EXPECT_EQ(r.exitCode, 1) << r.all();
     EXPECT_NE(r.err.find("1 open TODO"), std::string::npos) << r.err;
     EXPECT_EQ(r.out.find("unfinished TODO"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("too bright (ambient added once per light"), std::string::npos) << r.out;
+    // The mistake's evidence is blinnPhong's failing cases: the views say
+    // what their pictures show and point there, naming no usual cause.
+    EXPECT_NE(r.out.find("FAIL blinnPhong"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("too bright\n"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("ambient added once per light"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("note: the function check blinnPhong failed above"), std::string::npos)
+        << r.out;
 
     // The control: the same stub on every pixel's path is reported.
     replaceInFile(shading, "if (m.shininess < -1.0) labTodo();", "labTodo();");
     r = runRaylab("check --stage 02 --lab " + quote(lab.path()));
     EXPECT_NE(r.out.find("100% of the image reaches an unfinished TODO"), std::string::npos)
         << r.out;
+}
+
+// The hints' test can fail: stage 03's six shadow-ray mistakes each get a
+// cause of their own (no entry accepts another's), and a usual cause of the
+// stage printed beside them would be seen.
+TEST(MistakeHints, EachShadowRayMistakeNamesItsOwnCause) {
+    const raylab::StageInfo& stage = raylab::findStage("03-shadows");
+    std::map<std::string, std::vector<std::string>> named;
+    for (const auto& entry : fs::directory_iterator(sourceDir() / stage.mistakes)) {
+        auto spec = nlohmann::json::parse(readFile(entry.path()));
+        ScratchDir lab;
+        writeSolvedLabs(lab.path());
+        for (const auto& pair : spec["replace"])
+            replaceInFile(lab / stage.id / spec["file"].get<std::string>(), pair[0], pair[1]);
+        CommandResult r = runRaylab("check --stage 03 --lab " + quote(lab.path()));
+        const auto causes = raylab::causesNamed(r.out, stage);
+        EXPECT_EQ(causes.size(), 1u) << entry.path().filename() << "\n" << r.out;
+        named[entry.path().stem().string()] = causes;
+        EXPECT_EQ(raylab::causesNamed(r.out + "\nhint: too dark (" + stage.hintDarker + ")", stage),
+                  [&] {
+                      auto with = causes;
+                      with.push_back("darker");
+                      std::sort(with.begin(), with.end());
+                      return with;
+                  }())
+            << "a usual cause printed beside the diagnosis is seen";
+    }
+    ASSERT_EQ(named.size(), 6u);
+    for (const auto& [a, causesA] : named)
+        for (const auto& [b, causesB] : named)
+            if (a != b) EXPECT_NE(causesA, causesB) << a << " and " << b << " name the same cause";
 }

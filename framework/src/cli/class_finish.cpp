@@ -1,5 +1,7 @@
 #include "class_finish.h"
 
+#include "check_report.h"
+
 #include "mistake_catalog.h"
 #include "stage_catalog.h"
 
@@ -81,19 +83,39 @@ void matchMistakes(ClassResult& result) {
     result.mistakes.clear();
     for (const std::string& id : result.stages) {
         const StageInfo& stage = findStage(id);
+        // Mistakes that fail the same checks and name the same causes look
+        // alike in any report: one row, listed once.
+        std::vector<MistakeMatch> rows;
         for (const CatalogMistake& m : stageMistakes(stage)) {
-            MistakeMatch match{m.stage, m.name, m.description, m.central, m.caughtBy, 0};
-            for (const StudentResult& st : result.students)
-                for (const StageResult& s : st.stages) {
-                    if (s.stage != id || s.status != "graded") continue;
-                    std::vector<std::string> failed;
-                    for (const CheckResult& c : s.checks)
-                        if (!c.passed && !c.seeded) failed.push_back(c.name);
-                    std::sort(failed.begin(), failed.end());
-                    if (failed == m.caughtBy) ++match.matches;
-                }
-            result.mistakes.push_back(std::move(match));
+            auto it = std::find_if(rows.begin(), rows.end(), [&](const MistakeMatch& r) {
+                return r.checks == m.caughtBy && r.hints == m.hints;
+            });
+            if (it == rows.end()) {
+                rows.push_back({m.stage, m.name, m.description, m.central, m.caughtBy, 0, m.hints});
+                continue;
+            }
+            it->name += ", " + m.name;
+            it->description += "; or " + m.description;
+            it->central = it->central || m.central;
         }
+        for (const StudentResult& st : result.students)
+            for (const StageResult& s : st.stages) {
+                if (s.stage != id || s.status != "graded") continue;
+                std::vector<std::string> failed;
+                std::string outputs;
+                for (const CheckResult& c : s.checks) {
+                    if (c.seeded) continue;
+                    if (!c.passed) failed.push_back(c.name);
+                    outputs += c.output + "\n";
+                }
+                std::sort(failed.begin(), failed.end());
+                // The failing checks and the causes their hints name (the
+                // function checks' diagnoses read the failing cases).
+                const std::vector<std::string> causes = causesNamed(outputs, stage);
+                for (MistakeMatch& row : rows)
+                    if (failed == row.checks && causes == row.hints) ++row.matches;
+            }
+        for (MistakeMatch& row : rows) result.mistakes.push_back(std::move(row));
     }
 }
 

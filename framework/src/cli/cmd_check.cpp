@@ -115,8 +115,8 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         FunctionOutcome f = runFunctionCheck(*spec, stage, setup.sources);
         bool ok = f.passed == f.total;
         (ok ? passed : failed) += 1;
+        std::fputs(formatFunctionLine(f, !failedFunctions.empty()).c_str(), stdout);
         if (!ok) failedFunctions.push_back(f.name);
-        std::fputs(formatFunctionLine(f).c_str(), stdout);
         credits.push_back({false, points[stage.checkViews.size() + credits.size()],
                            f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0});
     }
@@ -134,7 +134,8 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         }
         if (!check.saveDir.empty())
             writePngAtomic(mine, std::filesystem::path(check.saveDir) / (view.name + ".png"));
-        const ViewOutcome v = judgeView(stage, view, mine, expected, nonFinite, todoPixels);
+        const ViewOutcome v =
+            judgeView(stage, view, mine, expected, nonFinite, todoPixels, !failedFunctions.empty());
         (v.passed ? passed : failed) += 1;
         std::fputs(formatViewLines(v, failedFunctions, todos.size()).c_str(), stdout);
         credits.push_back({true, points[mineOf.size()], v.diff.badShare, nonFinite > 0});

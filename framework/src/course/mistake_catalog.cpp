@@ -23,7 +23,8 @@ std::vector<CatalogMistake> stageMistakes(const StageInfo& stage) {
         const std::string shown = displayPath(f);
         const JsonReader r{shown};
         const json doc = parseJsonFile(f, shown);
-        r.allowOnly(doc, "", {"stage", "mistake", "central", "file", "replace", "caught_by"});
+        r.allowOnly(doc, "",
+                    {"stage", "mistake", "central", "file", "replace", "caught_by", "hints"});
         CatalogMistake m;
         m.file = f;
         m.name = f.stem().string();
@@ -48,6 +49,10 @@ std::vector<CatalogMistake> stageMistakes(const StageInfo& stage) {
             r.fail("caught_by", "expected the checks it fails");
         for (const json& c : caught) m.caughtBy.push_back(r.string(c, "caught_by"));
         std::sort(m.caughtBy.begin(), m.caughtBy.end());
+        const json& hints = r.member(doc, "mistake", "hints");
+        if (!hints.is_array()) r.fail("hints", "expected the causes its hints name ([] for none)");
+        for (const json& h : hints) m.hints.push_back(r.string(h, "hints"));
+        std::sort(m.hints.begin(), m.hints.end());
         out.push_back(std::move(m));
     }
     return out;

@@ -11,7 +11,11 @@
 // "central": the mistake is the stage's skill (docs/grading.md: it must cost
 // at least 30 of the stage's 100 points; any other at least 5). "caught_by":
 // every check it fails, and only those (the check views and function and
-// count checks; seeded views are left out).
+// count checks; seeded views are left out). "hints": every cause the check's
+// hints name for it, and only those (check_report.h's causesNamed: "darker",
+// "brighter", "view:NAME", "FUNCTION:DIAGNOSIS"), so that a hint that names a
+// cause the mistake does not have fails the tests; [] for a mistake whose
+// hints rightly say only what the pictures and cases show.
 #include "stage_catalog.h"
 
 #include <filesystem>
@@ -30,6 +34,7 @@ struct CatalogMistake {
     std::string shaderFile;                                    // the lab file it changes
     std::vector<std::pair<std::string, std::string>> replace;  // text replacements, in order
     std::vector<std::string> caughtBy;                         // sorted
+    std::vector<std::string> hints;                            // sorted
 };
 
 // The stage's catalogue, sorted by name; empty when its folder is missing.

@@ -104,11 +104,12 @@ struct StageReader : JsonReader {
 
     CheckView view(const json& v, const std::string& where) const {
         allowOnly(v, where,
-                  {"name", "why", "camera", "time", "shadows", "max_depth", "glow", "normal_maps",
-                   "color_mode", "scene", "shells", "fins", "technique"});
+                  {"name", "why", "hint", "camera", "time", "shadows", "max_depth", "glow",
+                   "normal_maps", "color_mode", "scene", "shells", "fins", "technique"});
         CheckView c;
         c.name = text(member(v, where, "name"), where + ".name");
         c.why = text(member(v, where, "why"), where + ".why");
+        if (v.contains("hint")) c.hint = text(v["hint"], where + ".hint");
         if (v.contains("camera")) {
             const json& cam = v["camera"];
             const std::string at = where + ".camera";

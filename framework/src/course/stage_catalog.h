@@ -24,6 +24,9 @@ struct CheckView {
     std::optional<CameraPose> pose;  // none: the scene's own camera
     float time = 0.0f;
     std::string why;  // what this view exercises
+    // A cause this view's picture alone shows, said when it fails and no
+    // function check does (stage.json "hint"; the catalogue's "view:NAME").
+    std::string hint;
     bool shadows = true;
     int maxDepth = 8;
     bool glow = true;

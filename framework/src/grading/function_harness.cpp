@@ -8,6 +8,8 @@
 #include "harness_program.h"
 #include "shader_program.h"
 
+#include <new>
+
 namespace raylab {
 
 namespace {
@@ -76,6 +78,8 @@ FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stag
     std::vector<glm::vec4> results;
     try {
         results = runHarness(spec, stage, sources);
+    } catch (const std::bad_alloc&) {
+        throw;  // the process's memory is gone: grading reports "out of memory" (cmd_grade_item)
     } catch (
         const std::exception& e) {  // Error or ShaderError: the student's code does not compile
         FunctionOutcome out;

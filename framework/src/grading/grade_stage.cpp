@@ -1,5 +1,6 @@
 #include "grade_stage.h"
 
+#include "check_report.h"
 #include "error.h"
 #include "function_harness.h"
 #include "grade_views.h"
@@ -101,6 +102,16 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
     };
 
     std::vector<CheckResult> countResults;  // after the function checks in the report
+    // The function checks first: a failing one is the evidence the views'
+    // hints defer to (check_report.h). A harness that does not compile is
+    // an outcome, not an exception.
+    std::vector<FunctionOutcome> functionOutcomes;
+    bool functionFailed = false;
+    for (const FunctionSpec* spec : functions) {
+        functionOutcomes.push_back(runFunctionCheck(*spec, stage, sources));
+        functionFailed =
+            functionFailed || functionOutcomes.back().passed < functionOutcomes.back().total;
+    }
     try {
         ViewRenderers renderers(stage, sources, "", kGradeWidth, kGradeHeight);
         const CompareTolerance tolerance;
@@ -161,11 +172,11 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             if (nonFinite)
                 check.output = std::to_string(nonFinite) +
                                " pixels are NaN or Inf (shown magenta); " + check.output;
-            std::string hint =
-                check.passed
-                    ? ""
-                    : diagnose(mine, expected, tolerance.channel,
-                               {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
+            // The hint, in the words of `raylab check` (check_report.h).
+            const std::string hint = check.passed ? ""
+                                                  : judgeView(stage, view, mine, expected,
+                                                              nonFinite, todoPixels, functionFailed)
+                                                        .hint;
             if (!hint.empty()) check.output += "; " + hint;
             // What the view exercises points at the code to look at.
             if (!check.passed && !view.why.empty())
@@ -199,8 +210,8 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
         return result;
     }
 
-    for (const FunctionSpec* spec : functions) {
-        FunctionOutcome f = runFunctionCheck(*spec, stage, sources);
+    bool earlierFailed = false;  // a diagnosis only for the first failing function (check_report.h)
+    for (const FunctionOutcome& f : functionOutcomes) {
         CheckResult check;
         check.name = f.name;
         check.kind = "function";
@@ -209,7 +220,9 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
         check.difference = f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0;
         check.score = caseScore(check.maxScore, check.difference);
         check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
-                       (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure);
+                       (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure) +
+                       (f.cause.empty() || earlierFailed ? "" : "; hint: " + f.cause);
+        earlierFailed = earlierFailed || !check.passed;
         result.checks.push_back(check);
     }
     for (CheckResult& c : countResults) result.checks.push_back(std::move(c));

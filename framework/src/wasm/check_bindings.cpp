@@ -12,6 +12,7 @@
 #include "image_compare.h"
 #include "paths.h"
 #include "stage_catalog.h"
+#include "stage_score.h"
 #include "stage_sources.h"
 
 #include <emscripten/bind.h>
@@ -19,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -231,6 +233,17 @@ public:
     // A count check the page cannot run, and why.
     void addCountNotRun(const std::string& name, const std::string& why) {
         notRun_.push_back("  ---- " + name + ": not checked here: " + why + "\n");
+        countsNotRun_.push_back(name);
+    }
+
+    // View VIEWNAME drawn by the lab as handed out (top-down RGBA bytes), for
+    // the score's rule on views that lab draws (stage_score.h); the page
+    // draws them when a view fails, as native's check does.
+    std::string addUntouched(const std::string& viewName, const val& rgba, int width, int height) {
+        try {
+            untouched_[viewName] = imageFrom(rgba, width, height);
+            return "{}";
+        } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
     }
 
     int passed() const { return count(true); }
@@ -242,17 +255,48 @@ public:
         std::vector<std::string> failedFunctions;
         if (!functions_.empty()) out += formatFunctionsHeading();
         for (const FunctionOutcome& f : functions_) {
+            out += formatFunctionLine(f, !failedFunctions.empty());
             if (f.passed != f.total) failedFunctions.push_back(f.name);
-            out += formatFunctionLine(f);
         }
         out += formatViewsHeading();
         for (const ViewOutcome& v : views_)
             out += formatViewLines(v, failedFunctions, todos_.size());
         for (const std::string& line : notRun_) out += line;
-        return out + formatSummary(passed(), failed());
+        return out + formatSummary(passed(), failed()) + scoreLine();
     }
 
 private:
+    // The score the grader gives for these checks (native: cmd_check.cpp),
+    // or why the page gives none (a count check it cannot run).
+    std::string scoreLine() const {
+        if (!countsNotRun_.empty())
+            return "  score: given natively only (" + countsNotRun_.front() +
+                   " is not checked here; raylab check prints the score)\n";
+        std::vector<std::string> viewWeights, otherNames;
+        for (const ViewOutcome& v : views_) viewWeights.push_back(v.name);
+        for (const FunctionOutcome& f : functions_) otherNames.push_back(f.name);
+        const std::vector<double> points = checkPoints(stage_->grading, viewWeights, otherNames);
+        std::vector<CheckCredit> credits;
+        const CompareTolerance tolerance;
+        for (std::size_t i = 0; i < views_.size(); ++i) {
+            const ViewOutcome& v = views_[i];
+            CheckCredit c{true, points[i], v.diff.badShare, v.nonFinite > 0};
+            auto it = untouched_.find(v.name);
+            if (it != untouched_.end()) {
+                c.reaches = !imagesAgree(compareImages(it->second, expected_[i], tolerance.channel),
+                                         tolerance);
+                c.earnsNothing =
+                    c.earnsNothing || (!v.passed && imagesAgree(compareImages(mine_[i], it->second,
+                                                                              tolerance.channel),
+                                                                tolerance));
+            }
+            credits.push_back(c);
+        }
+        for (const FunctionOutcome& f : functions_)
+            credits.push_back({false, points[credits.size()],
+                               f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0});
+        return formatScoreLine(scoreChecks(credits), stage_->grading.seededViews);
+    }
     std::string scoreInto(const std::string& name, const val& floats) {
         const FunctionSpec& s = functionSpec(name);
         return record(scoreFunctionResults(s, harnessResults(floats), wantsOf(s)));
@@ -263,9 +307,13 @@ private:
         for (const CheckView& v : stage_->checkViews)
             if (v.name == viewName) view = &v;
         if (!view) throw Error("stage " + stage_->id + " has no check view '" + viewName + "'");
-        views_.push_back(judgeView(*stage_, *view, imageFrom(mine, width, height),
-                                   imageFrom(expected, width, height), long(nonFinite),
-                                   long(todoPixels)));
+        // As natively, the function checks ran first: a failing one is the evidence.
+        bool functionFailed = false;
+        for (const FunctionOutcome& f : functions_) functionFailed |= f.passed != f.total;
+        mine_.push_back(imageFrom(mine, width, height));
+        expected_.push_back(imageFrom(expected, width, height));
+        views_.push_back(judgeView(*stage_, *view, mine_.back(), expected_.back(), long(nonFinite),
+                                   long(todoPixels), functionFailed));
         const ViewOutcome& v = views_.back();
         return json{{"passed", v.passed}, {"description", describe(v.diff)}, {"hint", v.hint}}
             .dump();
@@ -285,7 +333,9 @@ private:
     std::vector<OpenTodo> todos_;
     std::vector<FunctionOutcome> functions_;
     std::vector<ViewOutcome> views_;
-    std::vector<std::string> notRun_;
+    std::vector<Image> mine_, expected_;  // views_'s pictures, for the score
+    std::map<std::string, Image> untouched_;
+    std::vector<std::string> notRun_, countsNotRun_;
 };
 
 // Native's heat map of the difference (black = equal, red = max), RGBA bytes.
@@ -311,6 +361,7 @@ EMSCRIPTEN_BINDINGS(raylab_checks) {
         .function("addFunctionNotBuilt", &CheckSession::addFunctionNotBuilt)
         .function("addView", &CheckSession::addView)
         .function("addCountNotRun", &CheckSession::addCountNotRun)
+        .function("addUntouched", &CheckSession::addUntouched)
         .function("passed", &CheckSession::passed)
         .function("failed", &CheckSession::failed)
         .function("report", &CheckSession::report);

@@ -4,7 +4,7 @@
 // judges every result with native's tables, thresholds and hints
 // and words the report as native does; the page only draws.
 import { frameOfView, sceneOfView } from '../app/frame.js';
-import { type Catalog, type Sources, type StageJson } from '../course/catalog.js';
+import { type Catalog, type CheckViewJson, type Sources, type StageJson } from '../course/catalog.js';
 import { ensureProjectFiles, labForCore, loadCore, projectFiles } from '../core/core.js';
 import { loadStage, type LoadedStage } from '../tracks/track_registry.js';
 import { CheckTarget } from './check_target.js';
@@ -80,15 +80,19 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
       await runFunctionChecks(gl, core, session, stage.id, lab);
       const views: ViewVerdict[] = [];
       const target = new CheckTarget(gl, CHECK_WIDTH, CHECK_HEIGHT, true);
+      // A frame of VIEW drawn by LOADED into the check target, read as natively.
+      const draw = (loaded: LoadedStage, view: CheckViewJson) => {
+        const frame = frameOfView(loaded.camera, loaded.fovYDeg, view, stage);
+        target.bind();
+        loaded.renderer.render(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT);
+        target.unbind();
+        const read = core.viewImage(target.readFloats(), target.readMarks(), CHECK_WIDTH, CHECK_HEIGHT);
+        if (read.error) throw new Error(read.error);
+        return read;
+      };
       try {
         for (const view of stage.check_views) {
-          const loaded = await rendererFor(sceneOfView(stage, view));
-          const frame = frameOfView(loaded.camera, loaded.fovYDeg, view, stage);
-          target.bind();
-          loaded.renderer.render(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT);
-          target.unbind();
-          const read = core.viewImage(target.readFloats(), target.readMarks(), CHECK_WIDTH, CHECK_HEIGHT);
-          if (read.error) throw new Error(read.error);
+          const read = draw(await rendererFor(sceneOfView(stage, view)), view);
           const expected = await referencePicture(stage.id, view.name);
           const verdict = JSON.parse(session.addView(view.name, read.rgba, expected.rgba, expected.width, expected.height,
             read.nonFinite, read.todoPixels)) as { passed: boolean; description: string; hint: string; error?: string };
@@ -97,6 +101,26 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
             name: view.name, passed: verdict.passed, description: verdict.description, hint: verdict.hint,
             mine: read.rgba, expected: expected.rgba, heatMap: core.heatMap(read.rgba, expected.rgba, CHECK_WIDTH, CHECK_HEIGHT),
           });
+        }
+        // The score's rule on views the lab as handed out draws (native:
+        // cmd_check.cpp): drawn only when a view fails.
+        if (views.some((v) => !v.passed)) {
+          const handedOut = new Map<string, LoadedStage>();
+          try {
+            for (const view of stage.check_views) {
+              const scene = sceneOfView(stage, view);
+              let r = handedOut.get(scene);
+              if (!r) {
+                r = await loadStage(gl, catalog, stage, { kind: 'lab' }, scene, true, undefined, false, true);
+                handedOut.set(scene, r);
+              }
+              const read = draw(r, view);
+              const added = JSON.parse(session.addUntouched(view.name, read.rgba, CHECK_WIDTH, CHECK_HEIGHT)) as { error?: string };
+              if (added.error) throw new Error(added.error);
+            }
+          } finally {
+            for (const r of handedOut.values()) r.renderer.dispose();
+          }
         }
       } finally {
         target.dispose();

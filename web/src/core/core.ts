@@ -121,6 +121,7 @@ export interface CheckSessionHandle {
   addFunctionNotBuilt(name: string, message: string): string;
   addView(view: string, mine: Uint8Array, expected: Uint8Array, width: number, height: number, nonFinite: number, todoPixels: number): string;
   addCountNotRun(name: string, why: string): void;
+  addUntouched(viewName: string, rgba: Uint8Array, width: number, height: number): string;
   passed(): number;
   failed(): number;
   report(): string;

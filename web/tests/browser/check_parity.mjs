@@ -11,6 +11,9 @@
 //    (fin.geom, strand.geom: the page draws fins and strands instanced, from
 //    the student's functions but not from their geometry shader), which the
 //    page must then pass.
+// For the first mistake of each stage the page's hints and score line must
+// also be native's, word for word (native `raylab check` run on the same
+// files; but for a mistake in a geometry shader, which the page does not run).
 // Default: the first two mistakes of each stage, for trying a change;
 // --all: every mistake (ctest web_parity, labels web and web-parity);
 // --every N [--offset K]: of all mistakes in course order, those whose index
@@ -19,7 +22,7 @@
 // checks every stage's solution and untouched lab).
 // Usage: node tests/browser/check_parity.mjs [--all | --every N [--offset K]] [--stages 01,f3] [--labgen PATH]
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { cpSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
@@ -36,6 +39,25 @@ const all = args.includes('--all') || every >= 1;
 const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
 const onlyStages = option('--stages', '').split(',').filter(Boolean);
 const NATIVE_ONLY = new Set(['fin_count']);
+const raylab = join(projectRoot, 'build/raylab');
+
+// The hint and score lines of a report, as both print them.
+const verdictLines = (report) => report.split('\n').filter((l) => /^\s+(hint|note|score): /.test(l)).map((l) => l.trim());
+// Native `raylab check` of STAGE on a solved lab whose STAGE files are LABFILES.
+function nativeReport(stage, labFiles) {
+  const lab = mkdtempSync(join(tmpdir(), 'raylab-parity-'));
+  try {
+    cpSync(solved, lab, { recursive: true });
+    for (const [name, text] of Object.entries(labFiles)) writeFileSync(join(lab, stage.id, name), text);
+    try {
+      return execFileSync(raylab, ['check', '--stage', stage.id, '--lab', lab], { encoding: 'utf8', stdio: 'pipe' });
+    } catch (e) {
+      return e.stdout ?? '';  // exit 1: a check failed
+    }
+  } finally {
+    rmSync(lab, { recursive: true, force: true });
+  }
+}
 
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
@@ -83,6 +105,13 @@ try {
       if (missed.length) {
         nativeOnly.push(`${stage.id}/${file}: ${missed.join(', ')}` + (inGeometryShader ? ` (a mistake in ${m.file})` : '') +
           (expected.length ? '' : '; the page passes it'));
+      }
+      if (r.ok && !inGeometryShader && file === files[0]) {
+        // The note lines name the failing function and TODOs alike in both.
+        const native = verdictLines(nativeReport(stage, labFiles)), mine = verdictLines(r.report);
+        check(JSON.stringify(native) === JSON.stringify(mine),
+          `${stage.id}/${file}: the page's hints and score are native's` +
+          (JSON.stringify(native) === JSON.stringify(mine) ? '' : `\n  native: ${native.join('\n          ')}\n  page:   ${mine.join('\n          ')}`));
       }
       check(r.ok && same(r.failedChecks, expected),
         `${stage.id}/${file}: the page fails ${r.ok ? `[${sorted(r.failedChecks).join(', ')}]` : r.error}, native [${sorted(m.caught_by).join(', ')}]` +

@@ -1,6 +1,7 @@
 #include "check_report.h"
 
 #include <cstdio>
+#include <set>
 
 namespace raylab {
 
@@ -18,7 +19,7 @@ std::string format(const char* pattern, Args... args) {
 }  // namespace
 
 ViewOutcome judgeView(const StageInfo& stage, const CheckView& view, const Image& mine,
-                      const Image& expected, long nonFinite, long todoPixels) {
+                      const Image& expected, long nonFinite, long todoPixels, bool functionFailed) {
     const CompareTolerance tolerance;
     ViewOutcome v;
     v.name = view.name;
@@ -26,9 +27,19 @@ ViewOutcome judgeView(const StageInfo& stage, const CheckView& view, const Image
     v.nonFinite = nonFinite;
     v.diff = compareImages(mine, expected, tolerance.channel);
     v.passed = imagesAgree(v.diff, tolerance) && nonFinite == 0;
-    if (!v.passed)
-        v.hint = diagnose(mine, expected, tolerance.channel,
-                          {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
+    if (v.passed) return v;
+    // A failing function check is the evidence: its line (and its hint, where
+    // the failing cases prove a cause) says more than the picture's
+    // brightness, so the stage's usual causes are not guessed then.
+    if (functionFailed) {
+        v.hint = diagnose(mine, expected, tolerance.channel, {"", "", todoPixels, nonFinite});
+        return v;
+    }
+    v.hint = diagnose(mine, expected, tolerance.channel,
+                      {stage.hintDarker, stage.hintBrighter, todoPixels, nonFinite});
+    // The view's own cause: what only this view's picture shows.
+    if (!view.hint.empty() && nonFinite == 0 && todoPixels == 0)
+        v.hint += (v.hint.empty() ? "" : "; ") + view.hint;
     return v;
 }
 
@@ -47,10 +58,11 @@ std::string formatFunctionsHeading() {
            "against double precision\n";
 }
 
-std::string formatFunctionLine(const FunctionOutcome& f) {
+std::string formatFunctionLine(const FunctionOutcome& f, bool earlierFailed) {
     const bool ok = f.passed == f.total;
     return format("  %s %-18s %d/%d cases%s%s\n", ok ? "PASS" : "FAIL", f.name.c_str(), f.passed,
-                  f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str());
+                  f.total, ok ? "" : "; first failure: ", f.firstFailure.c_str()) +
+           (f.cause.empty() || earlierFailed ? "" : "       hint: " + f.cause + "\n");
 }
 
 std::string formatViewsHeading() {
@@ -72,7 +84,7 @@ std::string formatViewLines(const ViewOutcome& v, const std::vector<std::string>
     if (v.passed) return out;
     out += "       this view checks: " + v.why + "\n";
     if (!v.hint.empty()) out += "       hint: " + v.hint + "\n";
-    if (v.hint.empty() && !failedFunctions.empty())
+    if (!failedFunctions.empty())
         out += "       note: the function check " + failedFunctions.front() +
                " failed above, with its first wrong input\n";
     // A fact, not a guess: unfinished stubs change the picture.
@@ -80,6 +92,19 @@ std::string formatViewLines(const ViewOutcome& v, const std::vector<std::string>
         out += format("       note: %zu TODO%s of this lab %s still open (listed above)\n",
                       openTodos, openTodos == 1 ? "" : "s", openTodos == 1 ? "is" : "are");
     return out;
+}
+
+std::vector<std::string> causesNamed(const std::string& report, const StageInfo& stage) {
+    std::set<std::string> named;
+    auto look = [&](const std::string& text, const std::string& id) {
+        if (!text.empty() && report.find(text) != std::string::npos) named.insert(id);
+    };
+    look(stage.hintDarker, "darker");
+    look(stage.hintBrighter, "brighter");
+    for (const CheckView& v : stage.checkViews) look(v.hint, "view:" + v.name);
+    for (const FunctionSpec* f : functionSpecsFor(stage))
+        for (const FunctionDiagnosis& d : f->diagnoses) look(d.cause, f->name + ":" + d.id);
+    return {named.begin(), named.end()};
 }
 
 bool countPassed(const CountOutcome& c) { return c.total > 0 && c.passed == c.total; }

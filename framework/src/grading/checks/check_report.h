@@ -25,8 +25,18 @@ struct ViewOutcome {
 
 // MINE (the student's picture of VIEW, NONFINITE and TODOPIXELS counted by
 // the renderer) against EXPECTED, with the graders' tolerance and hints.
+// FUNCTIONFAILED: a function check of the stage failed (its line is the
+// evidence; the hint then says the picture's facts only, no usual causes).
 ViewOutcome judgeView(const StageInfo& stage, const CheckView& view, const Image& mine,
-                      const Image& expected, long nonFinite, long todoPixels);
+                      const Image& expected, long nonFinite, long todoPixels,
+                      bool functionFailed = false);
+
+// The causes REPORT (a `raylab check` report of STAGE, or a grading
+// result's check outputs) names, as the mistakes catalogue's "hints" name
+// them: "darker" and "brighter" (stage.json's usual causes), "view:NAME" (a
+// check view's own "hint"), "FUNCTION:ID" (a function check's diagnosis).
+// Sorted, each once.
+std::vector<std::string> causesNamed(const std::string& report, const StageInfo& stage);
 
 // A count check over the check views: a number the GPU produced against the
 // same number worked out on the CPU (the fur track's fin_count).
@@ -44,7 +54,11 @@ std::string formatOpenTodos(const std::vector<OpenTodo>& todos);
 // The report's lines, each ending in a newline, as `raylab check` prints
 // them in this order.
 std::string formatFunctionsHeading();  // before the first function check
-std::string formatFunctionLine(const FunctionOutcome& f);
+// A function's hint (its diagnosis) is printed only when no function check
+// before it failed: later checks call the earlier functions (04's trace calls
+// refractGlass), so their pattern may be the earlier function's slip.
+// EARLIERFAILED: a function check printed before this one failed.
+std::string formatFunctionLine(const FunctionOutcome& f, bool earlierFailed = false);
 std::string formatViewsHeading();  // the tolerance, before the first view
 // FAILEDFUNCTIONS: the function checks that failed above (a note points at
 // the first when the view has no hint); OPENTODOS: the lab's open TODOs.

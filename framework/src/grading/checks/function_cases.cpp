@@ -2,6 +2,7 @@
 // references follow the course's conventions exactly (T_MIN, NO_HIT = -1,
 // which side counts), so any disagreement is the student's (or float's).
 #include "bvh_function_cases.h"
+#include "case_patterns.h"
 #include "function_checks.h"
 #include "function_compare.h"
 #include "fur_function_cases.h"
@@ -110,6 +111,41 @@ FunctionCase glassCase(const std::string& what, double degrees, bool entering, d
     return c;
 }
 
+// What the pattern of refractGlass's failing cases proves. First match wins.
+std::vector<FunctionDiagnosis> refractGlassDiagnoses() {
+    const CasePick entering = [](const CaseVerdict& v) { return v.input->in[2].x > 0.5; };
+    const CasePick notGlass = [](const CaseVerdict& v) { return v.input->in[2].y != 1.5; };
+    const CasePick tir = [](const CaseVerdict& v) { return xyz(v.want) == dvec3(0.0); };
+    // The refracted direction (or whether anything is refracted) is wrong,
+    // not only F.
+    const CasePick wrongWay = [](const CaseVerdict& v) {
+        return (xyz(v.got) == dvec3(0.0)) != (xyz(v.want) == dvec3(0.0)) ||
+               glm::length(xyz(v.got) - xyz(v.want)) > 1e-4;
+    };
+    return {
+        {"ior",
+         "only media other than glass go wrong (water 1.33, diamond 2.4), glass (1.5) is "
+         "right: eta must come from the ior given, not a constant",
+         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, notGlass); }},
+        {"total-internal-reflection",
+         "only total internal reflection goes wrong: there nothing is refracted and F is 1 "
+         "(all of the light is reflected)",
+         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, tir); }},
+        {"eta",
+         "only rays leaving the glass go the wrong way (entering ones are right): eta is the "
+         "ratio of the indices from the ray's side to the other, 1/ior entering, ior leaving",
+         [=](const std::vector<CaseVerdict>& v) {
+             return noneFailed(v, entering) && anyFailed(v, wrongWay);
+         }},
+        {"schlick-cosine",
+         "leaving the glass only F is wrong, every direction is right: Schlick takes the cosine "
+         "of the larger angle, on the air's side, which leaving is the refracted ray's",
+         [=](const std::vector<CaseVerdict>& v) {
+             return noneFailed(v, entering) && noneFailed(v, wrongWay);
+         }},
+    };
+}
+
 FunctionSpec refractGlassSpec() {
     FunctionSpec s;
     s.name = "refractGlass";
@@ -123,7 +159,7 @@ FunctionSpec refractGlassSpec() {
         glassCase("into water", 45, true, 1.33),
         glassCase("into diamond", 45, true, 2.4),
         glassCase("out of glass, head-on", 0, false, 1.5),
-        glassCase("out of glass (Schlick with the refracted ray's cosine)", 30, false, 1.5),
+        glassCase("out of glass", 30, false, 1.5),
         glassCase("out of glass, just below the critical angle 41.8", 41, false, 1.5),
         glassCase("out of glass beyond the critical angle: total internal reflection", 45, false,
                   1.5),
@@ -156,6 +192,7 @@ FunctionSpec refractGlassSpec() {
                    (gotTir ? "F = " + num(got.w) : text(got));
         return "";
     };
+    s.diagnoses = refractGlassDiagnoses();
     return s;
 }
 

@@ -30,6 +30,27 @@ struct FunctionCase {
     std::vector<std::pair<std::string, int>> uniforms;
 };
 
+// What a case's result was, for a diagnosis to read.
+struct CaseVerdict {
+    const FunctionCase* input = nullptr;
+    glm::dvec4 got{0.0}, want{0.0};
+    bool failed = false;
+};
+
+// A cause that the pattern of failing cases proves, not a guess: e.g. "only
+// rays leaving the glass refract wrong, and entering ones are right" is what
+// an eta that is not inverted gives. The first diagnosis of a spec that
+// applies is printed under the function's FAIL line; the mistakes catalogue
+// says which diagnoses each mistake must get (its "hints", by ID), so a
+// diagnosis that names a cause a mistake does not have fails the tests.
+struct FunctionDiagnosis {
+    std::string id;     // "eta", unique within the spec: "refractGlass:eta" in the catalogue
+    std::string cause;  // what the student reads
+    // True when the verdicts (every case's, in the spec's order; at least one
+    // failed) show this cause.
+    std::function<bool(const std::vector<CaseVerdict>&)> applies;
+};
+
 struct FunctionSpec {
     std::string name;                   // the GLSL function, e.g. "intersectSphere"
     std::vector<std::string> includes;  // harness includes after lab_todo.glsl
@@ -47,6 +68,7 @@ struct FunctionSpec {
     // Empty when GOT agrees with WANT, else one line saying how it does not.
     std::function<std::string(const FunctionCase&, const glm::dvec4& got, const glm::dvec4& want)>
         compare;
+    std::vector<FunctionDiagnosis> diagnoses;  // in order: the first that applies is printed
 };
 
 // A spec's double-precision reference: `RAYLAB_REFERENCE(s, lambda);`. The
@@ -77,6 +99,8 @@ struct FunctionOutcome {
     int passed = 0, total = 0;
     std::string firstFailure;  // "tangent ray: expected t = 5, got no hit"
     bool compiled = true;      // false: the harness did not compile (message in firstFailure)
+    std::string causeId;       // the diagnosis that applies ("refractGlass:eta"), or empty
+    std::string cause;         // its text
 };
 
 // What a harness run wrote: one vec4 per case, w = kHarnessTodoMarker when

@@ -32,14 +32,26 @@ FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
     FunctionOutcome out;
     out.name = spec.name;
     out.total = int(spec.cases.size());
+    std::vector<CaseVerdict> verdicts;
+    bool todo = false;
     for (std::size_t i = 0; i < spec.cases.size(); ++i) {
         const FunctionCase& c = spec.cases[i];
         const glm::vec4& r = results[i];
+        todo = todo || r.w == kHarnessTodoMarker;
         std::string why = r.w == kHarnessTodoMarker ? c.label + ": reaches an unfinished TODO"
                                                     : spec.compare(c, glm::dvec4(r), wants[i]);
+        verdicts.push_back({&c, glm::dvec4(r), wants[i], !why.empty()});
         if (why.empty()) ++out.passed;
         else if (out.firstFailure.empty()) out.firstFailure = why;
     }
+    // A stub's answers prove nothing about a cause.
+    if (out.passed < out.total && !todo)
+        for (const FunctionDiagnosis& d : spec.diagnoses)
+            if (d.applies(verdicts)) {
+                out.causeId = spec.name + ":" + d.id;
+                out.cause = d.cause;
+                break;
+            }
     return out;
 }
 

@@ -12,6 +12,7 @@
 // worlds are written once, here, and emitted as GLSL for the harness.
 #include "trace_function_cases.h"
 
+#include "case_patterns.h"
 #include "function_compare.h"
 
 #include "reference_intersect.h"
@@ -211,6 +212,44 @@ dvec4 traceWant(const FunctionCase& c) {
 }
 #endif
 
+// What the pattern of trace's failing cases proves. First match wins.
+std::vector<FunctionDiagnosis> traceDiagnoses() {
+    const CasePick far = labelHas(", the world scaled by ");
+    const CasePick mirrors = labelStarts("two mirrors facing each other");
+    const CasePick gold = labelStarts("a gold ball");
+    return {
+        {"far",
+         "only the worlds far from the origin go wrong (scaled by 10^4 to 10^5, moved 10^5 to "
+         "10^6): there a reflected or refracted ray meets the surface it starts on; start "
+         "each secondary ray with offsetRayOrigin (a fixed offset, or none, is too small "
+         "there)",
+         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, far); }},
+        {"depth-limit",
+         "between two mirrors the colour is the same whatever uMaxDepth is: a ray at the depth "
+         "limit must not spawn secondary rays",
+         [=](const std::vector<CaseVerdict>& v) {
+             // Two or more depths of the mirrors' ray wrong, all with one colour.
+             const CaseVerdict* first = nullptr;
+             int wrong = 0;
+             for (const CaseVerdict& c : v) {
+                 if (!c.failed || !mirrors(c) || far(c)) continue;
+                 if (!first) first = &c;
+                 if (glm::length(glm::dvec3(c.got) - glm::dvec3(first->got)) > 1e-4) return false;
+                 ++wrong;
+             }
+             return wrong >= 2;
+         }},
+        {"glass",
+         "only the worlds with glass go wrong (the mirrors and the gold are right): look at "
+         "what glass adds, the refracted ray: where it starts (offsetRayOrigin on the far side "
+         "of the surface, -normal), its weight (the path's weight times 1 - F, the reflected "
+         "ray's times F) and the stack that keeps it until it is traced",
+         [=](const std::vector<CaseVerdict>& v) {
+             return noneFailed(v, mirrors) && noneFailed(v, gold);
+         }},
+    };
+}
+
 }  // namespace
 
 FunctionSpec traceSpec() {
@@ -288,6 +327,7 @@ FunctionSpec traceSpec() {
             std::max({1.0, std::fabs(want.x), std::fabs(want.y), std::fabs(want.z)});
         return compareVector(c, got, want, 3, 2e-3 * scale);
     };
+    s.diagnoses = traceDiagnoses();
     return s;
 }
 

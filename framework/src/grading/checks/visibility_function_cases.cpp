@@ -4,6 +4,7 @@
 // from the case: the sphere the point lies on and a possible blocker.
 #include "visibility_function_cases.h"
 
+#include "case_patterns.h"
 #include "function_compare.h"
 
 #include <cmath>
@@ -84,12 +85,12 @@ std::vector<FunctionCase> sharedVisibilityCases() {
         visibilityCase("grazing light, radius 100", o, 100, {0, 1, 0}, false, {400, 101, 0}),
         // The eye inside the sphere: the normal faces inward, the light is
         // outside - behind the surface seen from the eye.
-        visibilityCase("eye inside a sphere of radius 100, light outside: the shadow ray starts "
-                       "on the light's side, -normal",
-                       o, 100, {0, 1, 0}, true, {30, 140, 0}),
-        visibilityCase("eye outside a sphere of radius 100, light inside it: the shadow ray "
-                       "starts on the light's side, -normal",
-                       o, 100, {0, 1, 0}, false, {20, 30, 10}),
+        // (Labels say what the case is, not what a mistake would do: the
+        // diagnoses below name causes, from the pattern of failing cases.)
+        visibilityCase("eye inside a sphere of radius 100, light outside above the point", o, 100,
+                       {0, 1, 0}, true, {30, 140, 0}),
+        visibilityCase("eye outside a sphere of radius 100, light inside it", o, 100, {0, 1, 0},
+                       false, {20, 30, 10}),
     };
     // Far from the origin float steps are large (1e-3 near 10^4, 8e-3 near
     // 10^5): a point computed there lies measurably above or below its
@@ -134,6 +135,59 @@ std::string compareVisibility(const FunctionCase& c, const dvec4& got, const dve
     return c.label + ": expected the light " + text(want.x) + ", got " + text(got.x);
 }
 
+// What the pattern of failing cases proves about a shadow ray (lightVisible
+// and 08's lightVisibleFast share the cases these read). First match wins.
+std::vector<FunctionDiagnosis> shadowRayDiagnoses() {
+    const CasePick open = labelStarts("light above the point, nothing between");
+    const CasePick beyond = labelStarts("a sphere beyond the light");
+    const CasePick grazing = labelStarts("grazing light");
+    const CasePick far = labelHas(" from the origin, point ");
+    const CasePick inside =
+        either(either(labelStarts("eye inside a sphere"), labelStarts("eye outside a sphere")),
+               labelStarts("eye and light inside a sphere"));
+    return {
+        {"beyond",
+         "a sphere beyond the light blocks it, while a light with nothing between is "
+         "visible: only a blocker nearer than the light may block it (compare the blocker's t "
+         "with the distance to the light)",
+         [=](const std::vector<CaseVerdict>& v) {
+             return anyFailed(v, beyond) && noneFailed(v, open);
+         }},
+        {"side",
+         "a light with nothing between is blocked, a grazing one too: the shadow ray meets the "
+         "point's own surface because it starts on the side away from the light; start it with "
+         "offsetRayOrigin(point, side), side the normal when the light is in front of the "
+         "surface, -normal when it is behind",
+         [=](const std::vector<CaseVerdict>& v) {
+             return anyFailed(v, open) && anyFailed(v, grazing);
+         }},
+        {"direction",
+         "a light with nothing between is blocked, though a grazing one is not: the shadow "
+         "ray must go toward the light (the light's position minus the point, normalised), "
+         "not away from it",
+         [=](const std::vector<CaseVerdict>& v) {
+             return anyFailed(v, open) && noneFailed(v, grazing);
+         }},
+        {"far",
+         "only points far from the origin (10^4 to 10^6) fail: there the shadow ray meets its "
+         "own surface, as a fixed offset is too small for their float steps; "
+         "offsetRayOrigin(point, side) grows with the point",
+         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, far); }},
+        {"own-surface",
+         "the shadow ray meets its own surface at points far from the origin and inside large "
+         "spheres, not at small ones: does it start off the surface, at "
+         "offsetRayOrigin(point, side)?",
+         [=](const std::vector<CaseVerdict>& v) {
+             return onlyFailed(v, either(far, inside)) && anyFailed(v, far) && anyFailed(v, inside);
+         }},
+        {"normal-side",
+         "only where the eye or the light is inside a sphere (the light behind the surface the "
+         "normal faces) is the light blocked: the shadow ray starts on the light's side, which "
+         "is -normal there",
+         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, inside); }},
+    };
+}
+
 }  // namespace
 
 FunctionSpec lightVisibilitySpec() {
@@ -175,6 +229,7 @@ FunctionSpec lightVisibilitySpec() {
         return dvec4(blockedBySpheres(c) ? 0.0 : 1.0, 0.0, 0.0, 1.0);
     });
     s.compare = compareVisibility;
+    s.diagnoses = shadowRayDiagnoses();
     return s;
 }
 
@@ -232,6 +287,7 @@ FunctionSpec lightVisibleFastSpec() {
         return dvec4(visible ? 1.0 : 0.0, 0.0, 0.0, 1.0);
     });
     s.compare = compareVisibility;
+    s.diagnoses = shadowRayDiagnoses();
     return s;
 }
 

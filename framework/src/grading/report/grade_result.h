@@ -69,12 +69,16 @@ struct StudentResult {
 
 // A catalogued mistake (tests/mistakes/<stage>/*.json) and how many graded
 // stages failed exactly the checks it fails (report.html's class summary).
+// One row of the report's known mistakes: a catalogued mistake, or several
+// that fail the same checks and whose hints name the same causes (a report
+// cannot tell them apart: they share one row, "name-a, name-b").
 struct MistakeMatch {
     std::string stage, name;          // "03-shadows", "fixed-offset"
-    std::string description;          // the catalogue's "mistake"
-    bool central = false;             // the stage's skill
+    std::string description;          // the catalogue's "mistake" ("...; or ..." for several)
+    bool central = false;             // the stage's skill (any of them)
     std::vector<std::string> checks;  // the checks it fails (its "caught_by")
     int matches = 0;
+    std::vector<std::string> hints;  // the causes its hints name (its "hints")
 };
 
 struct ClassResult {

@@ -239,7 +239,8 @@ void htmlClassSummary(std::string& h, const ClassResult& r) {
     if (r.mistakes.empty()) {
         h += "<p class=\"muted\">No mistakes catalogue for these stages.</p>\n";
     } else if (matched == 0) {
-        h += "<p class=\"muted\">No failure repeats a catalogued mistake's checks exactly.</p>\n";
+        h += "<p class=\"muted\">No failure repeats a catalogued mistake's checks and hints "
+             "exactly.</p>\n";
     } else {
         h += "<div class=\"scroll\"><table "
              "class=\"summary\"><thead><tr><th>Stage</th><th>Mistake</th>"
@@ -257,7 +258,8 @@ void htmlClassSummary(std::string& h, const ClassResult& r) {
     }
     h += "<p class=\"legend\">A graded stage counts for a mistake of the catalogue (the "
          "course's tests/mistakes) when the checks it fails are exactly the ones that mistake "
-         "fails; mistakes that fail the same checks count the same stages. A likeness, not a "
+         "fails and its hints name the same causes (the function checks' hints read the "
+         "failing cases); mistakes that look alike in both share one row. A likeness, not a "
          "diagnosis: other code can fail the same checks.</p></div>\n</div>\n";
 }
 

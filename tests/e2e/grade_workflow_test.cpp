@@ -108,9 +108,20 @@ TEST(GradeWorkflow, OnlyRegradesOneStudentIntoTheReport) {
     EXPECT_EQ(row(readFile(dir / "graded/summary.csv"), "alice").substr(0, 19),
               "alice,,100,100,200,");
 
+    // The report's wall time: the class run's, before and after a regrade.
+    auto wallTime = [&] {
+        const std::string html = readFile(dir / "graded/report.html");
+        const std::size_t at = html.find("wall time <b>");
+        return at == std::string::npos ? std::string()
+                                       : html.substr(at, html.find("</b>", at) - at);
+    };
+    const std::string classWallTime = wallTime();
+    ASSERT_FALSE(classWallTime.empty());
+
     // alice hands in a fix that breaks 01: regrade her alone.
     replaceInFile(dir / "class/alice/01-raycast/find_closest.glsl", "t < hit.t", "t > hit.t");
     const std::string out = grade(dir.path(), "--out graded --only alice");
+    EXPECT_EQ(wallTime(), classWallTime) << "a regrade is not the class's wall time";
     EXPECT_NE(out.find("1 student x 2 stages"), std::string::npos) << out;
     EXPECT_NE(readFile(dir / "graded/students/alice/01-raycast/result.json"), aliceBefore);
     EXPECT_EQ(readFile(dir / "graded/students/bob/02-shading/result.json"), bobBefore);

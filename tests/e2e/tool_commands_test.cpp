@@ -73,10 +73,38 @@ TEST(ShaderCommand, TakesTheDemoScenesByName) {
     EXPECT_NE(missing.err.find("does not exist"), std::string::npos) << missing.err;
 }
 
-TEST(ShaderCommand, RefusesAFurStage) {
-    CommandResult r = runRaylab("shader --stage f2 --solution");
-    EXPECT_EQ(r.exitCode, 2) << r.all();
-    EXPECT_NE(r.err.find("raylab shader"), std::string::npos) << r.err;
+// A fur stage's programs: the shells' fragment shader by default, the fins'
+// geometry shader with every uniform it reads (the guide of f3 sends students
+// here for uEye and uFurLength), the strands' with this driver's budget; a
+// program or shader the stage lacks is a one-line error.
+TEST(ShaderCommand, PrintsAFurStagesPrograms) {
+    CommandResult shells = runRaylab("shader --stage f2 --solution");
+    EXPECT_EQ(shells.exitCode, 0) << shells.all();
+    EXPECT_NE(shells.out.find("#define RAYLAB_FRAGMENT_SHADER"), std::string::npos);
+    CommandResult fins = runRaylab("shader --stage f3 --program fins --geometry --origins");
+    EXPECT_EQ(fins.exitCode, 0) << fins.all();
+    EXPECT_NE(fins.out.find("#define RAYLAB_GEOMETRY_SHADER"), std::string::npos);
+    EXPECT_NE(fins.out.find("vec3 uEye;"), std::string::npos) << fins.out;
+    EXPECT_NE(fins.out.find("uFurLength"), std::string::npos);
+    EXPECT_NE(fins.out.find("f3-fins/fin.geom:"), std::string::npos) << "lines name their file";
+    CommandResult strands = runRaylab("shader --stage f4 --program strands --geometry");
+    EXPECT_EQ(strands.exitCode, 0) << strands.all();
+    EXPECT_NE(strands.out.find("#define STRANDS_PER_TRIANGLE "), std::string::npos);
+    const struct {
+        const char* args;
+        const char* says;
+    } refused[] = {
+        {"shader --stage f3 --program hair", "has the programs shells, fins"},
+        {"shader --stage f3 --geometry", "has no geometry shader"},
+        {"shader --stage f3 --program fins --geometry --es", "WebGL 2 has no geometry shaders"},
+        {"shader --stage 02 --program fins", "are for the fur stages"},
+        {"shader --stage f2 --demo --solution", "for the ray-tracing stages"},
+    };
+    for (const auto& r : refused) {
+        CommandResult c = runRaylab(r.args);
+        EXPECT_EQ(c.exitCode, 2) << r.args << "\n" << c.all();
+        EXPECT_NE(c.err.find(r.says), std::string::npos) << r.args << "\n" << c.err;
+    }
 }
 
 namespace {

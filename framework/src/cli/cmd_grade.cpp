@@ -133,6 +133,7 @@ int cmdGrade(const GradeOptions& options) {
                     shard.index, shard.count, result.students.size(), result.seconds);
         return 0;
     }
+    const double thisRun = result.seconds;
     if (earlier) {
         // The one student's new results in place of the old, or added.
         const StudentResult fresh = result.students.front();
@@ -146,7 +147,8 @@ int cmdGrade(const GradeOptions& options) {
         std::printf("raylab grade --only %s: regraded in %.1f s; the other %zu students' results "
                     "are as they were\n",
                     g.only.c_str(), result.seconds, merged.students.size() - 1);
-        merged.seconds = result.seconds;
+        // The report's wall time stays the class run's: a regrade of one
+        // student is said above, not passed off as the whole class's time.
         result = merged;
     }
     // Absolute paths: --only may run from another folder.
@@ -157,7 +159,7 @@ int cmdGrade(const GradeOptions& options) {
                    {absolute(g.course), "", absolute(g.roster), "", absolute(g.submitted), g.lms},
                    out);
     finishAndReport(result, g, out);
-    std::printf("graded in %.1f s; report: %s\n", result.seconds,
+    std::printf("graded in %.1f s; report: %s\n", thisRun,
                 fs::absolute(out / "report.html").lexically_normal().c_str());
     return 0;
 }

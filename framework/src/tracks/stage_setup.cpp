@@ -86,8 +86,8 @@ std::string demoSceneFile(const std::string& name) {
     // folder: a relative path not found here is the project's.
     const std::filesystem::path path(name);
     std::error_code ec;
-    if (path.is_relative() && !std::filesystem::exists(path, ec) &&
-        std::filesystem::exists(projectRoot() / path, ec))
+    if (!name.empty() && path.is_relative() && !std::filesystem::exists(path, ec) &&
+        std::filesystem::is_regular_file(projectRoot() / path, ec))
         return (projectRoot() / path).string();
     return name;
 }

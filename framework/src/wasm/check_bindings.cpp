@@ -236,6 +236,9 @@ public:
         countsNotRun_.push_back(name);
     }
 
+    // No score line in the report (a test that compares verdicts only).
+    void noScore() { scored_ = false; }
+
     // View VIEWNAME drawn by the lab as handed out (top-down RGBA bytes), for
     // the score's rule on views that lab draws (stage_score.h); the page
     // draws them when a view fails, as native's check does.
@@ -269,6 +272,7 @@ private:
     // The score the grader gives for these checks (native: cmd_check.cpp),
     // or why the page gives none (a count check it cannot run).
     std::string scoreLine() const {
+        if (!scored_) return "";
         if (!countsNotRun_.empty())
             return "  score: given natively only (" + countsNotRun_.front() +
                    " is not checked here; raylab check prints the score)\n";
@@ -336,6 +340,7 @@ private:
     std::vector<Image> mine_, expected_;  // views_'s pictures, for the score
     std::map<std::string, Image> untouched_;
     std::vector<std::string> notRun_, countsNotRun_;
+    bool scored_ = true;
 };
 
 // Native's heat map of the difference (black = equal, red = max), RGBA bytes.
@@ -362,6 +367,7 @@ EMSCRIPTEN_BINDINGS(raylab_checks) {
         .function("addView", &CheckSession::addView)
         .function("addCountNotRun", &CheckSession::addCountNotRun)
         .function("addUntouched", &CheckSession::addUntouched)
+        .function("noScore", &CheckSession::noScore)
         .function("passed", &CheckSession::passed)
         .function("failed", &CheckSession::failed)
         .function("report", &CheckSession::report);

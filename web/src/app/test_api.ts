@@ -117,14 +117,16 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
       page.watchForTest(new WatchedLab(labs, catalog.stages.map((x) => x.info.id)));
     },
     // `raylab check` in the page for a stage's solution, its lab as handed
-    // out, or lab files "opened from disk" (LABFILES: name -> text).
-    async check(req: { stage: string; source?: 'solution' | 'lab'; labFiles?: Record<string, string> }) {
+    // out, or lab files "opened from disk" (LABFILES: name -> text). SCORE
+    // false: no score line (nor the handed-out lab's pictures it needs), for
+    // tests that compare verdicts only.
+    async check(req: { stage: string; source?: 'solution' | 'lab'; labFiles?: Record<string, string>; score?: boolean }) {
       const stage = stageById(catalog, req.stage);
       const sources: Sources = req.labFiles
         ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
         : { kind: req.source ?? 'solution' };
       try {
-        const run = await runCheck(gl, catalog, stage, sources, sourceLabel(sources), backendName(gl));
+        const run = await runCheck(gl, catalog, stage, sources, sourceLabel(sources), backendName(gl), req.score ?? true);
         return { ok: true, report: run.report, passed: run.passed, failed: run.failed, failedChecks: run.failedChecks };
       } catch (e) {
         return { ok: false, error: (e as Error).message };

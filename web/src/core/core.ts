@@ -122,6 +122,7 @@ export interface CheckSessionHandle {
   addView(view: string, mine: Uint8Array, expected: Uint8Array, width: number, height: number, nonFinite: number, todoPixels: number): string;
   addCountNotRun(name: string, why: string): void;
   addUntouched(viewName: string, rgba: Uint8Array, width: number, height: number): string;
+  noScore(): void;
   passed(): number;
   failed(): number;
   report(): string;

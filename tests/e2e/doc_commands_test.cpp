@@ -179,6 +179,14 @@ void runDocs(const std::string& kind) {
                 ++ran;
             }
         }
+        // The Gradescope README's local try: alice's two solved stages earn
+        // all of their points, as on Gradescope.
+        if (doc == "examples/gradescope/README.md" && kind.empty()) {
+            const fs::path results = dir / "try-gradescope/results/results.json";
+            ASSERT_TRUE(fs::exists(results)) << "the README's local run wrote no results.json";
+            const auto j = nlohmann::json::parse(readFile(results));
+            EXPECT_DOUBLE_EQ(j["score"].get<double>(), 200.0) << j.dump(1);
+        }
     }
     EXPECT_GT(ran, 0);
 }

@@ -260,6 +260,34 @@ TEST(Handout, TheGuidesShowTheCoursesWeights) {
     const std::string guide = readFile(dir / "out/03-shadows/README.md");
     EXPECT_NE(guide.find("**Images, 20 points**"), std::string::npos) << guide;
     EXPECT_NE(guide.find("`lightVisible` 80"), std::string::npos);
+    EXPECT_EQ(guide.find("**Deadline:**"), std::string::npos) << "the course set none";
+    EXPECT_NE(guide.find("**Earlier stages:** this stage is graded with the stages it builds on "
+                         "solved"),
+              std::string::npos);
+}
+
+// A course file's deadlines and late policy reach the guides too, each
+// stage's own deadline where it has one; and its rule on earlier stages.
+TEST(Handout, TheGuidesShowTheCoursesDeadlinesAndLatePolicy) {
+    ScratchDir dir;
+    writeFile(dir / "course.json", R"({"earlier_stages": "own", "late": {
+        "deadline": "2026-12-10T23:59:00+01:00",
+        "deadlines": {"02-shading": "2026-12-17T23:59:00+01:00"},
+        "grace_minutes": 15, "penalty_per_day": 10, "max_penalty": 50}})");
+    CommandResult r = runRaylab("handout --stages 01-02 --course " + quote(dir / "course.json") +
+                                " --out " + quote(dir / "out"));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    const std::string g01 = readFile(dir / "out/01-raycast/README.md");
+    const std::string g02 = readFile(dir / "out/02-shading/README.md");
+    EXPECT_NE(g01.find("**Deadline:** 2026-12-10 22:59 UTC. Work handed in later loses 10% of the "
+                       "score it earned for every day or part of a day past it (after 15 "
+                       "minutes' grace), at most 50%."),
+              std::string::npos)
+        << g01;
+    EXPECT_NE(g02.find("**Deadline:** 2026-12-17 22:59 UTC."), std::string::npos) << g02;
+    EXPECT_EQ(g01.find("**Earlier stages:**"), std::string::npos) << "01 builds on none";
+    EXPECT_NE(g02.find("**Earlier stages:** this stage is graded with your own earlier stages"),
+              std::string::npos);
 }
 
 // The open level (`--level open`): whole functions from their contracts.

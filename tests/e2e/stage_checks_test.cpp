@@ -166,5 +166,7 @@ TEST(MistakeHints, EachShadowRayMistakeNamesItsOwnCause) {
     ASSERT_EQ(named.size(), 6u);
     for (const auto& [a, causesA] : named)
         for (const auto& [b, causesB] : named)
-            if (a != b) EXPECT_NE(causesA, causesB) << a << " and " << b << " name the same cause";
+            if (a != b) {
+                EXPECT_NE(causesA, causesB) << a << " and " << b << " name the same cause";
+            }
 }

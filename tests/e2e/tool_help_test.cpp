@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace raylab::test;
 
 namespace {
@@ -65,4 +67,48 @@ TEST(ToolHelp, AnOptionLookingWordIsNeverAPath) {
         EXPECT_TRUE(filesUnder(dir.path()).empty() && fs::is_empty(dir.path()))
             << call << " made something";
     }
+}
+
+// examples/slurm/submit.sh where no cluster answers: one line that says why,
+// and no empty output folder left behind (sbatch stood in for by scripts:
+// one that is missing, one that cannot reach a controller).
+TEST(ToolHelp, SubmitWithoutAClusterSaysWhyAndLeavesNothing) {
+    ScratchDir dir;
+    fs::create_directories(dir / "class" / "ada");
+    // A PATH of the tools the script uses, without sbatch.
+    const fs::path bin = dir / "bin";
+    fs::create_directories(bin);
+    for (const char* tool :
+         {"bash", "realpath", "mkdir", "dirname", "sed", "mktemp", "rm", "tail"}) {
+        const CommandResult where = runCommand(std::string("command -v ") + tool);
+        ASSERT_EQ(where.exitCode, 0) << tool;
+        std::string path = where.out;
+        while (!path.empty() && path.back() == '\n') path.pop_back();
+        fs::create_symlink(path, bin / tool);
+    }
+    const std::string submit = quote((sourceDir() / "examples/slurm/submit.sh").string());
+    CommandResult missing = runCommand("cd " + quote(dir.path()) + " && PATH=" + quote(bin) +
+                                       " bash " + submit + " 2 class out 7");
+    EXPECT_EQ(missing.exitCode, 2) << missing.all();
+    EXPECT_NE(missing.err.find("sbatch is not installed here"), std::string::npos) << missing.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+
+    writeFile(bin / "sbatch",
+              "#!/bin/bash\necho 'sbatch: error: Batch job submission failed: Unable to contact "
+              "slurm controller (connect failure)' >&2\nexit 1\n");
+    fs::permissions(bin / "sbatch", fs::perms::owner_all);
+    CommandResult down = runCommand("cd " + quote(dir.path()) + " && PATH=" + quote(bin) +
+                                    " bash " + submit + " 2 class out 7");
+    EXPECT_EQ(down.exitCode, 1) << down.all();
+    EXPECT_NE(down.err.find("sbatch refused the grading array: sbatch: error: Batch job "
+                            "submission failed: Unable to contact slurm controller"),
+              std::string::npos)
+        << down.err;
+    EXPECT_EQ(std::count(down.err.begin(), down.err.end(), '\n'), 1) << down.err;
+    EXPECT_FALSE(fs::exists(dir / "out")) << "the folder this run made is gone";
+    // A folder that was there stays.
+    fs::create_directories(dir / "kept");
+    runCommand("cd " + quote(dir.path()) + " && PATH=" + quote(bin) + " bash " + submit +
+               " 2 class kept 7");
+    EXPECT_TRUE(fs::is_directory(dir / "kept"));
 }

@@ -74,11 +74,11 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
         if (guide)
             writeTextFileAtomic(
                 stageTo / "README.md",
-                withGradingSection(handoutGuide(open.count("README.md")
-                                                    ? open.at("README.md")
-                                                    : readTextFile(from / "README.md"),
-                                                h, labFolder),
-                                   *h.stage, course.gradingOf(*h.stage)));
+                withGradingSection(
+                    handoutGuide(open.count("README.md") ? open.at("README.md")
+                                                         : readTextFile(from / "README.md"),
+                                 h, labFolder),
+                    *h.stage, course.gradingOf(*h.stage), courseRulesSection(*h.stage, course)));
     }
     writeTextFileAtomic(to / "README.md", readme(plan));
 }

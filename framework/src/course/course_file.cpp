@@ -1,5 +1,7 @@
 #include "course_file.h"
 
+#include <cstdio>
+
 #include "error.h"
 #include "json_reader.h"
 #include "paths.h"
@@ -175,6 +177,41 @@ CourseSettings readCourseFile(const fs::path& file) {
         c.late = p;
     }
     return c;
+}
+
+std::string courseRulesSection(const StageInfo& stage, const CourseSettings& course) {
+    if (course.file.empty()) return "";
+    auto number = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", v);
+        return std::string(buf);
+    };
+    std::string t;
+    if (course.late) {
+        const LatePolicy& p = *course.late;
+        const std::optional<std::int64_t> due = p.deadlineOf(stage.id);
+        if (!due) {
+            t += "**Deadline:** none for this stage in your course.\n";
+        } else {
+            t += "**Deadline:** " + formatUtc(*due) + ".";
+            if (p.penaltyPerDay > 0)
+                t += " Work handed in later loses " + number(p.penaltyPerDay) +
+                     "% of the score it earned for every day or part of a day past it" +
+                     (p.graceMinutes > 0 ? " (after " + number(p.graceMinutes) + " minutes' grace)"
+                                         : "") +
+                     ", at most " + number(p.maxPenalty) + "%.";
+            t += "\n";
+        }
+    }
+    if (!stage.buildsOn.empty())
+        t += std::string("**Earlier stages:** ") +
+             (course.earlierStages == EarlierStages::Solved
+                  ? "this stage is graded with the stages it builds on solved, so a slip in an "
+                    "earlier stage costs points there only (`raylab check` draws your own: "
+                    "where one of them fails, it says so first).\n"
+                  : "this stage is graded with your own earlier stages, as `raylab check` draws "
+                    "it: a slip in an earlier stage costs points here too.\n");
+    return t;
 }
 
 }  // namespace raylab

@@ -68,6 +68,11 @@ struct CourseSettings {
 // Throws Error("FILE: KEY: why").
 CourseSettings readCourseFile(const std::filesystem::path& file);
 
+// What a course file adds to STAGE's "How you are graded" in a handout (a
+// deadline and the late policy, where the earlier stages come from): empty
+// for a course file that sets none of them, or none at all.
+std::string courseRulesSection(const StageInfo& stage, const CourseSettings& course);
+
 // "2026-12-10T23:59:00+01:00" (seconds optional, "Z" or +-HH:MM required) ->
 // Unix seconds. Throws Error("WHERE: ...").
 std::int64_t parseIsoTime(const std::string& text, const std::string& where);

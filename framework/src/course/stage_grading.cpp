@@ -162,7 +162,7 @@ std::string gradingGuideSection(const StageInfo& stage, const StageGrading& g) {
 }
 
 std::string withGradingSection(const std::string& guide, const StageInfo& stage,
-                               const StageGrading& grading) {
+                               const StageGrading& grading, const std::string& courseRules) {
     const std::string open = "<!-- grading:", close = "<!-- /grading -->";
     const std::size_t at = guide.find(open);
     if (at == std::string::npos) return guide;
@@ -170,7 +170,8 @@ std::string withGradingSection(const std::string& guide, const StageInfo& stage,
     const std::size_t end = guide.find(close, at);
     if (bodyStart == std::string::npos || end == std::string::npos || end < bodyStart)
         throw Error(stage.id + "/README.md: " + open + " without " + close);
-    return guide.substr(0, bodyStart + 1) + gradingGuideSection(stage, grading) + guide.substr(end);
+    return guide.substr(0, bodyStart + 1) + gradingGuideSection(stage, grading) +
+           (courseRules.empty() ? "" : "\n" + courseRules) + guide.substr(end);
 }
 
 }  // namespace raylab

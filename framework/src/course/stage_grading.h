@@ -62,7 +62,9 @@ std::string gradingGuideSection(const StageInfo& stage, const StageGrading& grad
 // -->" lines replaced by gradingGuideSection (the markers stay, so that
 // raylab-labgen can write it again); GUIDE itself when it has no markers.
 // Throws Error when the closing marker is missing.
+// COURSERULES (a course's deadline, late policy, earlier stages:
+// course_file.h's courseRulesSection) follows the section when not empty.
 std::string withGradingSection(const std::string& guide, const StageInfo& stage,
-                               const StageGrading& grading);
+                               const StageGrading& grading, const std::string& courseRules = "");
 
 }  // namespace raylab

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <regex>
 
 using namespace raylab::test;
@@ -361,6 +362,13 @@ TEST(Grade, AMistakeInAnEarlierStageCostsInItsOwnStageOnly) {
     CommandResult own =
         runRaylab(args + quote(dir / "own") + " --course " + quote(dir / "own.json"));
     ASSERT_EQ(own.exitCode, 0) << own.all();
+    std::printf("[ figure   ] the 01 slip, seed 5: 01 %.2f; earlier stages solved: 02 %.2f, 03 "
+                "%.2f; own: 02 %.2f, 03 %.2f (docs/grading.md)\n",
+                stageResult(dir / "out", "ann", "01-raycast")["score"].get<double>(),
+                stageResult(dir / "out", "ann", "02-shading")["score"].get<double>(),
+                stageResult(dir / "out", "ann", "03-shadows")["score"].get<double>(),
+                stageResult(dir / "own", "ann", "02-shading")["score"].get<double>(),
+                stageResult(dir / "own", "ann", "03-shadows")["score"].get<double>());
     for (const char* later : {"02-shading", "03-shadows"}) {
         const nlohmann::json s = stageResult(dir / "own", "ann", later);
         EXPECT_LT(s["score"].get<double>(), 90.0) << later << ": the slip is paid again";

@@ -362,8 +362,8 @@ TEST(Handout, TheOpenLevelHandsOutEveryStageWithoutItsAnswers) {
 
 // f3's guide, as a handout hands it out, run from the student's own folder
 // (not the RayLab folder): its render, check and shader commands work as
-// written (only `build/raylab` is this build's binary, and renders are
-// small). A scene path not found there is the project's.
+// written (only the guide's binary, "<build folder>/raylab", is this build's,
+// and renders are small). A scene path not found there is the project's.
 TEST(Handout, TheF3GuidesCommandsRunFromTheStudentsFolder) {
     ScratchDir dir;
     ASSERT_EQ(runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +
@@ -373,9 +373,12 @@ TEST(Handout, TheF3GuidesCommandsRunFromTheStudentsFolder) {
     std::istringstream guide(readFile(dir / "fur" / "f3-fins" / "README.md"));
     int ran = 0;
     bool shader = false, scene = false;
+    // A command line of the guide: its binary (any folder), then the command.
+    const std::regex binary(R"(^\S*/raylab (.*)$)");
     for (std::string line; std::getline(guide, line);) {
-        if (line.rfind("build/raylab ", 0) != 0) continue;
-        std::string command = line.substr(std::string("build/raylab ").size());
+        std::smatch m;
+        if (!std::regex_match(line, m, binary)) continue;
+        std::string command = m[1];
         command = command.substr(0, command.find('#'));
         const bool render = command.rfind("render ", 0) == 0;
         if (!render && command.rfind("check ", 0) != 0 && command.rfind("shader ", 0) != 0)

@@ -56,9 +56,7 @@ double rmseOf(const Image& a, const Image& b) {
 }
 
 std::string limitsNotes(const FurRenderer& r) {
-    GLint maxVertices = 0, maxComponents = 0;
-    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
-    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
+    const StrandBudget& budget = r.strandBudget();
     return "Mesh: the sphere of `assets/scenes/" + std::string(kBenchScene) +
            "` at several tessellations, seen from its camera. Quality: each picture against "
            "shells + fins with " +
@@ -74,8 +72,8 @@ std::string limitsNotes(const FurRenderer& r) {
            "or OpenGL ES 3.0) and an adjacency index buffer | 4 vertices per edge |\n"
            "| fur shader | a geometry shader that writes line strips (OpenGL 3.2) | "
            "GL_MAX_GEOMETRY_OUTPUT_VERTICES " +
-           std::to_string(maxVertices) + ", GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS " +
-           std::to_string(maxComponents) + ": " + r.strandBudget().describe() + " |";
+           std::to_string(budget.maxOutputVertices) + ", GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS " +
+           std::to_string(budget.maxTotalComponents) + ": " + budget.describe() + " |";
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "stage_score.h"
 #include "view_renderers.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace raylab {
@@ -27,23 +28,13 @@ void markHandedOutViews(const StageInfo& stage, const std::string& scene, int w,
                         const std::vector<Image>& expected, const std::vector<bool>& viewPassed,
                         std::vector<CheckCredit>& credits) {
     const std::size_t firstView = credits.size() - mine.size();
-    bool anyFailed = false;
-    for (bool p : viewPassed) anyFailed = anyFailed || !p;
-    if (!anyFailed) return;
-    const CompareTolerance tolerance;
+    if (std::all_of(viewPassed.begin(), viewPassed.end(), [](bool p) { return p; })) return;
     try {
         ViewRenderers handedOut(stage, labSources(stage, handedOutLabRoot()), scene, w, h,
                                 transform);
-        for (std::size_t i = 0; i < mine.size(); ++i) {
-            const Image untouched = handedOut.render(stage.checkViews[i]);
-            CheckCredit& c = credits[firstView + i];
-            c.reaches =
-                !imagesAgree(compareImages(untouched, expected[i], tolerance.channel), tolerance);
-            c.earnsNothing =
-                c.earnsNothing ||
-                (!viewPassed[i] &&
-                 imagesAgree(compareImages(mine[i], untouched, tolerance.channel), tolerance));
-        }
+        for (std::size_t i = 0; i < mine.size(); ++i)
+            creditHandedOutView(credits[firstView + i], viewPassed[i], mine[i], expected[i],
+                                handedOut.render(stage.checkViews[i]));
     } catch (const Error&) {  // no handed-out lab to compare with: grading counts every view
     }
 }
@@ -118,7 +109,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         std::fputs(formatFunctionLine(f, !failedFunctions.empty()).c_str(), stdout);
         if (!ok) failedFunctions.push_back(f.name);
         credits.push_back({false, points[stage.checkViews.size() + credits.size()],
-                           f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0});
+                           wrongShare(f.passed, f.total)});
     }
     std::fputs(formatViewsHeading().c_str(), stdout);
     std::vector<Image> mineOf, expectedOf;  // for the score's handed-out comparison
@@ -152,8 +143,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         CountOutcome c = runCountCheck(students, name, stage.checkViews);
         (countPassed(c) ? passed : failed) += 1;
         std::fputs(formatCountLine(c).c_str(), stdout);
-        credits.push_back({false, points[credits.size()],
-                           c.total ? 1.0 - double(c.passed) / double(c.total) : 1.0});
+        credits.push_back({false, points[credits.size()], wrongShare(c.passed, c.total)});
     }
     std::fputs(formatSummary(passed, failed).c_str(), stdout);
     std::fputs(formatScoreLine(scoreChecks(credits), grading.seededViews).c_str(), stdout);

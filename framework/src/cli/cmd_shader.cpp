@@ -1,20 +1,20 @@
 // `raylab shader`: prints the GLSL a stage's program is compiled from,
 // assembled exactly as the renderer assembles it (includes resolved, defines,
 // the baked scene for the ray tracer; for the fur track one of the stage's
-// programs, shells, fins or strands, with its geometry shader). `--es` prints the GLSL ES 3.00 the
-// web build compiles; its tests compare the page's own assembly with this. `--function NAME` prints
-// the harness program of that function check instead.
+// programs, shells, fins or strands, with its geometry shader). `--es`
+// prints the GLSL ES 3.00 the web build compiles; its tests compare the
+// page's own assembly with this. `--function NAME` prints the harness program
+// of that function check instead.
 #include "command.h"
 #include "command_options.h"
 #include "error.h"
+#include "fur_renderer.h"
 #include "fur_scene.h"
-#include "gl.h"
 #include "gl_context.h"
 #include "harness_program.h"
 #include "scene_transform.h"
 #include "stage_programs.h"
 #include "stage_sources.h"
-#include "strand_budget.h"
 #include "track_registry.h"
 
 #include <cstdio>
@@ -51,22 +51,18 @@ StagePrograms furPrograms(const StageSetup& setup, const ShaderOptions& o) {
         throw Error("--geometry: the " + name + " program of stage " + stage.id +
                     " has no geometry shader (" + names + ")");
     std::vector<std::string> defines = stage.defines();
-    if (!p.geometry.empty() && p.geometry == "strand.geom") {
+    if (p.geometry == "strand.geom") {
         // How many strand points a geometry shader may emit is the driver's.
         auto context = createHeadlessContext(Backend::Auto);
-        GLint maxVertices = 0, maxComponents = 0;
-        glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
-        glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
-        const FurScene scene = loadFurScene(setup.sceneFile);
         for (const std::string& d :
-             strandBudget(maxVertices, maxComponents, scene.fur.strandSegments).defines())
+             driverStrandBudget(loadFurScene(setup.sceneFile).fur.strandSegments).defines())
             defines.push_back(d);
     }
     const auto search = searchWithVariants(setup.sources, defines);
     const std::string& entry = o.geometry ? p.geometry : o.vertex ? p.vertex : p.fragment;
     ShaderSource source = assembleShader(entry, search, defines);
     if (o.es) source = asGlslEs300(std::move(source));
-    return {source, source};
+    return {source, source};  // the one shader asked for: printSource prints either
 }
 
 // The harness program of the function check NAME, one of STAGE's.

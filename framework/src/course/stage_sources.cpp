@@ -5,7 +5,7 @@
 #include "lab_folder.h"
 #include "paths.h"
 
-#include <algorithm>
+#include <map>
 
 namespace raylab {
 
@@ -115,29 +115,21 @@ std::vector<OwnEarlierStage> ownEarlierStagesRead(const StageInfo& stage,
     if (!sources.lab || sources.earlierSolved || sources.chain.size() < 2) return out;
     if (!solutionCodePresent(stage)) return out;
     std::error_code ec;
-    for (const auto& [name, file] : labFileSources(stage)) {
-        // The first folder of the search that has the file is the one read.
-        for (const fs::path& dir : sources.search) {
-            if (!fs::is_regular_file(dir / name, ec)) continue;
-            for (std::size_t i = 1; i < sources.chain.size(); ++i) {
-                if (dir != sources.labRoot / sources.chain[i]) continue;
-                auto it = std::find_if(out.begin(), out.end(), [&](const OwnEarlierStage& e) {
-                    return e.id == sources.chain[i];
-                });
-                if (it == out.end()) it = out.insert(out.end(), {sources.chain[i], {}});
-                it->files.push_back(name);
+    // Each file is read from the first folder of the search that has it.
+    std::map<std::string, fs::path> readFrom;
+    for (const auto& [name, file] : labFileSources(stage))
+        for (const fs::path& dir : sources.search)
+            if (fs::is_regular_file(dir / name, ec)) {
+                readFrom[name] = dir;
+                break;
             }
-            break;
-        }
-    }
     // Newest first, as the search reads them.
-    std::sort(out.begin(), out.end(), [&](const OwnEarlierStage& a, const OwnEarlierStage& b) {
-        auto rank = [&](const std::string& id) {
-            return std::find(sources.chain.begin(), sources.chain.end(), id) -
-                   sources.chain.begin();
-        };
-        return rank(a.id) < rank(b.id);
-    });
+    for (std::size_t i = 1; i < sources.chain.size(); ++i) {
+        OwnEarlierStage e{sources.chain[i], {}};
+        for (const auto& [name, dir] : readFrom)
+            if (dir == sources.labRoot / e.id) e.files.push_back(name);
+        if (!e.files.empty()) out.push_back(std::move(e));
+    }
     return out;
 }
 

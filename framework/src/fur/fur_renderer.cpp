@@ -35,6 +35,13 @@ void blendOver() {
 
 }  // namespace
 
+StrandBudget driverStrandBudget(int segments) {
+    GLint maxVertices = 0, maxComponents = 0;
+    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
+    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
+    return strandBudget(maxVertices, maxComponents, segments);
+}
+
 struct FurRenderer::Frame {
     glm::mat4 model, view, projection;
     glm::vec3 eye;
@@ -53,11 +60,7 @@ FurRenderer::FurRenderer(const StageInfo& stage, StageSources sources, FurScene 
     colorMap_ = std::make_unique<Texture2D>(scene_.fur.colorMap);
     pattern_ = std::make_unique<Texture2D>(scene_.fur.pattern);
     finMap_ = std::make_unique<Texture2D>(scene_.fur.finMap);
-    GLint maxVertices = 0, maxComponents = 0;
-    glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxVertices);
-    glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxComponents);
-    if (stage_.has("fur_shader"))
-        budget_ = raylab::strandBudget(maxVertices, maxComponents, scene_.fur.strandSegments);
+    if (stage_.has("fur_shader")) budget_ = driverStrandBudget(scene_.fur.strandSegments);
     setMesh(loadFurMesh(scene_, &placement_));
     rebuild();
 }

@@ -26,6 +26,10 @@
 
 namespace raylab {
 
+// The strand budget (strand_budget.h) of the current GL context's driver for
+// strands of SEGMENTS segments: what the fur shader's program is compiled for.
+StrandBudget driverStrandBudget(int segments);
+
 class FurRenderer : public TargetRenderer {
 public:
     // Needs a current GL context. Throws Error (bad scene or mesh, missing

@@ -29,13 +29,6 @@ namespace {
 // Beside a stage's reference pictures: the handed-out lab's, from the same views.
 constexpr const char* kUntouchedFolder = "untouched";
 
-// A function or count check's score (stage_score.h's rule).
-double caseScore(double points, double wrongShare) {
-    std::vector<CheckCredit> one{{false, points, wrongShare}};
-    scoreChecks(one);
-    return one[0].score;
-}
-
 std::string relativeTo(const fs::path& p, const fs::path& base) {
     return p.lexically_relative(base).generic_string();
 }
@@ -122,29 +115,23 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             check.kind = "count";
             check.maxScore = pointsOfOther(name);
             check.passed = c.total > 0 && c.passed == c.total;
-            check.difference = c.total ? 1.0 - double(c.passed) / double(c.total) : 1.0;
-            check.score = caseScore(check.maxScore, check.difference);
+            check.difference = wrongShare(c.passed, c.total);
+            check.score = check.maxScore * caseCredit(check.difference);
             check.output = std::to_string(c.passed) + "/" + std::to_string(c.total) +
                            " views agree" +
                            (c.firstFailure.empty() ? "" : "; first failure: " + c.firstFailure);
             countResults.push_back(check);
         }
-        // Which views reach this stage's code: those the handed-out lab
-        // draws wrong (all, when its pictures are missing). The others
-        // still catch mistakes (a switch ignored), but their points are
-        // scaled by the share the reaching views earned, so that an
-        // untouched lab scores 0.
+        // The handed-out lab's pictures of the same views (stage_score.h's
+        // creditHandedOutView): a view that lab draws right reaches none of the
+        // stage's code (a switch ignored still fails it), and its points are
+        // scaled by the share the reaching views earned, so that an untouched
+        // lab scores 0. Without them every view counts.
         const fs::path untouchedDir = refDir / kUntouchedFolder;
-        std::vector<bool> reaches(views.size(), true);
         std::vector<std::optional<Image>> untouched(views.size());
         for (std::size_t i = 0; i < views.size(); ++i) {
             const fs::path png = untouchedDir / (views[i].name + ".png");
-            if (!fs::exists(png)) continue;
-            untouched[i] = loadPng(png);
-            reaches[i] = !imagesAgree(compareImages(*untouched[i],
-                                                    loadPng(refDir / (views[i].name + ".png")),
-                                                    tolerance.channel),
-                                      tolerance);
+            if (fs::exists(png)) untouched[i] = loadPng(png);
         }
         const std::size_t firstView = result.checks.size();
         std::vector<CheckCredit> viewCredits;
@@ -161,12 +148,12 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
             ImageDiff diff = compareImages(mine, expected, tolerance.channel);
             check.passed = imagesAgree(diff, tolerance) && nonFinite == 0;
             check.difference = diff.badShare;
+            CheckCredit credit{true, check.maxScore, diff.badShare, nonFinite > 0};
+            if (untouched[i])
+                creditHandedOutView(credit, check.passed, mine, expected, *untouched[i]);
             // Still the handed-out lab's picture: nothing of this view's work is done.
-            const bool asHandedOut =
-                !check.passed && untouched[i] &&
-                imagesAgree(compareImages(mine, *untouched[i], tolerance.channel), tolerance);
-            viewCredits.push_back(
-                {true, check.maxScore, diff.badShare, nonFinite > 0 || asHandedOut, reaches[i]});
+            const bool asHandedOut = credit.earnsNothing && nonFinite == 0;
+            viewCredits.push_back(credit);
             check.output = describe(diff);
             if (asHandedOut) check.output += "; the same picture as the lab as handed out";
             if (nonFinite)
@@ -193,7 +180,7 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
         for (std::size_t i = 0; i < views.size(); ++i) {
             CheckResult& c = result.checks[firstView + i];
             c.score = viewCredits[i].score;
-            if (reaches[i] || score.reachShare >= 1.0) continue;
+            if (viewCredits[i].reaches || score.reachShare >= 1.0) continue;
             c.passed = false;
             char note[160];
             std::snprintf(note, sizeof note,
@@ -217,8 +204,8 @@ StageResult gradeStage(const StageInfo& stage, const StageGrading& grading, cons
         check.kind = "function";
         check.maxScore = pointsOfOther(f.name);
         check.passed = f.total > 0 && f.passed == f.total;
-        check.difference = f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0;
-        check.score = caseScore(check.maxScore, check.difference);
+        check.difference = wrongShare(f.passed, f.total);
+        check.score = check.maxScore * caseCredit(check.difference);
         check.output = std::to_string(f.passed) + "/" + std::to_string(f.total) + " cases agree" +
                        (f.firstFailure.empty() ? "" : "; first failure: " + f.firstFailure) +
                        (f.cause.empty() || earlierFailed ? "" : "; hint: " + f.cause);

@@ -281,24 +281,16 @@ private:
         for (const FunctionOutcome& f : functions_) otherNames.push_back(f.name);
         const std::vector<double> points = checkPoints(stage_->grading, viewWeights, otherNames);
         std::vector<CheckCredit> credits;
-        const CompareTolerance tolerance;
         for (std::size_t i = 0; i < views_.size(); ++i) {
             const ViewOutcome& v = views_[i];
             CheckCredit c{true, points[i], v.diff.badShare, v.nonFinite > 0};
             auto it = untouched_.find(v.name);
-            if (it != untouched_.end()) {
-                c.reaches = !imagesAgree(compareImages(it->second, expected_[i], tolerance.channel),
-                                         tolerance);
-                c.earnsNothing =
-                    c.earnsNothing || (!v.passed && imagesAgree(compareImages(mine_[i], it->second,
-                                                                              tolerance.channel),
-                                                                tolerance));
-            }
+            if (it != untouched_.end())
+                creditHandedOutView(c, v.passed, mine_[i], expected_[i], it->second);
             credits.push_back(c);
         }
         for (const FunctionOutcome& f : functions_)
-            credits.push_back({false, points[credits.size()],
-                               f.total ? 1.0 - double(f.passed) / double(f.total) : 1.0});
+            credits.push_back({false, points[credits.size()], wrongShare(f.passed, f.total)});
         return formatScoreLine(scoreChecks(credits), stage_->grading.seededViews);
     }
     std::string scoreInto(const std::string& name, const val& floats) {

@@ -18,17 +18,15 @@ CasePick either(CasePick a, CasePick b) {
     return [a = std::move(a), b = std::move(b)](const CaseVerdict& v) { return a(v) || b(v); };
 }
 
-bool anyFailed(const std::vector<CaseVerdict>& v, const CasePick& pick) {
+bool anyFailed(const CaseVerdicts& v, const CasePick& pick) {
     for (const CaseVerdict& c : v)
         if (c.failed && pick(c)) return true;
     return false;
 }
 
-bool noneFailed(const std::vector<CaseVerdict>& v, const CasePick& pick) {
-    return !anyFailed(v, pick);
-}
+bool noneFailed(const CaseVerdicts& v, const CasePick& pick) { return !anyFailed(v, pick); }
 
-bool onlyFailed(const std::vector<CaseVerdict>& v, const CasePick& pick) {
+bool onlyFailed(const CaseVerdicts& v, const CasePick& pick) {
     for (const CaseVerdict& c : v)
         if (c.failed && !pick(c)) return false;
     return true;

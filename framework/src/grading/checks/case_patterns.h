@@ -21,9 +21,9 @@ CasePick labelHas(std::string text);
 CasePick either(CasePick a, CasePick b);
 
 // Some case that PICK picks failed / none did.
-bool anyFailed(const std::vector<CaseVerdict>& v, const CasePick& pick);
-bool noneFailed(const std::vector<CaseVerdict>& v, const CasePick& pick);
+bool anyFailed(const CaseVerdicts& v, const CasePick& pick);
+bool noneFailed(const CaseVerdicts& v, const CasePick& pick);
 // Every failing case is one PICK picks.
-bool onlyFailed(const std::vector<CaseVerdict>& v, const CasePick& pick);
+bool onlyFailed(const CaseVerdicts& v, const CasePick& pick);
 
 }  // namespace raylab

@@ -126,23 +126,19 @@ std::vector<FunctionDiagnosis> refractGlassDiagnoses() {
         {"ior",
          "only media other than glass go wrong (water 1.33, diamond 2.4), glass (1.5) is "
          "right: eta must come from the ior given, not a constant",
-         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, notGlass); }},
+         [=](const CaseVerdicts& v) { return onlyFailed(v, notGlass); }},
         {"total-internal-reflection",
          "only total internal reflection goes wrong: there nothing is refracted and F is 1 "
          "(all of the light is reflected)",
-         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, tir); }},
+         [=](const CaseVerdicts& v) { return onlyFailed(v, tir); }},
         {"eta",
          "only rays leaving the glass go the wrong way (entering ones are right): eta is the "
          "ratio of the indices from the ray's side to the other, 1/ior entering, ior leaving",
-         [=](const std::vector<CaseVerdict>& v) {
-             return noneFailed(v, entering) && anyFailed(v, wrongWay);
-         }},
+         [=](const CaseVerdicts& v) { return noneFailed(v, entering) && anyFailed(v, wrongWay); }},
         {"schlick-cosine",
          "leaving the glass only F is wrong, every direction is right: Schlick takes the cosine "
          "of the larger angle, on the air's side, which leaving is the refracted ray's",
-         [=](const std::vector<CaseVerdict>& v) {
-             return noneFailed(v, entering) && noneFailed(v, wrongWay);
-         }},
+         [=](const CaseVerdicts& v) { return noneFailed(v, entering) && noneFailed(v, wrongWay); }},
     };
 }
 

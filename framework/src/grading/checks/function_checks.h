@@ -36,6 +36,7 @@ struct CaseVerdict {
     glm::dvec4 got{0.0}, want{0.0};
     bool failed = false;
 };
+using CaseVerdicts = std::vector<CaseVerdict>;  // every case's, in the spec's order
 
 // A cause that the pattern of failing cases proves, not a guess: e.g. "only
 // rays leaving the glass refract wrong, and entering ones are right" is what
@@ -46,9 +47,8 @@ struct CaseVerdict {
 struct FunctionDiagnosis {
     std::string id;     // "eta", unique within the spec: "refractGlass:eta" in the catalogue
     std::string cause;  // what the student reads
-    // True when the verdicts (every case's, in the spec's order; at least one
-    // failed) show this cause.
-    std::function<bool(const std::vector<CaseVerdict>&)> applies;
+    // True when the verdicts (at least one failed) show this cause.
+    std::function<bool(const CaseVerdicts&)> applies;
 };
 
 struct FunctionSpec {
@@ -99,8 +99,7 @@ struct FunctionOutcome {
     int passed = 0, total = 0;
     std::string firstFailure;  // "tangent ray: expected t = 5, got no hit"
     bool compiled = true;      // false: the harness did not compile (message in firstFailure)
-    std::string causeId;       // the diagnosis that applies ("refractGlass:eta"), or empty
-    std::string cause;         // its text
+    std::string cause;         // the text of the diagnosis that applies, or empty
 };
 
 // What a harness run wrote: one vec4 per case, w = kHarnessTodoMarker when

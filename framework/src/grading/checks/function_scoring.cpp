@@ -32,7 +32,7 @@ FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
     FunctionOutcome out;
     out.name = spec.name;
     out.total = int(spec.cases.size());
-    std::vector<CaseVerdict> verdicts;
+    CaseVerdicts verdicts;
     bool todo = false;
     for (std::size_t i = 0; i < spec.cases.size(); ++i) {
         const FunctionCase& c = spec.cases[i];
@@ -48,7 +48,6 @@ FunctionOutcome scoreFunctionResults(const FunctionSpec& spec,
     if (out.passed < out.total && !todo)
         for (const FunctionDiagnosis& d : spec.diagnoses)
             if (d.applies(verdicts)) {
-                out.causeId = spec.name + ":" + d.id;
                 out.cause = d.cause;
                 break;
             }

@@ -25,6 +25,20 @@ StageScore scoreChecks(std::vector<CheckCredit>& checks) {
     return s;
 }
 
+double wrongShare(int passed, int total) {
+    return total > 0 ? 1.0 - double(passed) / double(total) : 1.0;
+}
+
+void creditHandedOutView(CheckCredit& c, bool passed, const Image& mine, const Image& expected,
+                         const Image& handedOut) {
+    const CompareTolerance tolerance;
+    auto agree = [&](const Image& a, const Image& b) {
+        return imagesAgree(compareImages(a, b, tolerance.channel), tolerance);
+    };
+    c.reaches = !agree(handedOut, expected);
+    c.earnsNothing = c.earnsNothing || (!passed && agree(mine, handedOut));
+}
+
 std::string formatScoreLine(const StageScore& score, int seeded) {
     char line[320];
     if (seeded > 0)

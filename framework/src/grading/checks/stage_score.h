@@ -5,6 +5,7 @@
 // checks. The points of each check come from stage_grading.h (checkPoints);
 // a check's credit falls continuously with what it measured (viewCredit,
 // caseCredit).
+#include "image_compare.h"
 #include "stage_grading.h"
 
 #include <string>
@@ -32,6 +33,16 @@ struct StageScore {
 
 // Fills each check's score and returns the stage's total.
 StageScore scoreChecks(std::vector<CheckCredit>& checks);
+
+// The share of a function check's cases (or a count check's views) that are
+// wrong: what caseCredit reads. None counted is all wrong.
+double wrongShare(int passed, int total);
+
+// An image check against the lab as handed out's picture of the same view
+// (HANDEDOUT): it reaches the stage's code when that picture is wrong, and a
+// failing MINE equal to it earns nothing. EXPECTED: the reference picture.
+void creditHandedOutView(CheckCredit& c, bool passed, const Image& mine, const Image& expected,
+                         const Image& handedOut);
 
 // "score 87.35/100 by the grader's rule for these checks; ..." for `raylab
 // check`: SEEDED is the number of views the grader adds (StageGrading::

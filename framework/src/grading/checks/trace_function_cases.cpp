@@ -223,11 +223,11 @@ std::vector<FunctionDiagnosis> traceDiagnoses() {
          "10^6): there a reflected or refracted ray meets the surface it starts on; start "
          "each secondary ray with offsetRayOrigin (a fixed offset, or none, is too small "
          "there)",
-         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, far); }},
+         [=](const CaseVerdicts& v) { return onlyFailed(v, far); }},
         {"depth-limit",
          "between two mirrors the colour is the same whatever uMaxDepth is: a ray at the depth "
          "limit must not spawn secondary rays",
-         [=](const std::vector<CaseVerdict>& v) {
+         [=](const CaseVerdicts& v) {
              // Two or more depths of the mirrors' ray wrong, all with one colour.
              const CaseVerdict* first = nullptr;
              int wrong = 0;
@@ -244,9 +244,7 @@ std::vector<FunctionDiagnosis> traceDiagnoses() {
          "what glass adds, the refracted ray: where it starts (offsetRayOrigin on the far side "
          "of the surface, -normal), its weight (the path's weight times 1 - F, the reflected "
          "ray's times F) and the stack that keeps it until it is traced",
-         [=](const std::vector<CaseVerdict>& v) {
-             return noneFailed(v, mirrors) && noneFailed(v, gold);
-         }},
+         [=](const CaseVerdicts& v) { return noneFailed(v, mirrors) && noneFailed(v, gold); }},
     };
 }
 

@@ -150,41 +150,35 @@ std::vector<FunctionDiagnosis> shadowRayDiagnoses() {
          "a sphere beyond the light blocks it, while a light with nothing between is "
          "visible: only a blocker nearer than the light may block it (compare the blocker's t "
          "with the distance to the light)",
-         [=](const std::vector<CaseVerdict>& v) {
-             return anyFailed(v, beyond) && noneFailed(v, open);
-         }},
+         [=](const CaseVerdicts& v) { return anyFailed(v, beyond) && noneFailed(v, open); }},
         {"side",
          "a light with nothing between is blocked, a grazing one too: the shadow ray meets the "
          "point's own surface because it starts on the side away from the light; start it with "
          "offsetRayOrigin(point, side), side the normal when the light is in front of the "
          "surface, -normal when it is behind",
-         [=](const std::vector<CaseVerdict>& v) {
-             return anyFailed(v, open) && anyFailed(v, grazing);
-         }},
+         [=](const CaseVerdicts& v) { return anyFailed(v, open) && anyFailed(v, grazing); }},
         {"direction",
          "a light with nothing between is blocked, though a grazing one is not: the shadow "
          "ray must go toward the light (the light's position minus the point, normalised), "
          "not away from it",
-         [=](const std::vector<CaseVerdict>& v) {
-             return anyFailed(v, open) && noneFailed(v, grazing);
-         }},
+         [=](const CaseVerdicts& v) { return anyFailed(v, open) && noneFailed(v, grazing); }},
         {"far",
          "only points far from the origin (10^4 to 10^6) fail: there the shadow ray meets its "
          "own surface, as a fixed offset is too small for their float steps; "
          "offsetRayOrigin(point, side) grows with the point",
-         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, far); }},
+         [=](const CaseVerdicts& v) { return onlyFailed(v, far); }},
         {"own-surface",
          "the shadow ray meets its own surface at points far from the origin and inside large "
          "spheres, not at small ones: does it start off the surface, at "
          "offsetRayOrigin(point, side)?",
-         [=](const std::vector<CaseVerdict>& v) {
+         [=](const CaseVerdicts& v) {
              return onlyFailed(v, either(far, inside)) && anyFailed(v, far) && anyFailed(v, inside);
          }},
         {"normal-side",
          "only where the eye or the light is inside a sphere (the light behind the surface the "
          "normal faces) is the light blocked: the shadow ray starts on the light's side, which "
          "is -normal there",
-         [=](const std::vector<CaseVerdict>& v) { return onlyFailed(v, inside); }},
+         [=](const CaseVerdicts& v) { return onlyFailed(v, inside); }},
     };
 }
 

@@ -79,3 +79,45 @@ TEST(FunctionTables, ATableThatNoLongerFitsIsRefused) {
             << e.what();
     }
 }
+
+TEST(FunctionTables, ABundlesTablesHoldItsChecksAndTheirHarness) {
+    // A bundle of stage 03 holds lightVisible's table, stand-ins and helpers,
+    // and nothing of 08's lightVisibleFast (whose stand-in finds blockers).
+    const FunctionSpec& released = functionSpec("lightVisible");
+    const std::string text = functionTablesJson({&released});
+    EXPECT_EQ(text.find("lightVisibleFast"), std::string::npos);
+    EXPECT_EQ(text.find("findBlocker"), std::string::npos);
+    const FunctionTables some = parseFunctionTables(text, "b.json", TableCoverage::Some);
+    ASSERT_EQ(some.size(), 1u);
+    const FunctionSpec rebuilt = withHarnessFrom(some, released, "b.json");
+    EXPECT_FALSE(rebuilt.prelude.empty());
+    EXPECT_EQ(rebuilt.prelude, released.prelude);
+    EXPECT_EQ(rebuilt.helpers, released.helpers);
+    // The project's file must hold every check: a bundle's is refused there.
+    try {
+        parseFunctionTables(text, "b.json");
+        ADD_FAILURE() << "a partial table was taken for the whole";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("b.json: intersectSphere: missing"), std::string::npos)
+            << e.what();
+    }
+    // A check the bundle does not hold: one line naming the file and the function.
+    try {
+        withHarnessFrom(some, functionSpec("lightVisibleFast"), "b.json");
+        ADD_FAILURE() << "a check without a table was given a harness";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("b.json has no table for lightVisibleFast"),
+                  std::string::npos)
+            << e.what();
+    }
+    // A function no check has is refused, not ignored.
+    try {
+        parseFunctionTables(replaced(text, "\"lightVisible\"", "\"lightInvisible\""), "b.json",
+                            TableCoverage::Some);
+        ADD_FAILURE() << "an unknown function was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("lightInvisible: no such function check"),
+                  std::string::npos)
+            << e.what();
+    }
+}

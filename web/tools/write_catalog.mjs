@@ -4,9 +4,10 @@
 // scene files. The page never asks the server for a file that is not listed,
 // so a missing file is an error message of ours, not a 404 in the console.
 // Run by `npm run build`; `raylab web-bundle` runs it on its bundle:
-//   node tools/write_catalog.mjs [--root DIR] [--stages 01-raycast,...] [--no-solutions]
+//   node tools/write_catalog.mjs [--root DIR] [--stages 01-raycast,...] [--no-solutions] [--bundle]
 // (--root: a tree laid out like the project's; --stages: only those stages in
-// the page's menu; --no-solutions: the page offers the labs only.)
+// the page's menu; --no-solutions: the page offers the labs only; --bundle:
+// a students' bundle, which has no test API.)
 import { readdirSync, readFileSync, statSync, writeFileSync, mkdirSync, renameSync } from 'node:fs';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -20,19 +21,24 @@ const isDir = (p) => { try { return statSync(p).isDirectory(); } catch { return 
 const filesIn = (dir) => (isDir(dir) ? readdirSync(dir).filter((n) => !isDir(join(dir, n))).sort() : []);
 const shaderFiles = (dir) => filesIn(dir).filter((n) => /\.(glsl|vert|frag|geom)$/.test(n));
 
-const stages = readdirSync(join(root, 'solution'))
+const stageIds = readdirSync(join(root, 'solution'))
   .filter((id) => isDir(join(root, 'solution', id)) && filesIn(join(root, 'solution', id)).includes('stage.json'))
-  .filter((id) => !only || only.includes(id))
-  .sort()
-  .map((id) => ({
-    info: JSON.parse(readFileSync(join(root, 'solution', id, 'stage.json'), 'utf8')),
-    solutionFiles: solutions ? shaderFiles(join(root, 'solution', id)) : [],
-    labFiles: shaderFiles(join(root, 'labs', id)),
-  }));
+  .sort();
+const entry = (id) => ({
+  info: JSON.parse(readFileSync(join(root, 'solution', id, 'stage.json'), 'utf8')),
+  solutionFiles: solutions ? shaderFiles(join(root, 'solution', id)) : [],
+  labFiles: shaderFiles(join(root, 'labs', id)),
+});
+const stages = stageIds.filter((id) => !only || only.includes(id)).map(entry);
+// A bundle's stages that the released ones build on (it holds their
+// stage.json, and with --carry own their folders as handed out): not in the
+// page's menu, but the core reads them for builds_on and the page for the
+// folders a stage reads.
+const earlier = stageIds.filter((id) => only && !only.includes(id)).map(entry);
 
 const variants = {};
 const variantRoot = join(root, 'framework/shaders/variants');
-for (const variant of readdirSync(variantRoot).filter((n) => isDir(join(variantRoot, n))))
+for (const variant of (isDir(variantRoot) ? readdirSync(variantRoot) : []).filter((n) => isDir(join(variantRoot, n))))
   for (const stage of readdirSync(join(variantRoot, variant)))
     variants[`${variant}/${stage}`] = shaderFiles(join(variantRoot, variant, stage));
 
@@ -40,7 +46,9 @@ const catalog = {
   // The solutions are listed (tools/serve.mjs without --with-solutions
   // serves this file with false here and no solution files).
   solutions,
+  bundle: args.includes('--bundle'),
   stages,
+  earlier,
   framework: shaderFiles(join(root, 'framework/shaders')),
   web: shaderFiles(join(root, 'web/shaders')),
   variants,

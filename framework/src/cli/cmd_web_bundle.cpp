@@ -2,16 +2,22 @@
 // course hosts for its students (any web server; no raylab server): the
 // page and its WebAssembly core, the released stages' labs exactly as
 // `raylab handout` gives them, the framework's shaders, the scenes and their
-// pictures, each stage's stage.json (data, no code), the check views'
-// reference pictures and the function checks' expected values, which the
-// page's Check compares with. No solution code:
-// not solution/'s files, not the variant files that stand in for a file
-// students write (web/tools/serve.mjs keeps the same ones back). The folder
-// appears whole or not at all.
+// pictures, and, for the released stages only, their stage.json (data, no
+// code), the check views' reference pictures, the function checks' expected
+// values and harness GLSL, and the shader variants. Of a stage the released
+// ones build on and the bundle does not release it holds the stage.json
+// (the folders and files the later stage reads) and, with --carry own, the
+// folder as handed out (so that the page opens before a student brings in
+// their own); nothing of a later stage. No solution code: not solution/'s
+// files, not the variant files that stand in for a file students write
+// (web/tools/serve.mjs keeps the same ones back), no page test API. The
+// folder appears whole or not at all.
 #include "atomic_file.h"
 #include "command.h"
 #include "course_file.h"
 #include "error.h"
+#include "function_checks.h"
+#include "function_tables.h"
 #include "handout.h"
 #include "handout_folder.h"
 #include "paths.h"
@@ -23,6 +29,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 
 namespace raylab {
 
@@ -35,22 +42,50 @@ void copyTree(const fs::path& from, const fs::path& to) {
     fs::copy(from, to, fs::copy_options::recursive);
 }
 
-// framework/shaders/ without the variant files that hold solved code: a
-// variant file standing in for a file of labs/<stage>/ is that file solved.
-void copyFrameworkShaders(const fs::path& to) {
+// framework/shaders/ with the variant folders of STAGES only, and without
+// the variant files that hold solved code: a variant file standing in for a
+// file of labs/<stage>/ is that file solved.
+void copyFrameworkShaders(const fs::path& to, const std::set<std::string>& stages) {
     const fs::path from = projectRoot() / "framework" / "shaders";
     std::error_code ec;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(from)) {
         if (!e.is_regular_file()) continue;
         const fs::path rel = e.path().lexically_relative(from);
         auto part = rel.begin();
-        if (part->string() == "variants" && std::distance(rel.begin(), rel.end()) == 4) {
+        if (part->string() == "variants") {
+            if (std::distance(rel.begin(), rel.end()) != 4) continue;
             const std::string stage = std::next(part, 2)->string();
-            if (fs::exists(defaultLabRoot() / stage / rel.filename(), ec)) continue;
+            if (!stages.count(stage) || fs::exists(defaultLabRoot() / stage / rel.filename(), ec))
+                continue;
         }
         fs::create_directories((to / rel).parent_path());
         fs::copy_file(e.path(), to / rel);
     }
+}
+
+// The stages PLAN's stages build on that PLAN does not release, in course order.
+std::vector<const StageInfo*> earlierStages(const std::vector<HandoutStage>& plan) {
+    std::set<std::string> released, seen;
+    for (const HandoutStage& h : plan) released.insert(h.stage->id);
+    for (const HandoutStage& h : plan)
+        for (const StageInfo* at = h.stage; !at->buildsOn.empty();) {
+            at = &findStage(at->buildsOn);
+            if (!released.count(at->id)) seen.insert(at->id);
+        }
+    std::vector<const StageInfo*> out;
+    for (const StageInfo& s : allStages())
+        if (seen.count(s.id)) out.push_back(&s);
+    return out;
+}
+
+// web/function_tables.json with the tables of PLAN's stages' checks only.
+std::string releasedFunctionTables(const std::vector<HandoutStage>& plan) {
+    std::vector<const FunctionSpec*> specs;
+    for (const HandoutStage& h : plan)
+        for (const FunctionSpec* spec : functionSpecsFor(*h.stage))
+            if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(spec);
+    // No checks at all: an empty table, not every one (functionTablesJson's default).
+    return specs.empty() ? "{\"functions\": {}}\n" : functionTablesJson(specs);
 }
 
 // web/tools/write_catalog.mjs for the bundle: its stages, no solutions.
@@ -61,7 +96,7 @@ void writeCatalog(const fs::path& root, const std::vector<HandoutStage>& plan) {
     const pid_t pid = fork();
     if (pid == 0) {
         execlp("node", "node", script.c_str(), "--root", root.c_str(), "--stages", ids.c_str(),
-               "--no-solutions", static_cast<char*>(nullptr));
+               "--no-solutions", "--bundle", static_cast<char*>(nullptr));
         std::perror("raylab web-bundle: cannot run node");
         _exit(127);
     }
@@ -88,20 +123,40 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
         if (!fs::is_regular_file(root / built, ec))
             throw Error(std::string(built) +
                         " is missing: build the page first (npm --prefix web run build)");
+    const std::vector<const StageInfo*> earlier = earlierStages(plan);
+    std::set<std::string> stages;  // the released ones and those they build on
+    for (const HandoutStage& h : plan) stages.insert(h.stage->id);
+    for (const StageInfo* s : earlier) stages.insert(s->id);
     const fs::path out = newOutputFolder(outDir);
     writeWhole(out, "the bundle", [&](const fs::path& temp) {
         fs::create_directories(temp / "labs");
         writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course, level);
-        for (const char* file : {"web/index.html", "web/page.css", "web/function_tables.json"})
+        if (carry == Carry::Own && !earlier.empty()) {
+            // The earlier stages' folders as handed out: the page opens and
+            // checks on them until the student brings in their own.
+            const fs::path before = temp / "earlier";
+            fs::create_directories(before);
+            writeHandoutFolder(planHandout(earlier, Carry::Own), defaultLabRoot(), before, "",
+                               course, level);
+            for (const StageInfo* s : earlier) fs::rename(before / s->id, temp / "labs" / s->id);
+            fs::remove_all(before);
+        }
+        for (const char* file : {"web/index.html", "web/page.css"})
             copyTree(root / file, temp / file);
+        writeTextFileAtomic(temp / "web" / "function_tables.json", releasedFunctionTables(plan));
         for (const char* dir :
              {"web/dist", "web/shaders", "assets/scenes", "assets/textures", "assets/meshes"})
             copyTree(root / dir, temp / dir);
-        copyFrameworkShaders(temp / "framework" / "shaders");
-        // Every stage.json (the core reads the course from them; data, no
-        // code), the released stages' reference pictures.
+        // The page's test API stays at home (tests drive the dev page).
+        for (const fs::directory_entry& e : fs::directory_iterator(temp / "web/dist/app"))
+            if (e.path().filename().string().rfind("test_api.", 0) == 0) fs::remove(e.path());
+        copyFrameworkShaders(temp / "framework" / "shaders", stages);
+        // The stage.json of the released stages and those they build on (the
+        // core reads the course from them; data, no code), the released
+        // stages' reference pictures.
         for (const StageInfo& s : allStages())
-            copyTree(s.folder() / "stage.json", temp / "solution" / s.id / "stage.json");
+            if (stages.count(s.id))
+                copyTree(s.folder() / "stage.json", temp / "solution" / s.id / "stage.json");
         for (const HandoutStage& h : plan)
             copyTree(root / "tests" / "reference" / h.stage->id,
                      temp / "tests" / "reference" / h.stage->id);

@@ -31,17 +31,25 @@ namespace raylab {
 
 namespace {
 
-// The expected values the checks score against (no reference code here):
-// web/function_tables.json, read once.
+// The expected values the checks score against and their harness GLSL (no
+// reference code and no stand-in here): web/function_tables.json, read once;
+// a bundle's holds its released stages' checks.
+const std::string& tablesFile() {
+    static const std::string file = displayPath(projectRoot() / "web" / "function_tables.json");
+    return file;
+}
 const FunctionTables& tables() {
-    static const FunctionTables t = [] {
-        const auto file = projectRoot() / "web" / "function_tables.json";
-        return parseFunctionTables(readTextFile(file), displayPath(file));
-    }();
+    static const FunctionTables t =
+        parseFunctionTables(readTextFile(projectRoot() / "web" / "function_tables.json"),
+                            tablesFile(), TableCoverage::Some);
     return t;
 }
 
-std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) { return tables().at(spec.name).wants; }
+std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) {
+    const auto it = tables().find(spec.name);
+    if (it == tables().end()) throw Error(tablesFile() + " has no table for " + spec.name);
+    return it->second.wants;
+}
 
 // What a harness wrote (RGBA floats, one pixel per case), one vec4 per case.
 std::vector<glm::vec4> harnessResults(const val& floats) {
@@ -68,7 +76,8 @@ public:
             stage_ = &findStage(r.value("stage", ""));
             const std::string lab = r.value("lab", "");
             sources_ = lab.empty() ? solutionSources(*stage_) : labSources(*stage_, lab);
-            specs_ = functionSpecsFor(*stage_);
+            for (const FunctionSpec* spec : functionSpecsFor(*stage_))
+                specs_.push_back(withHarnessFrom(tables(), *spec, tablesFile()));
         } catch (const std::exception& e) { error_ = e.what(); }
     }
     std::string error() const { return error_; }
@@ -78,15 +87,15 @@ public:
     // not be assembled (native: "does not compile: ...").
     std::string list() const {
         json out = json::array();
-        for (const FunctionSpec* spec : specs_) {
-            json f = {{"name", spec->name},
-                      {"cases", spec->cases.size()},
-                      {"perCase", harnessDrawsPerCase(*spec)}};
+        for (const FunctionSpec& spec : specs_) {
+            json f = {{"name", spec.name},
+                      {"cases", spec.cases.size()},
+                      {"perCase", harnessDrawsPerCase(spec)}};
             json uniforms = json::array();
-            for (const FunctionCase& c : spec->cases) uniforms.push_back(c.uniforms);
+            for (const FunctionCase& c : spec.cases) uniforms.push_back(c.uniforms);
             f["uniforms"] = uniforms;
             try {
-                const HarnessProgram p = assembleHarness(*spec, *stage_, sources_, {}, true);
+                const HarnessProgram p = assembleHarness(spec, *stage_, sources_, {}, true);
                 f["vertex"] = sourceJson(p.vertex);
                 f["fragment"] = sourceJson(p.fragment);
             } catch (const std::exception& e) { f["error"] = e.what(); }
@@ -111,14 +120,14 @@ public:
 
 private:
     const FunctionSpec& spec(const std::string& name) const {
-        for (const FunctionSpec* s : specs_)
-            if (s->name == name) return *s;
+        for (const FunctionSpec& s : specs_)
+            if (s.name == name) return s;
         throw Error("stage " + (stage_ ? stage_->id : std::string("?")) +
                     " has no function check '" + name + "'");
     }
     const StageInfo* stage_ = nullptr;
     StageSources sources_;
-    std::vector<const FunctionSpec*> specs_;
+    std::vector<FunctionSpec> specs_;  // with their harness GLSL from the tables
     std::string error_;
 };
 

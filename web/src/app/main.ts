@@ -1,8 +1,8 @@
 // The page's entry point: a WebGL 2 context on the canvas, the catalog, the
-// page, and window.raylab (test_api.ts) for the tests and the benchmark.
+// page, and window.raylab (test_api.ts) for the tests and the benchmark -
+// except in a students' bundle (`raylab web-bundle`), which has no test API.
 import { loadCatalog } from '../course/catalog.js';
 import { Page } from './page.js';
-import { installTestApi } from './test_api.js';
 
 async function main(): Promise<void> {
   const canvas = document.getElementById('view') as HTMLCanvasElement;
@@ -23,7 +23,7 @@ async function main(): Promise<void> {
   });
   const catalog = await loadCatalog();
   const page = new Page(gl, canvas, catalog);
-  installTestApi(gl, canvas, catalog, page);
+  if (!catalog.bundle) (await import('./test_api.js')).installTestApi(gl, canvas, catalog, page);
   if (!new URLSearchParams(location.search).has('test')) page.start();
 }
 

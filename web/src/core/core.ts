@@ -229,7 +229,7 @@ export function writeStudentLab(core: Core, labRoot: string, folders: Map<string
 // check that they exist).
 export function projectFiles(catalog: Catalog): string[] {
   const files: string[] = [];
-  for (const s of catalog.stages) {
+  for (const s of [...catalog.stages, ...(catalog.earlier ?? [])]) {
     files.push(`solution/${s.info.id}/stage.json`);
     files.push(...s.solutionFiles.map((n) => `solution/${s.info.id}/${n}`));
     files.push(...s.labFiles.map((n) => `labs/${s.info.id}/${n}`));

@@ -45,7 +45,12 @@ export interface Catalog {
   // False where the server keeps the solutions back (tools/serve.mjs without
   // --with-solutions): the page offers the labs only.
   solutions: boolean;
+  // A students' bundle (`raylab web-bundle`): no test API, the work kept in the browser.
+  bundle?: boolean;
   stages: { info: StageJson; solutionFiles: string[]; labFiles: string[] }[];
+  // A bundle's stages that those it releases build on and it does not
+  // release: read for builds_on and their folders, not offered in the menu.
+  earlier?: { info: StageJson; solutionFiles: string[]; labFiles: string[] }[];
   framework: string[];
   web: string[];
   variants: Record<string, string[]>;
@@ -68,10 +73,16 @@ export function stageById(catalog: Catalog, id: string): StageJson {
   return s.info;
 }
 
-// The stage and those it builds on, newest first.
+// The stage and those it builds on, newest first (a bundle's earlier stages included).
 export function chain(catalog: Catalog, stage: StageJson): StageJson[] {
+  const known = [...catalog.stages, ...(catalog.earlier ?? [])];
+  const byId = (id: string) => {
+    const s = known.find((x) => x.info.id === id);
+    if (!s) throw new Error(`stage ${stage.id} builds on "${id}", which this page does not have`);
+    return s.info;
+  };
   const out: StageJson[] = [];
-  for (let at: StageJson | null = stage; at; at = at.builds_on ? stageById(catalog, at.builds_on) : null)
+  for (let at: StageJson | null = stage; at; at = at.builds_on ? byId(at.builds_on) : null)
     out.push(at);
   return out;
 }

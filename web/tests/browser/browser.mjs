@@ -72,16 +72,22 @@ export async function allowDownloads(page, downloads) {
   await cdp.send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
 }
 
-// A page of the web build with its console errors and page errors collected.
-// QUERY: ?test=1 (the default) leaves the page's own controls idle, for the
-// test API; '' starts them, as a student's visit does.
-export async function openPage(browser, url, query = '?test=1') {
-  const page = await browser.newPage();
+// PAGE's console errors, page errors and failed requests, collected as they come.
+export function collectProblems(page) {
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
   page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  return problems;
+}
+
+// A page of the web build with its console errors and page errors collected.
+// QUERY: ?test=1 (the default) leaves the page's own controls idle, for the
+// test API; '' starts them, as a student's visit does.
+export async function openPage(browser, url, query = '?test=1') {
+  const page = await browser.newPage();
+  const problems = collectProblems(page);
   await page.goto(`${url}${query}`, { waitUntil: 'load' });
   await page.waitForFunction(() => window.raylab !== undefined, { timeout: 30_000 });
   const renderer = await page.evaluate(() => {

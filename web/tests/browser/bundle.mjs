@@ -1,26 +1,31 @@
-// `raylab web-bundle`: the students' hosted page (issue: the browser as a
+// `raylab web-bundle`: the students' hosted page (issue: the page as every
 // student's whole workstation). Part of the `web_browser` test:
-//  1. the bundle of stages 01-03 holds no solution: no file of solution/ but
-//     the stage.json files, no variant file standing in for a student's
-//     file, and no text file containing the code of any //@solution region
-//     of a stage it holds (whitespace aside); the scan is shown to catch a
-//     planted solution file; the same at the open level (--level open), where
-//     the code an open region's guided part gives is an answer too (the
-//     guided bundle holds it: the scan is shown to see it);
-//  2. served by a plain static server (python3 -m http.server), the page
-//     offers exactly those stages, labs only, and Check runs on each stage's
-//     lab as handed out with native's report, with no failed request.
+//  1. a bundle holds its released stages only and no answer: no file of
+//     solution/ but stage.json (of its stages and those they build on, never a
+//     later one), no lab, reference picture or shader variant of a stage it
+//     does not release, function tables of its stages' checks only, no page
+//     test API, and no text of any stage's //@solution region (at the open
+//     level also the code the guided level gives) or of an unreleased check's
+//     stand-ins in any file, the WebAssembly core's strings included; the scan
+//     is shown to catch a planted solution file and a planted stand-in;
+//  2. served by a plain static server (python3 -m http.server), bundles of
+//     single stages and ranges of both tracks, both levels, both carries open
+//     with their stages only, and the page's own Check button (no test hook:
+//     a bundle has none) gives a verdict on the lab as handed out (fails) and
+//     on a solved lab folder picked through the browser's folder input
+//     (passes), with no failed request.
 // Usage: node tests/browser/bundle.mjs [--raylab PATH]
 import { execFileSync, spawn } from 'node:child_process';
-import { copyFileSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, relative, resolve } from 'node:path';
-import { launchBrowser, openPage, projectRoot } from './browser.mjs';
+import { collectProblems, launchBrowser, projectRoot } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
 const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
-const STAGES = ['01-raycast', '02-shading', '03-shadows'];
+const SHADER = /\.(glsl|vert|frag|geom)$/;
+const ALL_STAGES = readdirSync(join(projectRoot, 'solution')).filter((id) => existsSync(join(projectRoot, 'solution', id, 'stage.json'))).sort();
 
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
@@ -30,20 +35,20 @@ function filesUnder(dir) {
   return readdirSync(dir).flatMap((n) => (statSync(join(dir, n)).isDirectory() ? filesUnder(join(dir, n)) : [join(dir, n)]));
 }
 
-// The code of every //@solution region of STAGES' files (up to its //@stub),
-// whitespace squashed; at the open level also every run of code an open
-// region's guided part gives (the answer at that level), but for runs of
+// The code of every //@solution region of every stage's files (up to its
+// //@stub), whitespace squashed; at the open level also every run of code an
+// open region's guided part gives (the answer at that level), but for runs of
 // under 40 characters and those the open stub holds too (a signature).
 function solutionRegions(level = 'guided') {
   const regions = [];
-  for (const stage of STAGES) {
-    for (const file of filesUnder(join(projectRoot, 'solution', stage)).filter((f) => /\.(glsl|vert|frag|geom)$/.test(f))) {
+  for (const stage of ALL_STAGES) {
+    for (const file of filesUnder(join(projectRoot, 'solution', stage)).filter((f) => SHADER.test(f))) {
       const lines = readFileSync(file, 'utf8').split('\n');
       const where = (i) => `${relative(projectRoot, file)}:${i + 1}`;
       let stub = '', run = [], runStart = 0, inOpen = false, inStub = false, inSolution = false;
       const endRun = () => {
         const code = squash(run.join('\n'));
-        if (code.length >= 40 && !stub.includes(code)) regions.push({ where: where(runStart), code });
+        if (code.length >= 40 && !squash(stub).includes(code)) regions.push({ where: where(runStart), code });
         run = [];
       };
       for (let i = 0; i < lines.length; ++i) {
@@ -78,16 +83,51 @@ function solutionRegions(level = 'guided') {
   return regions;
 }
 
-// What in BUNDLE gives a solution away: one line per finding.
-function solutionsIn(bundle, regions) {
+// Every check's harness GLSL (stand-ins, helpers) from the project's tables,
+// by function: a bundle may hold those of its released stages' checks only.
+const projectTables = JSON.parse(readFileSync(join(projectRoot, 'web/function_tables.json'), 'utf8')).functions;
+function standIns(released) {
+  const allowed = new Set(released.flatMap((f) => [projectTables[f].prelude, projectTables[f].helpers]).map(squash));
+  return Object.entries(projectTables).filter(([name]) => !released.includes(name))
+    .flatMap(([name, t]) => [t.prelude, t.helpers].map((code) => ({ where: `${name}'s harness`, code: squash(code) })))
+    .filter((r) => r.code.length >= 40 && !allowed.has(r.code));
+}
+
+// The WebAssembly inside the core's script (a data URL) as text, for its strings.
+function wasmStrings(coreJs) {
+  const m = /data:application\/octet-stream;base64,([A-Za-z0-9+/=]+)/.exec(readFileSync(coreJs, 'utf8'));
+  if (!m) throw new Error(`${coreJs}: no WebAssembly inside`);
+  return Buffer.from(m[1], 'base64').toString('latin1').replace(/[^\x20-\x7e\n]+/g, '\n');
+}
+
+// What in BUNDLE gives away an answer or holds a stage it does not release: one line per finding.
+// CARRY: solved, where the earlier stages the bundle does not release come
+// solved (their answers are the course's to give).
+function leaksIn(bundle, released, level, carry = 'own') {
   const found = [];
+  const stagesHeld = new Set(released);
+  for (const id of released)  // and those they build on
+    for (let at = JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8')).builds_on; at;
+      at = JSON.parse(readFileSync(join(projectRoot, 'solution', at, 'stage.json'), 'utf8')).builds_on) stagesHeld.add(at);
+  const carried = carry === 'solved' ? [...stagesHeld].filter((id) => !released.includes(id)) : [];
+  const functions = released.flatMap((id) => JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8')).function_checks ?? []);
+  const searched = [...solutionRegions(level).filter((r) => !carried.some((id) => r.where.startsWith(`solution/${id}/`))),
+    ...standIns([...new Set(functions)])];
   for (const file of filesUnder(bundle)) {
     const rel = relative(bundle, file);
+    const parts = rel.split('/');
     if (rel.startsWith('solution/') && !rel.endsWith('/stage.json')) found.push(`${rel}: a file of solution/`);
+    if (parts[0] === 'solution' && !stagesHeld.has(parts[1])) found.push(`${rel}: a later stage's stage.json`);
+    if (parts[0] === 'labs' && parts.length > 2 && !stagesHeld.has(parts[1])) found.push(`${rel}: a lab of a stage not handed out`);
+    if (rel.startsWith('tests/reference/') && !released.includes(parts[2])) found.push(`${rel}: a reference of a stage not released`);
+    if (rel.startsWith('framework/shaders/variants/') && !stagesHeld.has(parts[4])) found.push(`${rel}: a variant of a stage not released`);
+    if (/test_api/.test(rel)) found.push(`${rel}: the page's test API`);
     if (!/\.(glsl|vert|frag|geom|json|md|html|js|mjs|css|txt)$/.test(file)) continue;
-    const text = squash(readFileSync(file, 'utf8'));
-    for (const r of regions) if (r.code && text.includes(r.code)) found.push(`${rel}: holds the solution region of ${r.where}`);
+    const text = squash(rel.endsWith('raylab_core.js') ? `${readFileSync(file, 'utf8')}\n${wasmStrings(file)}` : readFileSync(file, 'utf8'));
+    for (const r of searched) if (r.code && text.includes(r.code)) found.push(`${rel}: holds ${r.where.endsWith('harness') ? 'the stand-ins of ' : 'the solution region of '}${r.where}`);
   }
+  const tables = Object.keys(JSON.parse(readFileSync(join(bundle, 'web/function_tables.json'), 'utf8')).functions);
+  for (const f of tables) if (!functions.includes(f)) found.push(`web/function_tables.json: the table of ${f}, a check of a stage not released`);
   return found;
 }
 
@@ -107,48 +147,126 @@ function serveStatically(dir) {
 }
 
 const work = mkdtempSync(join(tmpdir(), 'raylab-bundle-'));
-const bundle = join(work, 'bundle');
-let server, browser;
-try {
-  const made = execFileSync(raylab, ['web-bundle', '--stages', '01-03', '--out', bundle], { encoding: 'utf8' });
-  check(/wrote .* \(01-raycast, 02-shading, 03-shadows\)/.test(made), `raylab web-bundle: ${made.trim().split('\n').pop()}`);
-  const regions = solutionRegions();
-  check(regions.length >= 5, `${regions.length} solution regions of stages 01-03 to look for`);
-  const found = solutionsIn(bundle, regions);
-  check(found.length === 0, `the bundle holds no solution${found.length ? `: ${found.slice(0, 5).join('; ')}` : ''}`);
-  // The scan catches a planted one.
-  const planted = join(work, 'planted');
-  execFileSync('cp', ['-r', bundle, planted]);
-  copyFileSync(join(projectRoot, 'solution/02-shading/blinn_phong.glsl'), join(planted, 'labs/02-shading/notes.glsl'));
-  const caught = solutionsIn(planted, regions);
-  check(caught.some((f) => f.startsWith('labs/02-shading/notes.glsl')), `a planted solution file is found: ${caught[0] ?? 'not found'}`);
+const bundleOf = (name, ...opts) => {
+  const out = join(work, name);
+  const made = execFileSync(raylab, ['web-bundle', ...opts, '--out', out], { encoding: 'utf8' });
+  return { out, made };
+};
 
-  // The open level (--level open): no solution region, and none of the code
-  // the guided level gives and the open level takes away.
-  const openBundle = join(work, 'open');
-  execFileSync(raylab, ['web-bundle', '--stages', '01-03', '--level', 'open', '--out', openBundle], { encoding: 'utf8' });
-  const openRegions = solutionRegions('open');
-  check(openRegions.length > regions.length, `${openRegions.length - regions.length} runs of code the open level takes away, to look for`);
-  const openFound = solutionsIn(openBundle, openRegions);
+// The page of a bundle as a student opens it; its console errors and failed requests collected.
+// The folder input stands in for the folder picker (as in Firefox and Safari).
+async function openBundle(browser, url) {
+  const page = await browser.newPage();
+  const problems = collectProblems(page);
+  await page.evaluateOnNewDocument(() => { delete window.showDirectoryPicker; });
+  await page.goto(`${url}/web/`, { waitUntil: 'load' });
+  await page.waitForFunction(() => document.getElementById('stage').options.length > 0, { timeout: 60_000 });
+  return { page, problems };
+}
+
+const settled = (page) => page.waitForFunction(() => !document.getElementById('view').classList.contains('building') &&
+  !/^building /.test(document.getElementById('messages').textContent), { timeout: 300_000 });
+
+// Presses Check and waits for the report (or its one-line error).
+// (The panel is emptied first, so that an earlier report is not taken for this one.)
+async function pressCheck(page) {
+  await settled(page);
+  await page.$eval('#messages', (m) => { m.textContent = ''; });
+  await page.click('#check');
+  await page.waitForFunction(() => /\d+ passed, \d+ failed|^raylab check: /m.test(document.getElementById('messages').textContent), { timeout: 300_000 });
+  return page.$eval('#messages', (m) => m.textContent);
+}
+
+const choose = (page, id, value) => page.evaluate((i, v) => {
+  const sel = document.getElementById(i);
+  sel.value = v;
+  sel.dispatchEvent(new Event('change'));
+}, id, value);
+
+// FILE solved, as stage ID reads it: its own, or that of the stage it builds on that has it.
+function solvedFile(id, file) {
+  for (let at = id; at; at = JSON.parse(readFileSync(join(projectRoot, 'solution', at, 'stage.json'), 'utf8')).builds_on)
+    if (existsSync(join(projectRoot, 'solution', at, file))) return join(projectRoot, 'solution', at, file);
+  throw new Error(`no solution of ${file} for ${id}`);
+}
+
+// A student's labs/ folder with STAGE and the folders of the bundle's labs/
+// beside it solved: each shader file the bundle hands out, from solution/.
+function solvedFolder(bundle, name) {
+  const root = join(work, `${name}-solved`, 'labs');
+  for (const id of readdirSync(join(bundle, 'labs')).filter((n) => statSync(join(bundle, 'labs', n)).isDirectory())) {
+    mkdirSync(join(root, id), { recursive: true });
+    for (const f of readdirSync(join(bundle, 'labs', id)).filter((n) => SHADER.test(n)))
+      copyFileSync(solvedFile(id, f), join(root, id, f));
+  }
+  return root;
+}
+
+let browser;
+const servers = [];
+try {
+  // 1. What a bundle holds.
+  const guided = bundleOf('guided', '--stages', '01-03');
+  check(/wrote .* \(01-raycast, 02-shading, 03-shadows\)/.test(guided.made), `raylab web-bundle: ${guided.made.trim().split('\n').pop()}`);
+  const released = ['01-raycast', '02-shading', '03-shadows'];
+  check(solutionRegions().length >= 30, `${solutionRegions().length} solution regions of all ${ALL_STAGES.length} stages to look for`);
+  const found = leaksIn(guided.out, released, 'guided');
+  check(found.length === 0, `the 01-03 bundle holds nothing of 04-08 and f1-f4 and no answer${found.length ? `: ${found.slice(0, 6).join('; ')}` : ''}`);
+  // The scan catches a planted solution, a planted stand-in and a later stage's table.
+  const planted = join(work, 'planted');
+  execFileSync('cp', ['-r', guided.out, planted]);
+  copyFileSync(join(projectRoot, 'solution/02-shading/blinn_phong.glsl'), join(planted, 'labs/02-shading/notes.glsl'));
+  writeFileSync(join(planted, 'web/dist/notes.txt'), projectTables.lightVisibleFast.prelude);
+  const tables = JSON.parse(readFileSync(join(planted, 'web/function_tables.json'), 'utf8'));
+  tables.functions.trace = projectTables.trace;
+  writeFileSync(join(planted, 'web/function_tables.json'), JSON.stringify(tables));
+  const caught = leaksIn(planted, released, 'guided');
+  for (const what of ['labs/02-shading/notes.glsl: holds the solution region', "web/dist/notes.txt: holds the stand-ins of lightVisibleFast's", 'web/function_tables.json: the table of trace'])
+    check(caught.some((f) => f.startsWith(what)), `planted, found: ${caught.find((f) => f.startsWith(what)) ?? `not found (${what})`}`);
+  // The open level: none of the code the guided level gives and the open level takes away.
+  const open = bundleOf('open', '--stages', '01-03', '--level', 'open');
+  const openFound = leaksIn(open.out, released, 'open');
   check(openFound.length === 0, `the open bundle holds no answer of its level${openFound.length ? `: ${openFound.slice(0, 5).join('; ')}` : ''}`);
-  const guidedHasThem = solutionsIn(bundle, openRegions).length;
+  const guidedHasThem = leaksIn(guided.out, released, 'open').length;
   check(guidedHasThem > 0, `the guided bundle does hold the open level's answers (${guidedHasThem}): the scan sees them`);
 
-  server = await serveStatically(bundle);
+  // 2. Bundles of single stages and ranges, both tracks, levels and carries:
+  // each opens with its stages only and checks the lab as handed out and a solved one.
+  const sets = [
+    { name: '04-open-solved', opts: ['--stages', '04', '--level', 'open', '--carry', 'solved'], stages: ['04-recursion'] },
+    { name: '03-04-own', opts: ['--stages', '03-04'], stages: ['03-shadows', '04-recursion'] },
+    { name: '02-own', opts: ['--stages', '02', '--level', 'open'], stages: ['02-shading'] },
+    { name: 'f3-solved', opts: ['--stages', 'f3', '--carry', 'solved'], stages: ['f3-fins'] },
+    { name: 'f1-f2-open', opts: ['--stages', 'f1-f2', '--level', 'open'], stages: ['f1-mesh', 'f2-shells'] },
+  ];
   browser = await launchBrowser();
-  const { page, problems } = await openPage(browser, `${server.url}/web/`);
-  const catalog = await page.evaluate(() => window.raylab.catalog);
-  check(JSON.stringify(catalog.stages.map((s) => s.info.id)) === JSON.stringify(STAGES) && catalog.solutions === false,
-    `the page offers ${catalog.stages.map((s) => s.info.id).join(', ')}, solutions ${catalog.solutions}`);
-  for (const stage of STAGES) {
-    const r = await page.evaluate((s) => window.raylab.check({ stage: s, source: 'lab' }), stage);
-    check(r.ok && new RegExp(`^raylab check: stage ${stage}, lab labs/ against the reference pictures`, 'm').test(r.report) && r.failed > 0,
-      `Check on ${stage} as handed out: ${r.ok ? r.report.trim().split('\n').pop() : r.error}`);
+  for (const set of sets) {
+    const b = bundleOf(set.name, ...set.opts);
+    const level = set.opts.includes('open') ? 'open' : 'guided';
+    const leaks = leaksIn(b.out, set.stages, level, set.opts.includes('solved') ? 'solved' : 'own');
+    check(leaks.length === 0, `${set.name}: holds its stages only, no answer${leaks.length ? `: ${leaks.slice(0, 4).join('; ')}` : ''}`);
+    const server = await serveStatically(b.out);
+    servers.push(server);
+    const { page, problems } = await openBundle(browser, server.url);
+    const offered = await page.$$eval('#stage option', (os) => os.map((o) => o.value));
+    check(JSON.stringify(offered) === JSON.stringify(set.stages), `${set.name}: the page offers ${offered.join(', ')}`);
+    const stage = set.stages[set.stages.length - 1];
+    await choose(page, 'stage', stage);
+    await choose(page, 'source', 'lab');
+    const handedOut = await pressCheck(page);
+    check(new RegExp(`^raylab check: stage ${stage}, lab labs/ against the reference pictures`, 'm').test(handedOut) && /\d+ passed, [1-9]\d* failed/.test(handedOut),
+      `${set.name}: Check on ${stage} as handed out: ${handedOut.match(/\d+ passed, \d+ failed/)?.[0] ?? handedOut.split('\n')[0]}`);
+    const [chooser] = await Promise.all([page.waitForFileChooser(), choose(page, 'source', 'disk')]);
+    await chooser.accept([solvedFolder(b.out, set.name)]);
+    await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 300_000 });
+    const solved = await pressCheck(page);
+    check(/ 0 failed/.test(solved), `${set.name}: Check on ${stage} solved: ${solved.match(/\d+ passed, \d+ failed/)?.[0] ?? solved.split('\n').slice(0, 3).join(' / ')}`);
+    check(problems.length === 0, `${set.name}: no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
+    await page.close();
   }
-  check(problems.length === 0, `no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
 } finally {
   await browser?.close();
-  server?.stop();
+  for (const s of servers) s.stop();
   rmSync(work, { recursive: true, force: true });
 }
 if (failures.length) {

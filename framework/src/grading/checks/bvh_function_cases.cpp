@@ -186,23 +186,25 @@ std::string hitText(const dvec4& v) {
 FunctionSpec walkBvhSpec() {
     FunctionSpec s;
     s.name = "walkBvh";
-    s.prelude = kPrelude + worldsGlsl() +
-                "#include \"intersect_sphere.glsl\"\n"
-                "// Stand-ins for find_closest.glsl's keepNearer and the meshes (none here).\n"
-                "void keepNearer(inout Hit hit, float t, int kind, int index)\n"
-                "{\n"
-                "    if (t != NO_HIT && t < hit.t) hit = Hit(t, objectId(kind, index));\n"
-                "}\n"
-                "float intersectMeshTriangle(Ray ray, int triangle) { return NO_HIT; }\n";
+    s.prelude = RAYLAB_HARNESS_GLSL(
+        kPrelude + worldsGlsl() +
+        "#include \"intersect_sphere.glsl\"\n"
+        "// Stand-ins for find_closest.glsl's keepNearer and the meshes (none here).\n"
+        "void keepNearer(inout Hit hit, float t, int kind, int index)\n"
+        "{\n"
+        "    if (t != NO_HIT && t < hit.t) hit = Hit(t, objectId(kind, index));\n"
+        "}\n"
+        "float intersectMeshTriangle(Ray ray, int triangle) { return NO_HIT; }\n");
     s.includes = {"test_spheres.glsl"};
     s.defines = {"RAYLAB_BVH"};
-    s.helpers = "vec4 checkWalkBvh(vec4 a0, vec4 a1, vec4 a2)\n"
-                "{\n"
-                "    loadWorld(int(a0.w));\n"
-                "    Hit hit = Hit(a2.x > 0.0 ? a2.x : T_FAR, -1);\n"
-                "    walkBvh(Ray(a0.xyz, a1.xyz), hit, a1.w > 0.5);\n"
-                "    return vec4(hit.id >= 0 ? 1.0 : 0.0, hit.t, float(hit.id), 1.0);\n"
-                "}\n";
+    s.helpers =
+        RAYLAB_HARNESS_GLSL("vec4 checkWalkBvh(vec4 a0, vec4 a1, vec4 a2)\n"
+                            "{\n"
+                            "    loadWorld(int(a0.w));\n"
+                            "    Hit hit = Hit(a2.x > 0.0 ? a2.x : T_FAR, -1);\n"
+                            "    walkBvh(Ray(a0.xyz, a1.xyz), hit, a1.w > 0.5);\n"
+                            "    return vec4(hit.id >= 0 ? 1.0 : 0.0, hit.t, float(hit.id), 1.0);\n"
+                            "}\n");
     s.call = "checkWalkBvh(a0, a1, a2)";
     const dvec3 o(0.0);
     s.cases = {

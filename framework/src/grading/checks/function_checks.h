@@ -77,10 +77,18 @@ struct FunctionSpec {
 // reaches students in raylab_core.js); it scores against the expected values
 // shipped as data (web/function_tables.json, function_tables.h).
 // RAYLAB_REFERENCE_FUNCTION(f): a reference passed as an argument.
+// A spec's harness GLSL (prelude, helpers): `s.prelude =
+// RAYLAB_HARNESS_GLSL("...")`. The stand-ins in it can come close to a
+// stage's answer (a loop over the spheres that keeps the nearest hit is
+// stand-in for find_closest.glsl in a later stage's check), so the page's
+// core leaves them out too and reads them from the tables, which a bundle
+// holds for its released stages only (function_tables.h).
 #ifdef RAYLAB_REFERENCES_AS_DATA
+#define RAYLAB_HARNESS_GLSL(...) std::string()
 #define RAYLAB_REFERENCE(spec, ...) ((void)(spec))
 #define RAYLAB_REFERENCE_FUNCTION(...) nullptr
 #else
+#define RAYLAB_HARNESS_GLSL(...) std::string(__VA_ARGS__)
 #define RAYLAB_REFERENCE(spec, ...) ((spec).reference = __VA_ARGS__)
 #define RAYLAB_REFERENCE_FUNCTION(...) __VA_ARGS__
 #endif

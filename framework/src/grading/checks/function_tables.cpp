@@ -30,32 +30,39 @@ double numberFrom(const json& v, const std::string& where) {
 
 }  // namespace
 
-std::string functionTablesJson() {
+std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs) {
+    std::vector<const FunctionSpec*> chosen = specs;
+    if (chosen.empty())
+        for (const FunctionSpec& spec : functionSpecs()) chosen.push_back(&spec);
     // One line per case (compact, yet a changed case shows as one line in a diff).
-    std::string text = "{\"about\": \"the function checks' inputs and expected values (raylab "
-                       "function-tables)\",\n \"functions\": {\n";
+    std::string text = "{\"about\": \"the function checks' inputs and expected values, and "
+                       "their harness GLSL (raylab function-tables)\",\n \"functions\": {\n";
     bool firstSpec = true;
-    for (const FunctionSpec& spec : functionSpecs()) {
-        const std::vector<glm::dvec4> wants = referenceWants(spec);
-        text += std::string(firstSpec ? "" : ",\n") + "  " + json(spec.name).dump() + ": [\n";
+    for (const FunctionSpec* spec : chosen) {
+        const std::vector<glm::dvec4> wants = referenceWants(*spec);
+        text += std::string(firstSpec ? "" : ",\n") + "  " + json(spec->name).dump() + ": {\n";
         firstSpec = false;
-        for (std::size_t i = 0; i < spec.cases.size(); ++i) {
+        text += "   \"prelude\": " + json(spec->prelude).dump() + ",\n";
+        text += "   \"helpers\": " + json(spec->helpers).dump() + ",\n";
+        text += "   \"cases\": [\n";
+        for (std::size_t i = 0; i < spec->cases.size(); ++i) {
             json in = json::array();
-            for (const glm::dvec4& a : spec.cases[i].in)
+            for (const glm::dvec4& a : spec->cases[i].in)
                 in.push_back({number(a.x), number(a.y), number(a.z), number(a.w)});
             const json c = {
-                {"case", spec.cases[i].label},
+                {"case", spec->cases[i].label},
                 {"in", in},
                 {"want",
                  {number(wants[i].x), number(wants[i].y), number(wants[i].z), number(wants[i].w)}}};
-            text += "   " + c.dump() + (i + 1 < spec.cases.size() ? ",\n" : "\n");
+            text += "    " + c.dump() + (i + 1 < spec->cases.size() ? ",\n" : "\n");
         }
-        text += "  ]";
+        text += "   ]\n  }";
     }
     return text + "\n }\n}\n";
 }
 
-FunctionTables parseFunctionTables(const std::string& text, const std::string& file) {
+FunctionTables parseFunctionTables(const std::string& text, const std::string& file,
+                                   TableCoverage coverage) {
     json doc;
     try {
         doc = json::parse(text);
@@ -65,14 +72,24 @@ FunctionTables parseFunctionTables(const std::string& text, const std::string& f
     FunctionTables tables;
     for (const FunctionSpec& spec : functionSpecs()) {
         const std::string where = file + ": " + spec.name;
-        if (!doc["functions"].contains(spec.name))
+        if (!doc["functions"].contains(spec.name)) {
+            if (coverage == TableCoverage::Some) continue;
             throw Error(where + ": missing (write the file again: raylab function-tables)");
-        const json& cases = doc["functions"][spec.name];
+        }
+        const json& entry = doc["functions"][spec.name];
+        if (!entry.is_object() || !entry.contains("cases") || !entry.contains("prelude") ||
+            !entry.contains("helpers") || !entry["prelude"].is_string() ||
+            !entry["helpers"].is_string())
+            throw Error(where + ": expected {\"prelude\", \"helpers\", \"cases\"} (write the file "
+                                "again: raylab function-tables)");
+        const json& cases = entry["cases"];
         if (!cases.is_array() || cases.size() != spec.cases.size())
             throw Error(where + ": " + std::to_string(cases.is_array() ? cases.size() : 0) +
                         " cases, the check has " + std::to_string(spec.cases.size()) +
                         " (write the file again: raylab function-tables)");
         FunctionTable& t = tables[spec.name];
+        t.prelude = entry["prelude"].get<std::string>();
+        t.helpers = entry["helpers"].get<std::string>();
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const json& c = cases[i];
             const std::string at = where + "[" + std::to_string(i) + "]";
@@ -104,7 +121,26 @@ FunctionTables parseFunctionTables(const std::string& text, const std::string& f
                                  numberFrom(c["want"][2], at), numberFrom(c["want"][3], at));
         }
     }
+    for (const auto& [name, entry] : doc["functions"].items()) {
+        (void)entry;
+        if (!tables.count(name))
+            throw Error(file + ": " + name +
+                        ": no such function check (write the file again: raylab "
+                        "function-tables)");
+    }
     return tables;
+}
+
+FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
+                             const std::string& file) {
+    const auto it = tables.find(spec.name);
+    if (it == tables.end())
+        throw Error(file + " has no table for " + spec.name +
+                    " (a bundle holds its released stages' checks only)");
+    FunctionSpec out = spec;
+    out.prelude = it->second.prelude;
+    out.helpers = it->second.helpers;
+    return out;
 }
 
 }  // namespace raylab

@@ -1,9 +1,11 @@
 #pragma once
 // The function checks' expected values as data: every case of every check
-// with the reference's value for it. The page's WebAssembly core scores
-// against these (web/function_tables.json, written by `raylab
-// function-tables`), so it carries no reference code; natively the
-// references themselves run.
+// with the reference's value for it, and the check's harness GLSL (its
+// stand-ins and helpers). The page's WebAssembly core scores against these
+// (web/function_tables.json, written by `raylab function-tables`), so it
+// carries no reference code and no stand-in; natively the references
+// themselves run. A students' bundle (`raylab web-bundle`) holds the tables
+// of its released stages' checks only.
 #include "function_checks.h"
 
 #include <map>
@@ -15,15 +17,29 @@ namespace raylab {
 struct FunctionTable {
     std::vector<std::string> labels;  // the cases', to notice a table that drifted
     std::vector<glm::dvec4> wants;
+    std::string prelude, helpers;  // the spec's harness GLSL (RAYLAB_HARNESS_GLSL)
 };
 using FunctionTables = std::map<std::string, FunctionTable>;
 
-// Every function check's table as JSON (needs the references: native only).
-std::string functionTablesJson();
+// The tables of SPECS as JSON (needs the references and the harness GLSL:
+// native only); every function check's when SPECS is empty.
+std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs = {});
+
+// Whether a file must hold every function check's table (the project's
+// web/function_tables.json) or holds some (a bundle's: its stages' checks).
+enum class TableCoverage { Every, Some };
 
 // TEXT (from FILE, for messages) as tables. Throws Error naming FILE and
 // the function when a table does not match today's cases (a function or
-// case added, removed or renamed: write the file again).
-FunctionTables parseFunctionTables(const std::string& text, const std::string& file);
+// case added, removed or renamed: write the file again), or, with
+// TableCoverage::Every, when a check has no table.
+FunctionTables parseFunctionTables(const std::string& text, const std::string& file,
+                                   TableCoverage coverage = TableCoverage::Every);
+
+// SPEC with its harness GLSL from TABLES (the page's core, where the spec
+// was built without it). Throws Error naming FILE when TABLES has no table
+// for SPEC (a bundle without the stage that checks it).
+FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
+                             const std::string& file);
 
 }  // namespace raylab

@@ -73,14 +73,14 @@ FunctionSpec normalMatrixSpec() {
 FunctionSpec surfaceLightSpec() {
     FunctionSpec s;
     s.name = "surfaceLight";
-    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
+    s.prelude = RAYLAB_HARNESS_GLSL("#define RAYLAB_FUNCTION_CHECK\n");
     s.includes = {"surface_light.glsl"};
-    s.helpers = "vec4 checkSurfaceLight(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    uLightColor = a3.xyz;\n"
-                "    uAmbient = vec3(a3.w);\n"
-                "    return vec4(surfaceLight(a0.xyz, a1.xyz, a2.xyz), 1.0);\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL("vec4 checkSurfaceLight(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                                    "{\n"
+                                    "    uLightColor = a3.xyz;\n"
+                                    "    uAmbient = vec3(a3.w);\n"
+                                    "    return vec4(surfaceLight(a0.xyz, a1.xyz, a2.xyz), 1.0);\n"
+                                    "}\n");
     s.call = "checkSurfaceLight(a0, a1, a2, a3)";
     const dvec3 albedo(0.8, 0.5, 0.3), up(0, 1, 0), white(1.0);
     const struct {
@@ -203,16 +203,16 @@ std::vector<FunctionCase> transformCases() {
 FunctionSpec transformSpec(const char* name, const std::string& expression, double tolerance) {
     FunctionSpec s;
     s.name = name;
-    s.prelude = "#define RAYLAB_FUNCTION_CHECK\n";
+    s.prelude = RAYLAB_HARNESS_GLSL("#define RAYLAB_FUNCTION_CHECK\n");
     s.includes = {"fur_uniforms.glsl", "transform.glsl"};
-    s.helpers = std::string(kTransformHelpers) +
-                "vec4 checkTransform(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    setTransforms(a1, a2, a3);\n"
-                "    return " +
-                expression +
-                ";\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL(std::string(kTransformHelpers) +
+                                    "vec4 checkTransform(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                                    "{\n"
+                                    "    setTransforms(a1, a2, a3);\n"
+                                    "    return " +
+                                    expression +
+                                    ";\n"
+                                    "}\n");
     s.call = "checkTransform(a0, a1, a2, a3)";
     s.cases = transformCases();
     s.compare = [tolerance](const FunctionCase& c, const dvec4& got, const dvec4& want) {

@@ -151,9 +151,9 @@ std::string hitText(const dvec4& v) {
 FunctionSpec findClosestEveryKindSpec() {
     FunctionSpec s;
     s.name = "findClosestEveryKind";
-    s.prelude = kPrelude;
+    s.prelude = RAYLAB_HARNESS_GLSL(kPrelude);
     s.includes = {"find_closest.glsl"};
-    s.helpers = kHelpers;
+    s.helpers = RAYLAB_HARNESS_GLSL(kHelpers);
     s.call = "checkFindClosest(a0, a1, a2, a3)";
     const double miss = -1.0;  // NO_HIT
     s.cases = {

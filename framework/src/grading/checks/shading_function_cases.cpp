@@ -68,28 +68,29 @@ FunctionCase blinnCase(std::string label, dvec3 normal, dvec3 toEye, double shin
 FunctionSpec blinnPhongSpec() {
     FunctionSpec s;
     s.name = "blinnPhong";
-    s.prelude = kLightsPrelude;
+    s.prelude = RAYLAB_HARNESS_GLSL(kLightsPrelude);
     s.includes = {"ray.glsl", "scene_materials.glsl", "blinn_phong.glsl"};
-    s.helpers = "vec4 checkBlinnPhong(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    uLightCount = a3.w > 0.0 ? 2 : 1;\n"
-                "    uLightPositions[0] = a2.xyz;\n"
-                "    uLightColors[0] = vec3(1.0, 0.8, 0.6);\n"
-                "    uLightPositions[1] = a3.xyz;\n"
-                "    uLightColors[1] = vec3(0.3, 0.5, 0.9);\n"
-                "    Material m;\n"
-                "    m.ambient = vec3(0.1, 0.05, 0.02);\n"
-                "    m.diffuse = vec3(0.5, 0.6, 0.7);\n"
-                "    m.specular = vec3(0.9, 0.8, 0.7);\n"
-                "    m.shininess = a0.w;\n"
-                "    m.type = 0;\n"
-                "    m.ior = 1.0;\n"
-                "    m.n = vec3(0.0);\n"
-                "    m.k = vec3(0.0);\n"
-                "    m.texture = -1;\n"
-                "    m.normalMap = -1;\n"
-                "    return vec4(blinnPhong(vec3(0.0), a0.xyz, a1.xyz, m), 1.0);\n"
-                "}\n";
+    s.helpers =
+        RAYLAB_HARNESS_GLSL("vec4 checkBlinnPhong(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+                            "{\n"
+                            "    uLightCount = a3.w > 0.0 ? 2 : 1;\n"
+                            "    uLightPositions[0] = a2.xyz;\n"
+                            "    uLightColors[0] = vec3(1.0, 0.8, 0.6);\n"
+                            "    uLightPositions[1] = a3.xyz;\n"
+                            "    uLightColors[1] = vec3(0.3, 0.5, 0.9);\n"
+                            "    Material m;\n"
+                            "    m.ambient = vec3(0.1, 0.05, 0.02);\n"
+                            "    m.diffuse = vec3(0.5, 0.6, 0.7);\n"
+                            "    m.specular = vec3(0.9, 0.8, 0.7);\n"
+                            "    m.shininess = a0.w;\n"
+                            "    m.type = 0;\n"
+                            "    m.ior = 1.0;\n"
+                            "    m.n = vec3(0.0);\n"
+                            "    m.k = vec3(0.0);\n"
+                            "    m.texture = -1;\n"
+                            "    m.normalMap = -1;\n"
+                            "    return vec4(blinnPhong(vec3(0.0), a0.xyz, a1.xyz, m), 1.0);\n"
+                            "}\n");
     s.call = "checkBlinnPhong(a0, a1, a2, a3)";
     const dvec3 up(0, 1, 0);
     s.cases = {
@@ -133,26 +134,27 @@ FunctionSpec blinnPhongSpec() {
 FunctionSpec applyNormalMapSpec() {
     FunctionSpec s;
     s.name = "applyNormalMap";
-    s.prelude = "// A stand-in for the scene's textures: every lookup returns the case's texel.\n"
-                "vec3 gCheckTexel;\n"
-                "vec4 textureLayer(int layer, vec2 uv)\n"
-                "{\n"
-                "    return vec4(gCheckTexel, 1.0);\n"
-                "}\n";
+    s.prelude = RAYLAB_HARNESS_GLSL(
+        "// A stand-in for the scene's textures: every lookup returns the case's texel.\n"
+        "vec3 gCheckTexel;\n"
+        "vec4 textureLayer(int layer, vec2 uv)\n"
+        "{\n"
+        "    return vec4(gCheckTexel, 1.0);\n"
+        "}\n");
     s.includes = {"ray.glsl", "scene_materials.glsl", "surface.glsl", "normal_map.glsl"};
-    s.helpers = "vec4 checkApplyNormalMap(vec4 a0, vec4 a1, vec4 a2)\n"
-                "{\n"
-                "    gCheckTexel = a2.xyz;\n"
-                "    Surface s;\n"
-                "    s.point = vec3(0.0);\n"
-                "    s.normal = a0.xyz;\n"
-                "    s.tangent = a1.xyz;\n"
-                "    s.uv = vec2(0.25, 0.75);\n"
-                "    s.material.texture = -1;\n"
-                "    s.material.normalMap = 0;\n"
-                "    applyNormalMap(s);\n"
-                "    return vec4(s.normal, 1.0);\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL("vec4 checkApplyNormalMap(vec4 a0, vec4 a1, vec4 a2)\n"
+                                    "{\n"
+                                    "    gCheckTexel = a2.xyz;\n"
+                                    "    Surface s;\n"
+                                    "    s.point = vec3(0.0);\n"
+                                    "    s.normal = a0.xyz;\n"
+                                    "    s.tangent = a1.xyz;\n"
+                                    "    s.uv = vec2(0.25, 0.75);\n"
+                                    "    s.material.texture = -1;\n"
+                                    "    s.material.normalMap = 0;\n"
+                                    "    applyNormalMap(s);\n"
+                                    "    return vec4(s.normal, 1.0);\n"
+                                    "}\n");
     s.call = "checkApplyNormalMap(a0, a1, a2)";
     struct Row {
         const char* label;
@@ -239,20 +241,21 @@ FunctionCase closestCase(std::string label, dvec3 origin, dvec3 dir, int count, 
 FunctionSpec findClosestSpec() {
     FunctionSpec s;
     s.name = "findClosest";
-    s.prelude = "// Stand-ins for the scene's spheres, set by the case.\n"
-                "int uSphereCount;\n"
-                "vec4 uSpheres[MAX_SPHERES];\n";
+    s.prelude = RAYLAB_HARNESS_GLSL("// Stand-ins for the scene's spheres, set by the case.\n"
+                                    "int uSphereCount;\n"
+                                    "vec4 uSpheres[MAX_SPHERES];\n");
     s.includes = {"ray.glsl", "intersect_sphere.glsl", "find_closest.glsl"};
-    s.helpers = "vec4 checkFindClosest(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
-                "{\n"
-                "    uSphereCount = int(a0.w);\n"
-                "    uSpheres[0] = a2;\n"
-                "    uSpheres[1] = a3;\n"
-                "    uSpheres[uSphereCount] = vec4(a0.xyz + 0.5 * a1.xyz, 0.2);  // not counted\n"
-                "    Hit hit;\n"
-                "    bool found = findClosest(Ray(a0.xyz, a1.xyz), hit);\n"
-                "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL(
+        "vec4 checkFindClosest(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
+        "{\n"
+        "    uSphereCount = int(a0.w);\n"
+        "    uSpheres[0] = a2;\n"
+        "    uSpheres[1] = a3;\n"
+        "    uSpheres[uSphereCount] = vec4(a0.xyz + 0.5 * a1.xyz, 0.2);  // not counted\n"
+        "    Hit hit;\n"
+        "    bool found = findClosest(Ray(a0.xyz, a1.xyz), hit);\n"
+        "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"
+        "}\n");
     s.call = "checkFindClosest(a0, a1, a2, a3)";
     const dvec3 back(0, 0, -1);
     s.cases = {

@@ -30,19 +30,20 @@ dvec3 xyz(const dvec4& v) { return dvec3(v); }
 FunctionSpec skyColorSpec() {
     FunctionSpec s;
     s.name = "skyColor";
-    s.prelude = "// Stand-ins for the scene's sky, set by the case; the cube map is a function.\n"
-                "int uHasSky;\n"
-                "vec3 uBackground;\n"
-                "uniform samplerCube uSky;\n"
-                "vec4 checkSkyTexel(vec3 dir) { return vec4(0.5 + 0.5 * normalize(dir), 1.0); }\n"
-                "#define textureLod(sampler, dir, level) checkSkyTexel(dir)\n";
+    s.prelude = RAYLAB_HARNESS_GLSL(
+        "// Stand-ins for the scene's sky, set by the case; the cube map is a function.\n"
+        "int uHasSky;\n"
+        "vec3 uBackground;\n"
+        "uniform samplerCube uSky;\n"
+        "vec4 checkSkyTexel(vec3 dir) { return vec4(0.5 + 0.5 * normalize(dir), 1.0); }\n"
+        "#define textureLod(sampler, dir, level) checkSkyTexel(dir)\n");
     s.includes = {"sky.glsl"};
-    s.helpers = "vec4 checkSkyColor(vec4 a0, vec4 a1, vec4 a2)\n"
-                "{\n"
-                "    uHasSky = int(a1.x);\n"
-                "    uBackground = a2.xyz;\n"
-                "    return vec4(skyColor(a0.xyz), 1.0);\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL("vec4 checkSkyColor(vec4 a0, vec4 a1, vec4 a2)\n"
+                                    "{\n"
+                                    "    uHasSky = int(a1.x);\n"
+                                    "    uBackground = a2.xyz;\n"
+                                    "    return vec4(skyColor(a0.xyz), 1.0);\n"
+                                    "}\n");
     s.call = "checkSkyColor(a0, a1, a2)";
     const dvec3 background(0.55, 0.7, 0.9);
     const struct {
@@ -82,22 +83,23 @@ FunctionSpec skyColorSpec() {
 FunctionSpec sunGlowSpec() {
     FunctionSpec s;
     s.name = "sunGlow";
-    s.prelude = "#include \"ray.glsl\"\n"
-                "#include \"scene_objects.glsl\"\n"
-                "// Stand-ins for the scene, set by the case: its spheres, the glow's\n"
-                "// settings, and the first thing on the ray.\n"
-                "vec4 uSpheres[MAX_SPHERES];\n"
-                "int uGlowSphere;\n"
-                "vec3 uGlowColor;\n"
-                "float uGlowSize;\n"
-                "Hit gFirstHit;\n"
-                "bool findClosest(Ray ray, out Hit hit)\n"
-                "{\n"
-                "    hit = gFirstHit;\n"
-                "    return hit.id >= 0;\n"
-                "}\n";
+    s.prelude =
+        RAYLAB_HARNESS_GLSL("#include \"ray.glsl\"\n"
+                            "#include \"scene_objects.glsl\"\n"
+                            "// Stand-ins for the scene, set by the case: its spheres, the glow's\n"
+                            "// settings, and the first thing on the ray.\n"
+                            "vec4 uSpheres[MAX_SPHERES];\n"
+                            "int uGlowSphere;\n"
+                            "vec3 uGlowColor;\n"
+                            "float uGlowSize;\n"
+                            "Hit gFirstHit;\n"
+                            "bool findClosest(Ray ray, out Hit hit)\n"
+                            "{\n"
+                            "    hit = gFirstHit;\n"
+                            "    return hit.id >= 0;\n"
+                            "}\n");
     s.includes = {"glow.glsl"};
-    s.helpers =
+    s.helpers = RAYLAB_HARNESS_GLSL(
         "vec4 checkSunGlow(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
         "{\n"
         "    for (int i = 0; i < MAX_SPHERES; ++i) uSpheres[i] = vec4(100.0, -80.0, 60.0, 0.5);\n"
@@ -108,7 +110,7 @@ FunctionSpec sunGlowSpec() {
         "    gFirstHit = Hit(T_FAR, -1);  // (no ?: on structures in WebGL)\n"
         "    if (a3.x >= 0.0) gFirstHit = Hit(a3.x, int(a3.y));\n"
         "    return vec4(sunGlow(Ray(a0.xyz, a1.xyz)), 1.0);\n"
-        "}\n";
+        "}\n");
     s.call = "checkSunGlow(a0, a1, a2, a3)";
     const dvec4 sun(0.0, 3.0, -10.0, 1.0);
     const double other = double(shader::kPlane * shader::kObjectKindStride);  // a plane's id

@@ -253,22 +253,23 @@ std::vector<FunctionDiagnosis> traceDiagnoses() {
 FunctionSpec traceSpec() {
     FunctionSpec s;
     s.name = "trace";
-    s.prelude = kPrelude;
+    s.prelude = RAYLAB_HARNESS_GLSL(kPrelude);
     s.includes = {"trace.glsl"};
-    s.helpers = "vec3 gOffset;\n"
-                "float gScale;\n"
-                "void addSphere(vec3 center, float radius, Material m)\n"
-                "{\n"
-                "    gSpheres[gSphereCount] = vec4(gOffset + gScale * center, gScale * radius);\n"
-                "    gMaterials[gSphereCount] = m;\n"
-                "    ++gSphereCount;\n"
-                "}\n" +
-                worldsGlsl() +
-                "vec4 checkTrace(vec4 a0, vec4 a1, vec4 a2)\n"
-                "{\n"
-                "    loadWorld(int(a0.w), a2.xyz, a2.w);\n"
-                "    return vec4(trace(Ray(a2.xyz + a2.w * a0.xyz, a1.xyz)), 1.0);\n"
-                "}\n";
+    s.helpers = RAYLAB_HARNESS_GLSL(
+        "vec3 gOffset;\n"
+        "float gScale;\n"
+        "void addSphere(vec3 center, float radius, Material m)\n"
+        "{\n"
+        "    gSpheres[gSphereCount] = vec4(gOffset + gScale * center, gScale * radius);\n"
+        "    gMaterials[gSphereCount] = m;\n"
+        "    ++gSphereCount;\n"
+        "}\n" +
+        worldsGlsl() +
+        "vec4 checkTrace(vec4 a0, vec4 a1, vec4 a2)\n"
+        "{\n"
+        "    loadWorld(int(a0.w), a2.xyz, a2.w);\n"
+        "    return vec4(trace(Ray(a2.xyz + a2.w * a0.xyz, a1.xyz)), 1.0);\n"
+        "}\n");
     s.call = "checkTrace(a0, a1, a2)";
     const dvec3 o(0.0);
     s.cases = {

@@ -187,13 +187,13 @@ std::vector<FunctionDiagnosis> shadowRayDiagnoses() {
 FunctionSpec lightVisibilitySpec() {
     FunctionSpec s;
     s.name = "lightVisible";
-    s.prelude = std::string(kLightsPrelude) +
-                "// Stand-ins for the scene's spheres, set by the case.\n"
-                "int uSphereCount;\n"
-                "vec4 uSpheres[MAX_SPHERES];\n";
+    s.prelude = RAYLAB_HARNESS_GLSL(std::string(kLightsPrelude) +
+                                    "// Stand-ins for the scene's spheres, set by the case.\n"
+                                    "int uSphereCount;\n"
+                                    "vec4 uSpheres[MAX_SPHERES];\n");
     s.includes = {"ray.glsl", "intersect_sphere.glsl", "find_closest.glsl",
                   "light_visibility.glsl"};
-    s.helpers = kVisibilityHelper;
+    s.helpers = RAYLAB_HARNESS_GLSL(kVisibilityHelper);
     s.call = "checkLightVisible(a0, a1, a2, a3)";
     s.cases = sharedVisibilityCases();
     const dvec3 o(0.0);
@@ -233,23 +233,24 @@ FunctionSpec lightVisibilitySpec() {
 FunctionSpec lightVisibleFastSpec() {
     FunctionSpec s;
     s.name = "lightVisibleFast";
-    s.prelude = std::string(kLightsPrelude) +
-                "#include \"ray.glsl\"\n"
-                "#include \"intersect_sphere.glsl\"\n"
-                "// Stand-ins for the scene's spheres, set by the case, and for\n"
-                "// find_closest.glsl's findBlocker over them.\n"
-                "int uSphereCount;\n"
-                "vec4 uSpheres[2];\n"
-                "bool findBlocker(Ray ray, float maxT)\n"
-                "{\n"
-                "    for (int i = 0; i < uSphereCount; ++i) {\n"
-                "        float t = intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w);\n"
-                "        if (t != NO_HIT && t < maxT) return true;\n"
-                "    }\n"
-                "    return false;\n"
-                "}\n";
+    s.prelude = RAYLAB_HARNESS_GLSL(
+        std::string(kLightsPrelude) +
+        "#include \"ray.glsl\"\n"
+        "#include \"intersect_sphere.glsl\"\n"
+        "// Stand-ins for the scene's spheres, set by the case, and for\n"
+        "// find_closest.glsl's findBlocker over them.\n"
+        "int uSphereCount;\n"
+        "vec4 uSpheres[2];\n"
+        "bool findBlocker(Ray ray, float maxT)\n"
+        "{\n"
+        "    for (int i = 0; i < uSphereCount; ++i) {\n"
+        "        float t = intersectSphere(ray, uSpheres[i].xyz, uSpheres[i].w);\n"
+        "        if (t != NO_HIT && t < maxT) return true;\n"
+        "    }\n"
+        "    return false;\n"
+        "}\n");
     s.includes = {"light_visibility.glsl"};
-    s.helpers = kVisibilityHelper;
+    s.helpers = RAYLAB_HARNESS_GLSL(kVisibilityHelper);
     s.call = "checkLightVisible(a0, a1, a2, a3)";
     const dvec3 o(0.0);
     s.cases = sharedVisibilityCases();

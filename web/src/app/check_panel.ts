@@ -28,26 +28,37 @@ function failingView(v: ViewVerdict): HTMLElement {
 export class CheckPanel {
   running = false;
 
+  // BUTTON: the Check button, disabled (and saying so) while a check runs.
   constructor(private gl: WebGL2RenderingContext, private catalog: Catalog, private messages: HTMLElement,
-    private views: HTMLElement) {}
+    private views: HTMLElement, private button: HTMLButtonElement) {}
 
-  // Checks STAGE's code from SOURCES; says so while it runs.
-  async run(stage: StageJson, sources: Sources): Promise<void> {
-    if (this.running) return;
+  // Checks STAGE's code from SOURCES (read once the check has begun: one
+  // check at a time); says so while it runs. Resolves to whether every
+  // check passed (null: the check could not run).
+  async run(stage: StageJson, sources: () => Promise<Sources>): Promise<boolean | null> {
+    if (this.running) return null;
     this.running = true;
+    const label = this.button.textContent;
+    this.button.disabled = true;
+    this.button.textContent = 'checking…';
     this.views.replaceChildren();
-    this.messages.className = '';
-    this.messages.textContent = `checking ${stage.id} (${sourceLabel(sources)})…`;
     try {
-      const run = await runCheck(this.gl, this.catalog, stage, sources, sourceLabel(sources), backendName(this.gl));
+      const code = await sources();
+      this.messages.className = '';
+      this.messages.textContent = `checking ${stage.id} (${sourceLabel(code)})…`;
+      const run = await runCheck(this.gl, this.catalog, stage, code, sourceLabel(code), backendName(this.gl));
       this.messages.className = run.failed ? 'error' : '';
       this.messages.textContent = run.report;
       this.views.replaceChildren(...run.views.filter((v) => !v.passed).map(failingView));
+      return run.failed === 0;
     } catch (e) {
       this.messages.className = 'error';
       this.messages.textContent = `raylab check: ${(e as Error).message}`;
+      return null;
     } finally {
       this.running = false;
+      this.button.disabled = false;
+      this.button.textContent = label;
     }
   }
 }

@@ -1,12 +1,14 @@
-// The page: pick a stage, where its code comes from (the solution, labs/ as
-// handed out, or the student's own folder from disk) and a scene; fly
+// The page: pick a stage, where its code comes from (the student's work kept
+// in the page and edited there - editor/ -, the solution, labs/ as handed
+// out, or the student's own folder from disk) and a scene; fly
 // around with the native window's keys; read the frame time and the switches
 // in the overlay; save a screenshot.
 import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
 import { canWatchFolders, labFromFiles, submissionFromFiles, WatchedLab } from './lab_folder.js';
-import { downloadZip } from './submission_zip.js';
+import { downloadZip, type ZipEntry } from './submission_zip.js';
+import { WorkPanel } from '../editor/work_panel.js';
 import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
 import { defaultSettings, type RenderSettings } from '../raytrace/render_settings.js';
 import { applySettingsKey, settingsRows } from './settings_keys.js';
@@ -47,9 +49,14 @@ export class Page {
   private overlayHidden = false;  // key H
 
   private checks: CheckPanel;
+  private work: WorkPanel;
+  // Said above the first stage's messages where there is no solution (a
+  // students' page): where to start.
+  private startHere = '';
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {
-    this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'));
+    this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'), $('check'));
+    this.work = new WorkPanel(catalog, () => void this.load(true), (m) => this.showError(m, true));
   }
 
   start(): void {
@@ -60,17 +67,25 @@ export class Page {
       o.title = info.title;
       stageSel.add(o);
     }
-    // The demo's stage where there is one; a bundle of early stages opens on its first.
-    stageSel.value = this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id ??
+    // The demo's stage where the solutions are; a students' page (or a
+    // bundle of early stages) opens on its first.
+    stageSel.value = (this.catalog.solutions ? this.catalog.stages.filter((s) => s.info.features.includes('demo') && s.info.track === 'raytrace').pop()?.info.id : undefined) ??
       this.catalog.stages[0]?.info.id ?? '';
     stageSel.onchange = () => { this.demo = false; this.fillScenes(); void this.load(); };
     if (!this.catalog.solutions) {
-      // Labs only: no solution to draw, and the demos draw the solution.
+      // Labs only: no solution to draw, and the demos draw the solution;
+      // the student's work, kept in the page, comes first.
       $<HTMLSelectElement>('source').querySelector('option[value="solution"]')?.remove();
-      $<HTMLSelectElement>('source').value = this.sourceShown = 'lab';
+      $<HTMLSelectElement>('source').value = 'work';
       for (const id of ['demo-lite', 'demo-pro', 'demo-fur']) $(id).hidden = true;
+      this.startHere = 'Start here: pick your stage, edit its files in the editor (each unfinished TODO is marked), ' +
+        'then press Check. Your work is kept in this browser; Download for submission makes the zip to upload.';
     }
+    // What the browser kept from before a reload, but a folder (it must be picked again).
+    if ($<HTMLSelectElement>('source').value === 'disk') $<HTMLSelectElement>('source').value = this.catalog.solutions ? 'solution' : 'work';
+    this.sourceShown = $<HTMLSelectElement>('source').value;
     $<HTMLSelectElement>('source').onchange = (e) => {
+      $('import').hidden = (e.target as HTMLSelectElement).value !== 'disk';
       if ((e.target as HTMLSelectElement).value !== 'disk') {
         this.sourceShown = (e.target as HTMLSelectElement).value;
         return void this.load();
@@ -114,6 +129,7 @@ export class Page {
     $('shot').onclick = () => this.screenshot();
     $('check').onclick = () => void this.check();
     $('submit').onclick = () => void this.downloadSubmission();
+    $('import').onclick = () => void this.importFolder();
     this.bindInput();
     // The picture's height limit follows the header's (page.css): its buttons wrap on narrow windows.
     const header = document.querySelector('header')!;
@@ -165,6 +181,7 @@ export class Page {
 
   private async sources(): Promise<Sources> {
     const kind = $<HTMLSelectElement>('source').value;
+    if (kind === 'work') return this.work.sources(this.stage().id, this.earlierStages(this.stage()));
     if (kind !== 'disk') return { kind: kind === 'lab' ? 'lab' : 'solution' };
     if (this.watched) return this.watched.read(this.stage().id, this.earlierStages(this.stage()));
     if (this.picked) return labFromFiles(this.picked, this.stage().id, this.stageIds(), this.earlierStages(this.stage()));
@@ -200,10 +217,11 @@ export class Page {
     $('title').textContent = `${stage.id}: ${stage.title}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
     const codeKind = $<HTMLSelectElement>('source').value;
-    const label = `${stage.id} (${codeKind === 'disk' ? 'your files' : codeKind === 'lab' ? 'labs/' : 'solution'}) on ${sceneName}`;
+    const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}`;
+    this.work.show(codeKind === 'work');
     // What is on screen already is not built again (a demo button for the
     // scene shown, the same choice twice): it starts afresh instead.
-    if (!reload && !this.busy && this.renderer && codeKind !== 'disk' && label === this.shownLabel) {
+    if (!reload && !this.busy && this.renderer && !['disk', 'work'].includes(codeKind) && label === this.shownLabel) {
       this.restart(stage);
       return;
     }
@@ -228,25 +246,31 @@ export class Page {
       this.shown = stage;
       this.startPose = { pose: loaded.camera, fovYDeg: loaded.fovYDeg };
       if (!reload) this.restart(stage);
-      $('reload').hidden = !(sources.kind === 'disk' && !this.watched);
+      $('reload').hidden = !(codeKind === 'disk' && !this.watched);
+      this.work.loaded(loaded.renderer.todos, '');
       // One entry per TODO, a blank line between them: titles run over lines.
       const todos = loaded.renderer.todos.map((t) => `• ${t.file}:${t.line}\n  ${t.title}`);
       const notes = loaded.renderer.notes.map((n) => `In the browser: ${n}.`);
-      const from = sources.kind === 'disk'
+      const from = codeKind === 'work' ? `Your files: ${sources.kind === 'disk' ? sources.shown : ''}/, kept in this browser: ` +
+        'the picture follows your edits (Ctrl+S: at once).'
+        : sources.kind === 'disk'
         ? `Your files: ${sources.shown}/${this.watched ? ' (watched: save a file to reload)' : ' (Reload my files after editing)'}` +
           (reload ? `\nRead again at ${new Date().toLocaleTimeString()}.` : '')
         : '';
       this.showMessage([
+        ...(this.startHere ? [this.startHere] : []),
         todos.length ? `Unfinished (magenta stripes where this code runs):\n${todos.join('\n\n')}` : `Ready: ${loaded.summary}.`,
         ...(from ? [from] : []),
         ...notes,
       ].join('\n\n'));
+      this.startHere = '';  // the first screen's only
     } catch (e) {
       if (ticket !== this.loading) return;
       this.busy = false;
       this.building = null;
       this.canvas.classList.remove('building');
       const message = (e as Error).message;
+      this.work.loaded([], message);
       if (reload && this.renderer) {
         this.showError(`${message}\n\n(still showing the last version that compiled)`, true);
         return;
@@ -349,10 +373,7 @@ export class Page {
   // The student's lab folder as the zip the graders take (submission_zip.ts).
   private async downloadSubmission(): Promise<void> {
     try {
-      const current = this.stage().id;
-      const entries = this.watched ? await this.watched.submission(current)
-        : this.picked ? await submissionFromFiles(this.picked, current, this.stageIds())
-          : null;
+      const entries = $<HTMLSelectElement>('source').value === 'work' ? await this.work.submission() : await this.folderSubmission();
       if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…): the submission is made from it');
       this.showMessage(downloadZip(entries));
     } catch (e) {
@@ -369,14 +390,37 @@ export class Page {
     void this.load();
   }
 
-  // `raylab check` for what is on screen; the picture pauses meanwhile.
-  private async check(): Promise<void> {
-    if (this.busy || this.checks.running) return;
+  // The lab folder opened from disk as a submission's entries (null: none open).
+  private async folderSubmission(): Promise<ZipEntry[] | null> {
+    const current = this.stage().id;
+    return this.watched ? this.watched.submission(current)
+      : this.picked ? submissionFromFiles(this.picked, current, this.stageIds()) : null;
+  }
+
+  // The lab folder opened from disk (Code: my lab folder…) kept in the page
+  // as the student's work, which the page then shows.
+  private async importFolder(): Promise<void> {
     try {
-      await this.checks.run(this.stage(), await this.sources());
+      const entries = await this.folderSubmission();
+      if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…)');
+      if (!confirm(`Keep the ${entries.length} shader files of your folder in the page, in place of the page's copies?`)) return;
+      const said = await this.work.import(entries);
+      $<HTMLSelectElement>('source').value = this.sourceShown = 'work';
+      $('import').hidden = true;
+      await this.load();
+      this.showMessage(`${said}\n\n${$('messages').textContent}`);
     } catch (e) {
       this.showError((e as Error).message, true);
     }
+  }
+
+  // `raylab check` for what is on screen (one at a time); the picture pauses
+  // meanwhile. On the student's work in the page, the verdict is kept.
+  private async check(): Promise<void> {
+    if (this.busy || this.checks.running) return;
+    const stage = this.stage(), work = $<HTMLSelectElement>('source').value === 'work';
+    const passed = await this.checks.run(stage, () => this.sources());
+    if (work && passed !== null) await this.work.checked(stage.id, passed).catch((e: Error) => this.showError(e.message, true));
   }
 
   private drawFrame(now: number): void {

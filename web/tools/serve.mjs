@@ -36,15 +36,27 @@ if (!existsSync(join(root, 'web/dist/app/main.js'))) {
 // tests/reference/: the check views' pictures, which the page's Check compares with.
 const ALLOWED = ['web/', 'framework/shaders/', 'solution/', 'labs/', 'assets/', 'tests/reference/'];
 
+// Whether students write FILE as stage STAGE reads it: its solved form (the
+// newest of the stage's chain in solution/) has regions a lab takes away (as
+// raylab web-bundle decides, cmd_web_bundle.cpp).
+function studentsWrite(stage, file) {
+  for (let at = stage; at; at = JSON.parse(readFileSync(join(root, 'solution', at, 'stage.json'), 'utf8')).builds_on) {
+    const path = join(root, 'solution', at, file);
+    if (existsSync(path)) return /\/\/@(solution|open)\b/.test(readFileSync(path, 'utf8'));
+  }
+  return false;
+}
+
 // A solution's file: solution/'s code (its stage.json files are data the
 // page needs), or a variant file under framework/shaders/variants/<v>/<stage>/
-// that stands in for a file of labs/<stage>/ (the demo's levers are written
-// in solved code).
+// that stands in for a file students write (the demo's levers are written in
+// solved code; a variant of a provided file, surface_at.glsl with meshes, is
+// no answer).
 function isSolution(relPath) {
   const parts = relPath.split('/');
   if (parts[0] === 'solution') return parts.length !== 3 || parts[2] !== 'stage.json';
   if (parts.slice(0, 3).join('/') === 'framework/shaders/variants' && parts.length === 6)
-    return existsSync(join(root, 'labs', parts[4], parts[5]));
+    return !existsSync(join(root, 'solution', parts[4], 'stage.json')) || studentsWrite(parts[4], parts[5]);
   return false;
 }
 

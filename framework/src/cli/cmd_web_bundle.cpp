@@ -42,12 +42,26 @@ void copyTree(const fs::path& from, const fs::path& to) {
     fs::copy(from, to, fs::copy_options::recursive);
 }
 
+// Whether students write FILE as stage STAGE reads it: its solved form (the
+// newest of STAGE's chain in solution/) has regions a lab takes away. A
+// variant file standing in for such a file is that file solved; one standing
+// in for a provided file (surface_at.glsl with meshes) is not.
+bool studentsWrite(const std::string& stage, const std::string& file) {
+    std::error_code ec;
+    for (const StageInfo* at = &findStage(stage);; at = &findStage(at->buildsOn)) {
+        if (fs::is_regular_file(at->folder() / file, ec)) {
+            const std::string text = readTextFile(at->folder() / file);
+            return text.find("//@solution") != std::string::npos ||
+                   text.find("//@open") != std::string::npos;
+        }
+        if (at->buildsOn.empty()) return false;
+    }
+}
+
 // framework/shaders/ with the variant folders of STAGES only, and without
-// the variant files that hold solved code: a variant file standing in for a
-// file of labs/<stage>/ is that file solved.
+// the variant files that hold solved code (studentsWrite).
 void copyFrameworkShaders(const fs::path& to, const std::set<std::string>& stages) {
     const fs::path from = projectRoot() / "framework" / "shaders";
-    std::error_code ec;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(from)) {
         if (!e.is_regular_file()) continue;
         const fs::path rel = e.path().lexically_relative(from);
@@ -55,8 +69,7 @@ void copyFrameworkShaders(const fs::path& to, const std::set<std::string>& stage
         if (part->string() == "variants") {
             if (std::distance(rel.begin(), rel.end()) != 4) continue;
             const std::string stage = std::next(part, 2)->string();
-            if (!stages.count(stage) || fs::exists(defaultLabRoot() / stage / rel.filename(), ec))
-                continue;
+            if (!stages.count(stage) || studentsWrite(stage, rel.filename().string())) continue;
         }
         fs::create_directories((to / rel).parent_path());
         fs::copy_file(e.path(), to / rel);

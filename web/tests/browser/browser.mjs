@@ -39,7 +39,8 @@ export const browserName = ['firefox', 'webkit'].includes(process.env.RAYLAB_BRO
 // RAYLAB_FIREFOX overrides its path.
 // DOWNLOADS: a folder the page's downloads are saved to, unasked (Firefox:
 // from its start; Chromium: allowDownloads() on the page).
-export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl', { downloads } = {}) {
+// EXTRAARGS: more Chromium switches (the check benchmark turns its shader caches off).
+export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl', { downloads, extraArgs = [] } = {}) {
   if (browserName === 'webkit') return launchWebKit();
   if (browserName === 'firefox') {
     const saveTo = downloads ? {
@@ -55,7 +56,7 @@ export async function launchBrowser(angle = process.env.RAYLAB_ANGLE ?? 'gl-egl'
       protocolTimeout: 600_000,
     });
   }
-  const args = [`--use-angle=${angle}`, '--ignore-gpu-blocklist', '--enable-unsafe-swiftshader'];
+  const args = [`--use-angle=${angle}`, '--ignore-gpu-blocklist', '--enable-unsafe-swiftshader', ...extraArgs];
   if (process.getuid?.() === 0) args.push('--no-sandbox');  // Chromium refuses root with its sandbox
   return puppeteer.launch({
     executablePath: process.env.RAYLAB_CHROMIUM ?? '/usr/bin/chromium',

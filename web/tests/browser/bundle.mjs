@@ -8,13 +8,13 @@
 //     level also the code the guided level gives) or of an unreleased check's
 //     stand-ins in any file, the WebAssembly core's strings included; the scan
 //     is shown to catch a planted solution file and a planted stand-in;
-//  2. served by a plain static server (python3 -m http.server), bundles of
-//     single stages and ranges of both tracks, both levels, both carries open
-//     with their stages only, and the page's own Check button (no test hook:
+//  2. served by a plain static server (python3 -m http.server), a bundle of
+//     every single stage and ranges of both tracks, both levels, both carries
+//     (each holding its stages only, as in 1) open with their stages only, and the page's own Check button (no test hook:
 //     a bundle has none) gives a verdict on the lab as handed out (fails) and
 //     on a solved lab folder picked through the browser's folder input
 //     (passes), with no failed request.
-// Usage: node tests/browser/bundle.mjs [--raylab PATH]
+// Usage: node tests/browser/bundle.mjs [--raylab PATH] [--only TEXT]
 import { execFileSync, spawn } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -24,6 +24,7 @@ import { collectProblems, launchBrowser, projectRoot } from './browser.mjs';
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
 const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
+const only = option('--only', '');  // the bundles whose name holds TEXT (while working on one)
 const SHADER = /\.(glsl|vert|frag|geom)$/;
 const ALL_STAGES = readdirSync(join(projectRoot, 'solution')).filter((id) => existsSync(join(projectRoot, 'solution', id, 'stage.json'))).sort();
 
@@ -232,15 +233,19 @@ try {
 
   // 2. Bundles of single stages and ranges, both tracks, levels and carries:
   // each opens with its stages only and checks the lab as handed out and a solved one.
+  // Every stage alone (levels and carries alternating, so that each occurs on
+  // both tracks) and ranges of both tracks.
   const sets = [
-    { name: '04-open-solved', opts: ['--stages', '04', '--level', 'open', '--carry', 'solved'], stages: ['04-recursion'] },
-    { name: '03-04-own', opts: ['--stages', '03-04'], stages: ['03-shadows', '04-recursion'] },
-    { name: '02-own', opts: ['--stages', '02', '--level', 'open'], stages: ['02-shading'] },
-    { name: 'f3-solved', opts: ['--stages', 'f3', '--carry', 'solved'], stages: ['f3-fins'] },
-    { name: 'f1-f2-open', opts: ['--stages', 'f1-f2', '--level', 'open'], stages: ['f1-mesh', 'f2-shells'] },
+    ...ALL_STAGES.map((id, i) => ({
+      name: `${id}-${i % 2 ? 'open' : 'guided'}-${i % 4 < 2 ? 'own' : 'solved'}`,
+      opts: ['--stages', id.split('-')[0], '--level', i % 2 ? 'open' : 'guided', '--carry', i % 4 < 2 ? 'own' : 'solved'],
+      stages: [id],
+    })),
+    { name: '03-04-guided-own', opts: ['--stages', '03-04'], stages: ['03-shadows', '04-recursion'] },
+    { name: 'f1-f2-open-own', opts: ['--stages', 'f1-f2', '--level', 'open'], stages: ['f1-mesh', 'f2-shells'] },
   ];
   browser = await launchBrowser();
-  for (const set of sets) {
+  for (const set of sets.filter((x) => x.name.includes(only))) {
     const b = bundleOf(set.name, ...set.opts);
     const level = set.opts.includes('open') ? 'open' : 'guided';
     const leaks = leaksIn(b.out, set.stages, level, set.opts.includes('solved') ? 'solved' : 'own');
@@ -260,7 +265,8 @@ try {
     await chooser.accept([solvedFolder(b.out, set.name)]);
     await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 300_000 });
     const solved = await pressCheck(page);
-    check(/ 0 failed/.test(solved), `${set.name}: Check on ${stage} solved: ${solved.match(/\d+ passed, \d+ failed/)?.[0] ?? solved.split('\n').slice(0, 3).join(' / ')}`);
+    check(/ 0 failed/.test(solved), `${set.name}: Check on ${stage} solved: ${solved.match(/\d+ passed, \d+ failed/)?.[0] ?? solved.split('\n').slice(0, 3).join(' / ')}` +
+      solved.split('\n').filter((l) => /^ {2}FAIL|^ {7}/.test(l)).slice(0, 4).map((l) => `\n    ${l.trim()}`).join(''));
     check(problems.length === 0, `${set.name}: no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
     await page.close();
   }

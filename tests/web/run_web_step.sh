@@ -2,7 +2,8 @@
 # One step of the web build's tests (ctest label `web`), run from the project
 # root: build (tsc, the catalog, the core in WebAssembly), unit (node's test
 # runner), browser (the pages in Debian's Chromium against the native renders,
-# then the page driven through its own controls, then a students' bundle
+# then the page driven through its own controls, then its editor with the
+# work kept in the browser, then a students' bundle
 # served statically, then a submission downloaded from the page and graded), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake in
 # Chromium, a different third of them in Firefox and in WebKit; ctest labels
@@ -37,6 +38,9 @@ case "$step" in
   browser)
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs
+    # The editor in the page, the work kept in the browser, driven by keys
+    # and clicks only (no test API, as in a students' bundle).
+    node web/tests/browser/editor.mjs --raylab "$raylab" --labgen "$labgen"
     # The bundle served statically and the downloaded submission graded
     # natively test the server, the bundle and native grading more than the
     # engine: Chromium runs them, the second engine the pages and the page.

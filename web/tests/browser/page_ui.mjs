@@ -14,8 +14,10 @@
 //  5. layout: at 1024x768 in a 1280x720 window the messages stay in view
 //     beside the picture; on a 390x844 phone the overlay covers little of it;
 //  6. a server started without --with-solutions: the page offers the labs
-//     only (no solution in the Code menu, no demo buttons), draws the lab,
-//     and never asks for a solution file;
+//     only (no solution in the Code menu, no demo buttons), draws the
+//     student's work kept in the page (at first the lab as handed out:
+//     tests/browser/editor.mjs tests the editor), and never asks for a
+//     solution file;
 //  7. Check (key C) on the lab of stage 01: `raylab check`'s report in the
 //     messages, each failing view as yours / difference / reference; on the
 //     solution every check passes and no view is shown.
@@ -136,9 +138,9 @@ try {
       demos: ['demo-lite', 'demo-pro', 'demo-fur'].filter((id) => !document.getElementById(id).hidden),
       overlay: document.getElementById('overlay').textContent,
     }));
-    check(!seen.options.includes('solution') && seen.options.includes('lab'), `labs only: the Code menu offers ${seen.options.join(', ')}`);
+    check(!seen.options.includes('solution') && seen.options[0] === 'work' && seen.options.includes('lab'), `labs only: the Code menu offers ${seen.options.join(', ')}`);
     check(seen.demos.length === 0, `labs only: no demo button shown (${seen.demos.join(', ') || 'none'})`);
-    check(/\(labs\/\) on /.test(seen.overlay), `labs only: the page draws the lab: ${JSON.stringify(seen.overlay.split('\n')[0])}`);
+    check(/\(my work\) on /.test(seen.overlay), `labs only: the page draws the student's work, the lab as handed out at first: ${JSON.stringify(seen.overlay.split('\n')[0])}`);
     check(lab.problems.length === 0, `labs only: no console errors or failed requests${lab.problems.length ? `: ${lab.problems.join('; ')}` : ''}`);
     const status = await lab.page.evaluate(async () => (await fetch('../solution/01-raycast/intersect_sphere.glsl')).status);
     check(status === 404, `labs only: a solution file is not served (HTTP ${status})`);

@@ -8,29 +8,18 @@
 // as handed out zero.
 // Usage: node tests/browser/submission.mjs [--raylab PATH] [--labgen PATH]
 import { execFileSync, spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { join } from 'node:path';
 import { allowDownloads, launchBrowser, openPage, projectRoot, startServer } from './browser.mjs';
+import { checker, finishedDownload, gradePrairieLearn, toolPaths } from './downloads.mjs';
 
-const args = process.argv.slice(2);
-const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
-const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
-const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
+const { raylab, labgen } = toolPaths();
 const STAGE = '01-raycast';
 
-const failures = [];
-const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+const { check, failures } = checker();
 const shaderFiles = (dir) => Object.fromEntries(readdirSync(dir).filter((n) => /\.(glsl|vert|frag|geom)$/.test(n))
   .map((n) => [`${STAGE}/${n}`, readFileSync(join(dir, n), 'utf8')]));
-
-function gradePrairieLearn(zip, root) {
-  mkdirSync(join(root, 'student'), { recursive: true });
-  writeFileSync(join(root, 'student', 'raylab-submission.zip'), zip);
-  const r = spawnSync(raylab, ['prairielearn', '--stages', '01', '--root', root], { encoding: 'utf8' });
-  if (r.status !== 0) throw new Error(`raylab prairielearn: ${r.stderr}`);
-  return JSON.parse(readFileSync(join(root, 'results', 'results.json'), 'utf8'));
-}
 
 function gradeGradescope(zip, root) {
   mkdirSync(join(root, 'submission'), { recursive: true });
@@ -60,24 +49,14 @@ try {
     await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 120_000 });
     for (const f of readdirSync(downloads)) rmSync(join(downloads, f));
     await page.click('#submit');
-    const zipPath = join(downloads, 'raylab-submission.zip');
-    // Finished: there, no NAME.part beside it (Firefox), and its size the
-    // same twice in a row.
-    let size = -1;
-    for (let i = 0; i < 200; ++i) {
-      await new Promise((r) => setTimeout(r, 100));
-      if (!existsSync(zipPath) || readdirSync(downloads).some((f) => f.endsWith('.part'))) continue;
-      const now = statSync(zipPath).size;
-      if (now > 0 && now === size) break;
-      size = now;
-    }
-    check(existsSync(zipPath), `${name}: the page downloads raylab-submission.zip`);
-    if (!existsSync(zipPath)) continue;
+    const zipPath = await finishedDownload(downloads);
+    check(zipPath !== null, `${name}: the page downloads raylab-submission.zip`);
+    if (!zipPath) continue;
     const zip = readFileSync(zipPath);
     const listed = execFileSync('unzip', ['-Z1', zipPath], { encoding: 'utf8' }).trim().split('\n');
     check(listed.every((p) => p.startsWith(`${STAGE}/`)) && listed.length === Object.keys(shaderFiles(dir)).length,
       `${name}: the zip holds the stage folder's ${listed.length} shader files (${listed.join(', ')})`);
-    const pl = gradePrairieLearn(zip, join(work, `pl-${full}`));
+    const pl = gradePrairieLearn(raylab, zip, join(work, `pl-${full}`), '01');
     check(pl.gradable && pl.score === (full ? 1 : 0), `${name}: raylab prairielearn scores it ${pl.score} (${pl.message})`);
     const gs = gradeGradescope(zip, join(work, `gs-${full}`));
     const points = gs.score ?? gs.tests?.reduce((a, t) => a + t.score, 0);

@@ -50,7 +50,7 @@ try {
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   page.on('dialog', (d) => void d.accept());  // Reset's confirmation (WebDriver: accepted by its session)
-  await allowDownloads(page, downloads);
+  if (browserName !== 'webkit') await allowDownloads(page, downloads);
   await page.setViewport({ width: 1280, height: 800 });
   await page.goto(server.url, { waitUntil: 'load' });
 

@@ -403,12 +403,10 @@ export class Page {
     try {
       const entries = await this.folderSubmission();
       if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…)');
-      if (!confirm(`Keep the ${entries.length} shader files of your folder in the page, in place of the page's copies?`)) return;
-      const said = await this.work.import(entries);
+      if (!await this.work.import(entries, 'your folder')) return;
       $<HTMLSelectElement>('source').value = this.sourceShown = 'work';
       $('import').hidden = true;
       await this.load();
-      this.showMessage(`${said}\n\n${$('messages').textContent}`);
     } catch (e) {
       this.showError((e as Error).message, true);
     }

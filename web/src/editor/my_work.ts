@@ -10,6 +10,8 @@ import { ROOT, type Catalog, type Sources } from '../course/catalog.js';
 import type { ZipEntry } from '../app/submission_zip.js';
 import { WorkStore } from './work_store.js';
 
+const SHADER = /\.(glsl|vert|frag|geom)$/;
+
 // The folder the page's messages name: my-work/01-raycast/intersect_sphere.glsl:18.
 export const WORK_FOLDER = 'my-work';
 
@@ -128,15 +130,22 @@ export class MyWork {
     return [...this.texts].sort(([a], [b]) => (a < b ? -1 : 1)).map(([path, text]) => ({ path, data: encoder.encode(text) }));
   }
 
-  // ENTRIES (<stage>/<file>, a lab folder's submission) kept in place of
-  // the page's copies; entries of stages this page does not offer are left
-  // out. Returns the paths kept.
-  async import(entries: ZipEntry[]): Promise<string[]> {
-    const decoder = new TextDecoder();
+  // The shader files of ENTRIES that sit directly in a stage's folder
+  // (<stage>/<file>, as a submission holds them, or below a folder such as
+  // labs/<stage>/<file>), of the stages this page offers, as <stage>/<file>.
+  importable(entries: ZipEntry[]): ZipEntry[] {
     const ids = new Set(this.catalog.stages.map((s) => s.info.id));
-    const kept = entries.filter((e) => ids.has(e.path.split('/')[0]!));
-    await Promise.all(kept.map((e) => this.write(e.path.split('/')[0]!, e.path.slice(e.path.indexOf('/') + 1), decoder.decode(e.data))));
-    return kept.map((e) => e.path);
+    return entries.flatMap((e) => {
+      const parts = e.path.split('/');
+      const stage = parts.at(-2);
+      return stage && ids.has(stage) && SHADER.test(parts.at(-1)!) ? [{ path: `${stage}/${parts.at(-1)}`, data: e.data }] : [];
+    });
+  }
+
+  // ENTRIES (importable()) kept in place of the page's copies.
+  async import(entries: ZipEntry[]): Promise<void> {
+    const decoder = new TextDecoder();
+    await Promise.all(entries.map((e) => this.write(e.path.split('/')[0]!, e.path.split('/')[1]!, decoder.decode(e.data))));
   }
 
   verdict(stageId: string): boolean | undefined {

@@ -4,7 +4,8 @@
 // load or a Check found. Every edit is kept at once; the picture follows
 // 0.7 s after the last keystroke (the page's reload: the camera stays, a
 // compile error keeps the last picture that compiled), or at once on
-// Ctrl/Cmd-S. The Reset button puts the shown file back as handed out.
+// Ctrl/Cmd-S. The Reset button puts the shown file back as handed out;
+// "Import a zip…" takes a submission zip back (from another device).
 import type { OpenTodo } from '../core/core.js';
 import type { Catalog, Sources } from '../course/catalog.js';
 import type { ZipEntry } from '../app/submission_zip.js';
@@ -12,6 +13,7 @@ import { CodeEditor } from './code_editor.js';
 import { lineNotes } from './diagnostics.js';
 import { MyWork } from './my_work.js';
 import { markStages } from './stage_marks.js';
+import { readZip } from './zip_reader.js';
 
 const RELOAD_AFTER_MS = 700;
 
@@ -27,6 +29,12 @@ export class WorkPanel {
   // RELOAD: draw the stage again from the files (a reload); FAILED: say what went wrong.
   constructor(private catalog: Catalog, private reload: () => void, private failed: (message: string) => void) {
     $('reset-file').onclick = () => void this.resetShown();
+    $('import-zip').onclick = () => $('zip-file').click();
+    $<HTMLInputElement>('zip-file').onchange = (e) => {
+      const input = e.target as HTMLInputElement;
+      if (input.files?.[0]) void this.importZip(input.files[0]);
+      input.value = '';  // the same file again is a change
+    };
     // An edit typed a moment ago may not be stored yet: the browser asks first.
     addEventListener('beforeunload', (e) => { if (this.opened && !this.opened.saved) e.preventDefault(); });
   }
@@ -104,12 +112,25 @@ export class WorkPanel {
     return (await this.work()).submission();
   }
 
-  // A lab folder's files (ENTRIES: <stage>/<file>) kept in place of the
-  // page's; says what was kept.
-  async import(entries: ZipEntry[]): Promise<string> {
-    const kept = await (await this.work()).import(entries);
+  // The shader files of ENTRIES (a lab folder's, a zip's) kept in place
+  // of the page's copies once the student agrees; false if they did not
+  // (or there was nothing to import).
+  async import(entries: ZipEntry[], from: string): Promise<boolean> {
+    const work = await this.work();
+    const kept = work.importable(entries);
+    if (kept.length === 0) throw new Error(`${from} holds no shader file in a folder of this page's stages (${this.catalog.stages.map((s) => s.info.id).join(', ')})`);
+    const stages = [...new Set(kept.map((e) => e.path.split('/')[0]))];
+    if (!confirm(`Keep the ${kept.length} shader files of ${stages.join(', ')} from ${from} in the page, in place of the page's copies?`)) return false;
+    await work.import(kept);
     this.stageShown = '';  // the editor reads the files again
-    const stages = [...new Set(kept.map((p) => p.split('/')[0]))];
-    return `Imported ${kept.length} files of ${stages.join(', ') || 'no stage of this page'} into the page (Code: my work).`;
+    return true;
+  }
+
+  private async importZip(file: File): Promise<void> {
+    try {
+      if (await this.import(await readZip(new Uint8Array(await file.arrayBuffer())), file.name)) this.reloadNow();
+    } catch (e) {
+      this.failed(`Import ${file.name}: ${(e as Error).message}`);
+    }
   }
 }

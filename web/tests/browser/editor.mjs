@@ -5,7 +5,7 @@
 // as a bundle is), a fresh browser profile:
 //  1. the first screen says where to start; Code is "my work (in this page)";
 //     the first stage opens with its files as tabs, the TODO's file marked;
-//  2. keyboard only: Tab from the Reset button into the editor, type, Tab
+//  2. keyboard only: Tab from the button before it into the editor, type, Tab
 //     out again (the editor does not keep Tab);
 //  3. stage 01's fix typed into the editor (each file that differs from the
 //     solved lab: select all, type the solved text); the picture follows
@@ -18,7 +18,8 @@
 //     downloads), graded natively by `raylab prairielearn`: score 1;
 //  6. a file reset to the handout (the confirmation accepted): its TODO is
 //     back;
-//  7. layouts at 390x844 and 1024x768: no horizontal scrolling, the
+//  7. the downloaded zip imported into the page again: the fix is back;
+//  8. layouts at 390x844 and 1024x768: no horizontal scrolling, the
 //     picture and the editor in view, the editor under the picture on the
 //     phone.
 // Usage: node tests/browser/editor.mjs [--raylab PATH] [--labgen PATH]
@@ -87,7 +88,7 @@ try {
 
   // 2. Keyboard only: into the editor with Tab, a comment typed, out with Tab.
   await openTab('main.frag');
-  await page.focus('#reset-file');
+  await page.focus('#import-zip');  // the last control before the editor
   await page.keyboard.press('Tab');
   const inside = await focusInEditor();
   await page.keyboard.down('Control');
@@ -192,7 +193,23 @@ try {
   check((await editorText()).trimEnd() === handout && (await tabs()).find((t) => t.name === 'find_closest.glsl').todo,
     'Reset file puts the handout back: its TODO is marked again');
 
-  // 7. Layouts.
+  // 7. The downloaded zip imported again (as from another device): the fix is back.
+  if (zipPath) {
+    if (browserName === 'chromium') {
+      // The button, and the file picked in the browser's file chooser.
+      const [chooser] = await Promise.all([page.waitForFileChooser(), page.click('#import-zip')]);
+      await chooser.accept([zipPath]);
+    } else if (browserName === 'webkit') {
+      await page.uploadFile('#zip-file', zipPath);  // WebDriver: the button's file input given the file
+    } else {
+      await (await page.$('#zip-file')).uploadFile(zipPath);
+    }
+    await settled(/Ready: /);
+    check((await editorText()).includes('hit = Hit(t, i)') && !(await tabs()).some((t) => t.todo),
+      'Import a zip… (the downloaded submission, the confirmation accepted) brings the fix back');
+  }
+
+  // 8. Layouts.
   for (const [width, height] of [[390, 844], [1024, 768]]) {
     await page.setViewport({ width, height });
     await sleep(500);

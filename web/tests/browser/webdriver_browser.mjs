@@ -2,7 +2,7 @@
 // Debian's WebKitWebDriver (package webkit2gtk-driver) over W3C WebDriver,
 // behind the few calls of puppeteer's Browser and Page the tests make
 // (newPage, goto, evaluate, waitForFunction, click, focus, keyboard,
-// setViewport, close). Dialogs (confirm) are accepted by the session
+// setViewport, close; uploadFile stands for ElementHandle.uploadFile). Dialogs (confirm) are accepted by the session
 // (unhandledPromptBehavior). MiniBrowser has no
 // headless mode: it needs an X display (the tests run it under xvfb-run).
 // The console and failed requests are not reported over WebDriver classic:
@@ -47,6 +47,12 @@ class WebDriverPage {
     await this.command('POST', `/element/${Object.values(element)[0]}/click`, {});
   }
 
+  // A file input given PATH, as if the student picked it.
+  async uploadFile(selector, path) {
+    const element = await this.command('POST', '/element', { using: 'css selector', value: selector });
+    await this.command('POST', `/element/${Object.values(element)[0]}/value`, { text: path });
+  }
+
   async focus(selector) {
     await this.evaluate((s) => document.querySelector(s).focus(), selector);
   }
@@ -66,8 +72,9 @@ class WebDriverPage {
       Promise.resolve().then(() => (${fn.toString()})(...${JSON.stringify(args)}))
         .then((v) => done({ ok: v === undefined ? null : v }), (e) => done({ error: String(e && e.stack || e) }));`;
     const r = await this.command('POST', '/execute/async', { script, args: [] });
-    if (r.error) throw new Error(r.error);
-    return r.ok;
+    // null: a dialog was open, accepted in place of running the script.
+    if (r?.error) throw new Error(r.error);
+    return r?.ok;
   }
 
   async waitForFunction(fn, { timeout = 30_000 } = {}, ...args) {

@@ -85,7 +85,6 @@ export class Page {
     if ($<HTMLSelectElement>('source').value === 'disk') $<HTMLSelectElement>('source').value = this.catalog.solutions ? 'solution' : 'work';
     this.sourceShown = $<HTMLSelectElement>('source').value;
     $<HTMLSelectElement>('source').onchange = (e) => {
-      $('import').hidden = (e.target as HTMLSelectElement).value !== 'disk';
       if ((e.target as HTMLSelectElement).value !== 'disk') {
         this.sourceShown = (e.target as HTMLSelectElement).value;
         return void this.load();
@@ -219,6 +218,7 @@ export class Page {
     const codeKind = $<HTMLSelectElement>('source').value;
     const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}`;
     this.work.show(codeKind === 'work');
+    $('import').hidden = codeKind !== 'disk';  // a folder from disk can be kept in the page
     // What is on screen already is not built again (a demo button for the
     // scene shown, the same choice twice): it starts afresh instead.
     if (!reload && !this.busy && this.renderer && !['disk', 'work'].includes(codeKind) && label === this.shownLabel) {
@@ -405,7 +405,6 @@ export class Page {
       if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…)');
       if (!await this.work.import(entries, 'your folder')) return;
       $<HTMLSelectElement>('source').value = this.sourceShown = 'work';
-      $('import').hidden = true;
       await this.load();
     } catch (e) {
       this.showError((e as Error).message, true);

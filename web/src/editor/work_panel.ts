@@ -62,6 +62,7 @@ export class WorkPanel {
     const work = await this.work();
     await work.ensure([stageId, ...earlier]);
     if (this.stageShown !== stageId) {
+      clearTimeout(this.timer);  // an edit's pending redraw: the new stage is drawn anyway
       const files = work.files(stageId, earlier);
       this.editor ??= new CodeEditor($('editor-host'), $('editor-tabs'), (f, text) => this.edited(f.owner, f.name, text),
         () => this.reloadNow());
@@ -113,8 +114,7 @@ export class WorkPanel {
   }
 
   // The shader files of ENTRIES (a lab folder's, a zip's) kept in place
-  // of the page's copies once the student agrees; false if they did not
-  // (or there was nothing to import).
+  // of the page's copies once the student agrees; false if they did not.
   async import(entries: ZipEntry[], from: string): Promise<boolean> {
     const work = await this.work();
     const kept = work.importable(entries);

@@ -33,7 +33,8 @@ export class WorkStore {
         r.result.createObjectStore(VERDICTS);
       };
       r.onsuccess = () => resolve(new WorkStore(r.result));
-      r.onerror = () => reject(new Error(`the browser refused to keep the page's work (IndexedDB: ${r.error?.message ?? 'no reason given'})`));
+      r.onerror = () => reject(new Error(`the browser refused to keep the page's work (IndexedDB: ${r.error?.message ?? 'no reason given'}); ` +
+        'Code: labs/ (as handed out) shows the labs, but keeps no edit'));
       r.onblocked = () => reject(new Error('another tab of this page holds its storage open: close it and reload'));
     });
   }

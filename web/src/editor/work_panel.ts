@@ -25,6 +25,7 @@ export class WorkPanel {
   private editor: CodeEditor | null = null;
   private stageShown = '';
   private timer: ReturnType<typeof setTimeout> | undefined;
+  private askedToKeep = false;
 
   // RELOAD: draw the stage again from the files (a reload); FAILED: say what went wrong.
   constructor(private catalog: Catalog, private reload: () => void, private failed: (message: string) => void) {
@@ -73,6 +74,11 @@ export class WorkPanel {
   }
 
   private edited(owner: string, name: string, text: string): void {
+    // The first edit asks the browser to keep the page's storage for good
+    // (else it may clear it when short of space, and Safari may after
+    // seven days of use without a visit): Firefox asks the student.
+    if (!this.askedToKeep) void navigator.storage?.persist?.().catch(() => false);
+    this.askedToKeep = true;
     this.opened!.write(owner, name, text).catch((e: Error) =>
       this.failed(`Your edit of ${owner}/${name} could not be kept in this browser: ${e.message}`));
     clearTimeout(this.timer);

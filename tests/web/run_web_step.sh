@@ -46,6 +46,9 @@ case "$step" in
     # engine: Chromium runs them, the second engine the pages and the page.
     if [ "${RAYLAB_BROWSER:-}" != firefox ]; then
       node web/tests/browser/bundle.mjs --raylab "$raylab"
+      # Folder mode through the folder input (Firefox's WebDriver cannot
+      # hand an input a folder): a file saved on disk after it was read.
+      node web/tests/browser/folder_mode.mjs
       node web/tests/browser/submission.mjs --raylab "$raylab" --labgen "$labgen"
     fi ;;
   parity)

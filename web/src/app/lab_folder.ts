@@ -75,6 +75,70 @@ export function submissionFromFiles(files: FileList | File[], current: string, s
   return submissionEntries(Array.from(files).map((f) => [f.webkitRelativePath || f.name, f]), current, stageIds);
 }
 
+// A folder picked through <input webkitdirectory> (browsers without folder
+// watching): its shader files read at once, as a snapshot. The browser's
+// File objects keep pointing at the files on disk, and a file saved since is
+// unreadable in Chrome (a raw "could not be read" error) or reads the new
+// text elsewhere: either way the page would check or zip something other
+// than what it shows. changedOnDisk() tells before Check and Download.
+export class PickedFolder {
+  private constructor(private files: File[], private texts: Map<string, string>) {}
+
+  static async read(files: FileList | File[]): Promise<PickedFolder> {
+    const list = Array.from(files);
+    if (list.length === 0) throw new Error('the folder is empty');
+    const texts = new Map<string, string>();
+    for (const f of list) {
+      const path = f.webkitRelativePath || f.name;
+      if (!SHADER.test(path)) continue;
+      try {
+        texts.set(path, await f.text());
+      } catch {
+        throw new Error(`${path} cannot be read (saved while the folder was being picked?): pick the folder again`);
+      }
+    }
+    return new PickedFolder(list, texts);
+  }
+
+  // The snapshot as Files (labFromFiles and submissionFromFiles read them).
+  private snapshot(): File[] {
+    return [...this.texts].map(([path, text]) => {
+      const f = new File([text], path.split('/').pop()!);
+      Object.defineProperty(f, 'webkitRelativePath', { value: path });
+      return f;
+    });
+  }
+
+  lab(stageId: string, stageIds: string[], earlier: string[] = []): Promise<Sources> {
+    return labFromFiles(this.snapshot(), stageId, stageIds, earlier);
+  }
+
+  submission(current: string, stageIds: string[]): Promise<ZipEntry[]> {
+    return submissionFromFiles(this.snapshot(), current, stageIds);
+  }
+
+  // The shader files saved, removed or made unreadable since the folder was read.
+  async changedOnDisk(): Promise<string[]> {
+    const changed: string[] = [];
+    for (const f of this.files) {
+      const path = f.webkitRelativePath || f.name;
+      if (!this.texts.has(path)) continue;
+      try {
+        if (await f.text() !== this.texts.get(path)) changed.push(path);
+      } catch {
+        changed.push(path);
+      }
+    }
+    return changed;
+  }
+}
+
+// The one line Check and Download stop with when a picked folder changed on disk.
+export function changedOnDiskMessage(changed: string[]): string {
+  const named = changed.slice(0, 3).join(', ') + (changed.length > 3 ? ` and ${changed.length - 3} more` : '');
+  return `Your files changed on disk since the page read them (${named}): press Reload my files.`;
+}
+
 // The File System Access API's folder picker (not yet in TypeScript's DOM types).
 type DirectoryPicker = (options?: { id?: string; mode?: 'read' }) => Promise<FileSystemDirectoryHandle>;
 const picker = (window as unknown as { showDirectoryPicker?: DirectoryPicker }).showDirectoryPicker;

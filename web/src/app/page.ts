@@ -6,7 +6,7 @@
 import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
-import { canWatchFolders, labFromFiles, submissionFromFiles, WatchedLab } from './lab_folder.js';
+import { canWatchFolders, changedOnDiskMessage, PickedFolder, WatchedLab } from './lab_folder.js';
 import { downloadZip, type ZipEntry } from './submission_zip.js';
 import { WorkPanel } from '../editor/work_panel.js';
 import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
@@ -32,7 +32,7 @@ export class Page {
   private held = new Set<string>();
   private note = '';
   private watched: WatchedLab | null = null;  // a folder the page watches (Chrome, Edge)
-  private picked: File[] | null = null;  // a snapshot of a folder (other browsers)
+  private picked: PickedFolder | null = null;  // a snapshot of a folder (other browsers)
   private loading = 0;
   private demo = false;
   private sceneShells = 0;
@@ -105,9 +105,11 @@ export class Page {
       if (!files || files.length === 0) return;
       // The same folder again ("Reload my files"): a reload, as after a save.
       const again = this.sourceShown === 'disk' && this.picked !== null;
-      this.picked = Array.from(files);
-      this.sourceShown = 'disk';
-      void this.load(again);
+      PickedFolder.read(files).then((picked) => {
+        this.picked = picked;
+        this.sourceShown = 'disk';
+        void this.load(again);
+      }, (err: Error) => this.showError(err.message, true));
     };
     $<HTMLInputElement>('folder').addEventListener('cancel', () => {
       $<HTMLSelectElement>('source').value = this.sourceShown;
@@ -183,7 +185,7 @@ export class Page {
     if (kind === 'work') return this.work.sources(this.stage().id, this.earlierStages(this.stage()));
     if (kind !== 'disk') return { kind: kind === 'lab' ? 'lab' : 'solution' };
     if (this.watched) return this.watched.read(this.stage().id, this.earlierStages(this.stage()));
-    if (this.picked) return labFromFiles(this.picked, this.stage().id, this.stageIds(), this.earlierStages(this.stage()));
+    if (this.picked) return (await this.freshPicked()).lab(this.stage().id, this.stageIds(), this.earlierStages(this.stage()));
     throw new Error('pick your lab folder (Code: my lab folder…)');
   }
 
@@ -394,7 +396,15 @@ export class Page {
   private async folderSubmission(): Promise<ZipEntry[] | null> {
     const current = this.stage().id;
     return this.watched ? this.watched.submission(current)
-      : this.picked ? submissionFromFiles(this.picked, current, this.stageIds()) : null;
+      : this.picked ? (await this.freshPicked()).submission(current, this.stageIds()) : null;
+  }
+
+  // The picked folder, unless a file of it changed on disk since it was read:
+  // then Check and Download stop with one line (never a stale verdict or zip).
+  private async freshPicked(): Promise<PickedFolder> {
+    const changed = await this.picked!.changedOnDisk();
+    if (changed.length) throw new Error(changedOnDiskMessage(changed));
+    return this.picked!;
   }
 
   // The lab folder opened from disk (Code: my lab folder…) kept in the page

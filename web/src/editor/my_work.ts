@@ -52,7 +52,8 @@ export class MyWork {
   async ensure(stageIds: string[]): Promise<void> {
     const missing = stageIds.flatMap((id) => this.labFiles(id).filter((n) => !this.texts.has(`${id}/${n}`)).map((n) => [id, n] as const));
     const texts = await Promise.all(missing.map(([id, n]) => this.handout(id, n)));
-    await Promise.all(missing.map(([id, n], i) => this.write(id, n, texts[i]!)));
+    // Not over a copy another call kept (and the student began editing) meanwhile.
+    await Promise.all(missing.map(([id, n], i) => (this.texts.has(`${id}/${n}`) ? undefined : this.write(id, n, texts[i]!))));
   }
 
   // STAGEID's files and, after them, those of EARLIER (newest first) its

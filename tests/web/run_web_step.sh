@@ -10,7 +10,8 @@
 # web and web-parity). RAYLAB_BROWSER=firefox: in Firefox ESR instead
 # of Chromium (ctest's web_browser_firefox, web_parity_firefox); webkit: in
 # WebKitGTK, under an X display (web_parity_webkit).
-#   run_web_step.sh build|unit|browser|parity RAYLAB_EXE OUT_DIR LABGEN_EXE
+# editor: the editor test alone (WebKitGTK runs it: web_editor_webkit).
+#   run_web_step.sh build|unit|browser|parity|editor RAYLAB_EXE OUT_DIR LABGEN_EXE
 set -euo pipefail
 step=$1 raylab=$2 out=$3 labgen=${4:-}
 cd "$(dirname "$0")/../.."
@@ -21,7 +22,7 @@ fi
 case "$step" in
   build) npm --prefix web run --silent build ;;
   unit) node --test web/tests/unit/ ;;
-  browser|parity)
+  browser|parity|editor)
     if [ "${RAYLAB_BROWSER:-}" = webkit ]; then
       command -v WebKitWebDriver >/dev/null ||
         { echo "web tests: WebKitWebDriver is missing: run 'bash install.sh' (webkit2gtk-driver)" >&2; exit 1; }
@@ -35,6 +36,9 @@ case "$step" in
 esac
 case "$step" in
   build|unit) ;;
+  editor)
+    # The editor alone (WebKitGTK's run: web_editor_webkit).
+    node web/tests/browser/editor.mjs --raylab "$raylab" --labgen "$labgen" ;;
   browser)
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs

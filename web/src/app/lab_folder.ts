@@ -40,16 +40,21 @@ export async function labFromFiles(files: FileList | File[], stageId: string, st
   const byPath = new Map(list.map((f) => [f.webkitRelativePath || f.name, f]));
   const subfolders = [...new Set([...byPath.keys()].map((p) => p.split('/')).filter((p) => p.length > 2).map((p) => p[1]!))];
   const nested = stageFolder(root, subfolders, stageId, stageIds) === 'nested';
-  const folders = nested ? [stageId, ...earlier.filter((id) => subfolders.includes(id))].map((id) => `${root}/${id}/`) : [`${root}/`];
+  const folders = nested ? [stageId, ...earlier.filter((id) => subfolders.includes(id))] : [''];
   const texts = new Map<string, string>();
-  for (const prefix of folders)
+  const owners = new Map<string, string>();
+  for (const id of folders) {
+    const prefix = id ? `${root}/${id}/` : `${root}/`;
     for (const [path, file] of byPath) {
       if (!path.startsWith(prefix)) continue;
       const name = path.slice(prefix.length);
-      if (!name.includes('/') && SHADER.test(name) && !texts.has(name)) texts.set(name, await file.text());
+      if (name.includes('/') || !SHADER.test(name) || texts.has(name)) continue;
+      texts.set(name, await file.text());
+      if (id && id !== stageId) owners.set(name, id);
     }
+  }
   if (texts.size === 0) throw noShaders(root, stageId);
-  return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: texts };
+  return { kind: 'disk', shown: nested ? `${root}/${stageId}` : root, files: texts, owners };
 }
 
 // What a submission holds (submission_zip.ts): each stage folder of a
@@ -168,27 +173,28 @@ export class WatchedLab {
 
   // The stage's shader files; in a labs/ folder also the earlier stages'
   // (EARLIER, newest first) its own folder lacks.
-  private async shaderFiles(stageId: string, earlier: string[] = []): Promise<{ shown: string; files: [string, File][] }> {
+  private async shaderFiles(stageId: string, earlier: string[] = []):
+    Promise<{ shown: string; files: [string, File][]; owners: Map<string, string> }> {
     const { dir, shown } = await this.folder(stageId);
-    const dirs = [dir];
+    const dirs: [string, FileSystemDirectoryHandle][] = [[stageId, dir]];
     if (dir !== this.root)
       for (const id of earlier) {
         try {
-          dirs.push(await this.root.getDirectoryHandle(id));
+          dirs.push([id, await this.root.getDirectoryHandle(id)]);
         } catch {
           // not there: the stage's own folder may hold the file
         }
       }
     const files: [string, File][] = [];
-    const seen = new Set<string>();
-    for (const d of dirs)
+    const owners = new Map<string, string>();
+    for (const [id, d] of dirs)
       for await (const [name, handle] of (d as unknown as AsyncIterable<[string, FileSystemHandle]>))
-        if (handle.kind === 'file' && SHADER.test(name) && !seen.has(name)) {
-          seen.add(name);
+        if (handle.kind === 'file' && SHADER.test(name) && !files.some(([n]) => n === name)) {
           files.push([name, await (handle as FileSystemFileHandle).getFile()]);
+          if (id !== stageId) owners.set(name, id);
         }
     files.sort(([a], [b]) => (a < b ? -1 : 1));
-    return { shown, files };
+    return { shown, files, owners };
   }
 
   // The folder's files for a submission (submissionEntries).
@@ -205,13 +211,13 @@ export class WatchedLab {
   }
 
   async read(stageId: string, earlier: string[] = []): Promise<Sources> {
-    const { shown, files } = await this.shaderFiles(stageId, earlier);
+    const { shown, files, owners } = await this.shaderFiles(stageId, earlier);
     if (files.length === 0) throw noShaders(this.root.name, stageId);
     this.stamps = files.map(([n, f]) => `${n}:${f.lastModified}:${f.size}`).join('|');
     this.readStage = stageId;
     const texts = new Map<string, string>();
     for (const [name, file] of files) texts.set(name, await file.text());
-    return { kind: 'disk', shown, files: texts };
+    return { kind: 'disk', shown, files: texts, owners };
   }
 
   // True when a shader file of STAGEID was added, removed or saved since

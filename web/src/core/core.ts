@@ -254,7 +254,13 @@ export function labForCore(core: Core, stageId: string, sources: Sources): strin
   if (sources.kind !== 'disk') return '';
   const suffix = `/${stageId}`;
   const root = sources.shown.endsWith(suffix) ? sources.shown.slice(0, -suffix.length) : '.';
-  return writeStudentLab(core, root, new Map([[stageId, sources.files]]));
+  const folders = new Map<string, Map<string, string>>([[stageId, new Map()]]);
+  for (const [name, text] of sources.files) {
+    const owner = sources.owners?.get(name) ?? stageId;
+    if (!folders.has(owner)) folders.set(owner, new Map());
+    folders.get(owner)!.set(name, text);
+  }
+  return writeStudentLab(core, root, folders);
 }
 
 // A core path (/raylab/assets/scenes/../textures/earth.png) as a URL the page fetches.

@@ -92,4 +92,7 @@ export function chain(catalog: Catalog, stage: StageJson): StageJson[] {
 export type Sources =
   | { kind: 'solution' }
   | { kind: 'lab' }
-  | { kind: 'disk'; shown: string; files: Map<string, string> };
+  | { kind: 'disk'; shown: string; files: Map<string, string>; owners?: Map<string, string> };
+// (OWNERS: the earlier stage whose folder a file of FILES was read from, for
+// those not in the stage's own folder: the core reads it from there, and its
+// messages name it there, as natively.)

@@ -117,12 +117,14 @@ export class MyWork {
     return this.handout(file.owner, file.name);
   }
 
-  // What the core draws and checks: the files of files(), as one folder
-  // (my-work/<stage>), the way labFromFiles gives a lab folder from disk.
+  // What the core draws and checks: the files of files() in their stages'
+  // folders (my-work/<stage>), the way labFromFiles gives a lab folder from disk.
   sources(stageId: string, earlier: string[]): Sources {
-    const files = new Map(this.files(stageId, earlier).map((f) => [f.name, this.text(f)]));
+    const kept = this.files(stageId, earlier);
+    const files = new Map(kept.map((f) => [f.name, this.text(f)]));
     if (files.size === 0) throw new Error(`the page keeps no files of ${stageId}`);
-    return { kind: 'disk', shown: `${WORK_FOLDER}/${stageId}`, files };
+    const owners = new Map(kept.filter((f) => f.owner !== stageId).map((f) => [f.name, f.owner]));
+    return { kind: 'disk', shown: `${WORK_FOLDER}/${stageId}`, files, owners };
   }
 
   // Every stage folder the page keeps, as submission_zip.ts zips it.

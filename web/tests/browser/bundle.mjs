@@ -16,7 +16,7 @@
 //     (passes), with no failed request.
 // Usage: node tests/browser/bundle.mjs [--raylab PATH] [--only TEXT]
 import { execFileSync, spawn } from 'node:child_process';
-import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { appendFileSync, copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, relative, resolve } from 'node:path';
 import { collectProblems, launchBrowser, projectRoot } from './browser.mjs';
@@ -241,7 +241,7 @@ try {
       opts: ['--stages', id.split('-')[0], '--level', i % 2 ? 'open' : 'guided', '--carry', i % 4 < 2 ? 'own' : 'solved'],
       stages: [id],
     })),
-    { name: '03-04-guided-own', opts: ['--stages', '03-04'], stages: ['03-shadows', '04-recursion'] },
+    { name: '03-04-guided-own', opts: ['--stages', '03-04'], stages: ['03-shadows', '04-recursion'], earlierSlip: '01-raycast/intersect_sphere.glsl' },
     { name: 'f1-f2-open-own', opts: ['--stages', 'f1-f2', '--level', 'open'], stages: ['f1-mesh', 'f2-shells'] },
   ];
   browser = await launchBrowser();
@@ -261,12 +261,23 @@ try {
     const handedOut = await pressCheck(page);
     check(new RegExp(`^raylab check: stage ${stage}, lab labs/ against the reference pictures`, 'm').test(handedOut) && /\d+ passed, [1-9]\d* failed/.test(handedOut),
       `${set.name}: Check on ${stage} as handed out: ${handedOut.match(/\d+ passed, \d+ failed/)?.[0] ?? handedOut.split('\n')[0]}`);
+    const folder = solvedFolder(b.out, set.name);
     const [chooser] = await Promise.all([page.waitForFileChooser(), choose(page, 'source', 'disk')]);
-    await chooser.accept([solvedFolder(b.out, set.name)]);
+    await chooser.accept([folder]);
     await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 300_000 });
     const solved = await pressCheck(page);
     check(/ 0 failed/.test(solved), `${set.name}: Check on ${stage} solved: ${solved.match(/\d+ passed, \d+ failed/)?.[0] ?? solved.split('\n').slice(0, 3).join(' / ')}` +
       solved.split('\n').filter((l) => /^ {2}FAIL|^ {7}/.test(l)).slice(0, 4).map((l) => `\n    ${l.trim()}`).join(''));
+    if (set.earlierSlip) {
+      // A slip in an earlier stage's folder: named there, as natively, not in the stage's own.
+      const file = set.earlierSlip;
+      appendFileSync(join(folder, file), '\n#error a slip in an earlier stage\n');
+      const [again] = await Promise.all([page.waitForFileChooser(), page.click('#reload')]);
+      await again.accept([folder]);
+      const named = await page.waitForFunction(() => /slip in an earlier stage/.test(document.getElementById('messages').textContent), { timeout: 300_000 })
+        .then(() => page.$eval('#messages', (m) => m.textContent));
+      check(named.includes(`labs/${file}:`), `${set.name}: a slip in ${file} is named there: ${named.split('\n').find((l) => /slip/.test(l))?.trim()}`);
+    }
     check(problems.length === 0, `${set.name}: no console errors, page errors or failed requests${problems.length ? `: ${problems.join('; ')}` : ''}`);
     await page.close();
   }

@@ -1,5 +1,6 @@
 // The double-precision references behind the function checks agree with
 // values worked out by hand, and the tables hold the hard cases they promise.
+#include "check_report.h"
 #include "function_harness.h"
 #include "reference_shading.h"
 
@@ -231,4 +232,22 @@ TEST(FunctionCases, ShadingComparisonsNameTheInputAndBothAnswers) {
         blinn.compare(behind, glm::dvec4(0.7, 0.5, 0.3, 1), blinn.reference(behind));
     EXPECT_NE(b.find("expected (0.1, 0.05, 0.02), got (0.7, 0.5, 0.3)"), std::string::npos) << b;
     EXPECT_NE(b.find("shininess 4"), std::string::npos) << b;
+}
+
+// A failing check whose harness runs the file of a function that failed
+// above says so; a file the two share as their own does not count.
+TEST(FunctionCases, AFailingCheckNamesTheFailedFileItRuns) {
+    const std::string findClosest =
+        formatReadsFailedNote(spec("findClosest"), {&spec("intersectSphere")});
+    EXPECT_NE(findClosest.find("runs your intersect_sphere.glsl, where intersectSphere failed"),
+              std::string::npos)
+        << findClosest;
+    // trace's stand-ins include fresnel.glsl (refractGlass, the Fresnel terms).
+    EXPECT_NE(formatReadsFailedNote(spec("trace"), {&spec("refractGlass")}).find("fresnel.glsl"),
+              std::string::npos);
+    // fresnelConductor lives beside fresnelDielectric: no note.
+    EXPECT_EQ(formatReadsFailedNote(spec("fresnelConductor"), {&spec("fresnelDielectric")}), "");
+    // intersectSphere does not run find_closest.glsl; nothing failed above.
+    EXPECT_EQ(formatReadsFailedNote(spec("intersectSphere"), {&spec("findClosest")}), "");
+    EXPECT_EQ(formatReadsFailedNote(spec("findClosest"), {}), "");
 }

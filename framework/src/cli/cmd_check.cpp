@@ -94,6 +94,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     const auto functions = functionSpecsFor(stage);
     if (!functions.empty()) std::fputs(formatFunctionsHeading().c_str(), stdout);
     std::vector<std::string> failedFunctions;
+    std::vector<const FunctionSpec*> failedSpecs;
     // The grader's points for these checks: the check views, then the
     // function and count checks (stage_grading.h, stage_score.h).
     std::vector<std::string> viewWeights, otherNames;
@@ -107,7 +108,11 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         bool ok = f.passed == f.total;
         (ok ? passed : failed) += 1;
         std::fputs(formatFunctionLine(f, !failedFunctions.empty()).c_str(), stdout);
-        if (!ok) failedFunctions.push_back(f.name);
+        if (!ok) {
+            std::fputs(formatReadsFailedNote(*spec, failedSpecs).c_str(), stdout);
+            failedFunctions.push_back(f.name);
+            failedSpecs.push_back(spec);
+        }
         credits.push_back({false, points[stage.checkViews.size() + credits.size()],
                            wrongShare(f.passed, f.total)});
     }

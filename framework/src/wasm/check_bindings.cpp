@@ -265,10 +265,17 @@ public:
     std::string report() const {
         std::string out = formatOpenTodos(todos_) + header_ + "\n";
         std::vector<std::string> failedFunctions;
+        std::vector<FunctionSpec> failedSpecs;  // with their harness GLSL, from the tables
         if (!functions_.empty()) out += formatFunctionsHeading();
         for (const FunctionOutcome& f : functions_) {
             out += formatFunctionLine(f, !failedFunctions.empty());
-            if (f.passed != f.total) failedFunctions.push_back(f.name);
+            if (f.passed == f.total) continue;
+            const FunctionSpec spec = withHarnessFrom(tables(), functionSpec(f.name), tablesFile());
+            std::vector<const FunctionSpec*> above;
+            for (const FunctionSpec& s : failedSpecs) above.push_back(&s);
+            out += formatReadsFailedNote(spec, above);
+            failedFunctions.push_back(f.name);
+            failedSpecs.push_back(spec);
         }
         out += formatViewsHeading();
         for (const ViewOutcome& v : views_)

@@ -221,6 +221,8 @@ export class Page {
     const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}`;
     this.work.show(codeKind === 'work');
     $('import').hidden = codeKind !== 'disk';  // a folder from disk can be kept in the page
+    // Another stage, scene or code: the last check's pictures were of something else.
+    if (!reload) $('check-views').replaceChildren();
     // What is on screen already is not built again (a demo button for the
     // scene shown, the same choice twice): it starts afresh instead.
     if (!reload && !this.busy && this.renderer && !['disk', 'work'].includes(codeKind) && label === this.shownLabel) {
@@ -376,7 +378,7 @@ export class Page {
   private async downloadSubmission(): Promise<void> {
     try {
       const entries = $<HTMLSelectElement>('source').value === 'work' ? await this.work.submission() : await this.folderSubmission();
-      if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…): the submission is made from it');
+      if (!entries) throw new Error('the submission is made from your files: choose Code: my work (in this page), or my lab folder…');
       this.showMessage(downloadZip(entries));
     } catch (e) {
       this.showError((e as Error).message, true);

@@ -6,7 +6,7 @@
 // for the picture at once; every other edit is reported as it happens.
 import {
   bracketMatching, cpp, defaultHighlightStyle, defaultKeymap, drawSelection, EditorState, EditorView, highlightActiveLine,
-  highlightActiveLineGutter, history, historyKeymap, indentOnInput, keymap, lineNumbers, lintGutter, lintKeymap,
+  highlightActiveLineGutter, history, historyKeymap, indentOnInput, indentUnit, keymap, lineNumbers, lintGutter, lintKeymap,
   setDiagnostics, syntaxHighlighting, type Diagnostic, type Extension, type Text,
 } from '../vendor/codemirror.js';
 import type { LineNote } from './diagnostics.js';
@@ -34,6 +34,8 @@ export class CodeEditor {
     this.extensions = [
       lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), indentOnInput(), bracketMatching(),
       highlightActiveLine(), syntaxHighlighting(defaultHighlightStyle, { fallback: true }), cpp(), lintGutter(),
+      // The labs indent by four spaces; long comments wrap (a phone shows about 35 characters).
+      indentUnit.of('    '), EditorView.lineWrapping,
       keymap.of([{ key: 'Mod-s', run: () => { onSave(); return true; } }, ...defaultKeymap, ...historyKeymap, ...lintKeymap]),
       EditorView.contentAttributes.of({ 'aria-label': 'shader code' }),
       EditorView.updateListener.of((u) => {
@@ -61,9 +63,10 @@ export class CodeEditor {
       b.onclick = () => this.show(f);
       return b;
     }));
-    const again = this.current && files.find((f) => key(f) === key(this.current!));
+    // The file shown stays if it is the stage's own (another stage opens on its own first file).
+    const again = this.current && this.current.owner === stageId && files.find((f) => key(f) === key(this.current!));
     this.current = null;
-    if (files.length) this.show(again ?? files[0]!);
+    if (files.length) this.show(again || files[0]!);
   }
 
   private keepCurrent(): void {

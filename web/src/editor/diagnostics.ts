@@ -2,8 +2,8 @@
 // renderer's todos, as the messages list them) and compile errors (the
 // messages' "my-work/01-raycast/intersect_sphere.glsl:18: error: ..." lines:
 // the core maps the driver's log to the student's file and line, natively's
-// mapCompilerLog). Files are matched by name: the page draws a stage from
-// one folder (my_work.ts, sources), so a name is a file.
+// mapCompilerLog). Files are matched by name: a stage reads one file of each
+// name (its own folder's, else the newest earlier stage's), so a name is a file.
 import type { OpenTodo } from '../core/core.js';
 
 export interface LineNote {

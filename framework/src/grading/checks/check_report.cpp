@@ -65,6 +65,37 @@ std::string formatFunctionLine(const FunctionOutcome& f, bool earlierFailed) {
            (f.cause.empty() || earlierFailed ? "" : "       hint: " + f.cause + "\n");
 }
 
+namespace {
+
+// The files SPEC's harness includes by name: its includes and the #include
+// lines of its prelude and helpers.
+std::set<std::string> harnessFiles(const FunctionSpec& spec) {
+    std::set<std::string> files(spec.includes.begin(), spec.includes.end());
+    for (const std::string* glsl : {&spec.prelude, &spec.helpers})
+        for (std::size_t at = glsl->find("#include \""); at != std::string::npos;
+             at = glsl->find("#include \"", at + 1)) {
+            const std::size_t from = at + 10, to = glsl->find('"', from);
+            if (to != std::string::npos) files.insert(glsl->substr(from, to - from));
+        }
+    return files;
+}
+
+}  // namespace
+
+std::string formatReadsFailedNote(const FunctionSpec& spec,
+                                  const std::vector<const FunctionSpec*>& failedAbove) {
+    const std::set<std::string> reads = harnessFiles(spec);
+    const std::string own = spec.includes.empty() ? "" : spec.includes.back();
+    for (const FunctionSpec* earlier : failedAbove) {
+        if (earlier->includes.empty()) continue;
+        const std::string& file = earlier->includes.back();  // where the earlier function lives
+        if (file != own && reads.count(file))
+            return "       note: this check also runs your " + file + ", where " + earlier->name +
+                   " failed above: fix that first, then check again\n";
+    }
+    return "";
+}
+
 std::string formatViewsHeading() {
     const CompareTolerance tolerance;
     return format("  a view passes when at most %.1f%% of its pixels differ by more than %d/255 "

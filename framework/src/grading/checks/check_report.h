@@ -59,6 +59,15 @@ std::string formatFunctionsHeading();  // before the first function check
 // refractGlass), so their pattern may be the earlier function's slip.
 // EARLIERFAILED: a function check printed before this one failed.
 std::string formatFunctionLine(const FunctionOutcome& f, bool earlierFailed = false);
+// Under a failing function check whose harness reads the file of a function
+// that failed above (findClosest's reads intersect_sphere.glsl): a note that
+// says so, since that slip can be all this check sees ("one sphere ahead"
+// failing when only intersectSphere returns the far root). Empty otherwise,
+// and for a file that is the check's own (fresnelConductor shares
+// fresnel.glsl with fresnelDielectric without calling it). SPEC: the failing
+// check's, with its harness GLSL; FAILEDABOVE: the failed checks' specs.
+std::string formatReadsFailedNote(const FunctionSpec& spec,
+                                  const std::vector<const FunctionSpec*>& failedAbove);
 std::string formatViewsHeading();  // the tolerance, before the first view
 // FAILEDFUNCTIONS: the function checks that failed above (a note points at
 // the first when the view has no hint); OPENTODOS: the lab's open TODOs.

@@ -96,39 +96,54 @@ std::string worldsGlsl() {
 
 // ---- the stand-ins, in GLSL and in double ---------------------------------
 
-const char* kPrelude =
-    "#include \"ray.glsl\"\n"
-    "#include \"scene_materials.glsl\"  // Material and MAT_*; the scene's uniforms go unused\n"
-    "// Stand-ins for the scene, set by the case: the spheres findClosest reads\n"
-    "// and each sphere's material.\n"
-    "int gSphereCount;\n"
-    "vec4 gSpheres[MAX_SPHERES];\n"
-    "Material gMaterials[MAX_SPHERES];\n"
-    "#define uSphereCount gSphereCount\n"
-    "#define uSpheres gSpheres\n"
-    "#define materialOfSphere(i) gMaterials[i]\n"
-    "#include \"intersect_sphere.glsl\"\n"
-    "#include \"find_closest.glsl\"\n"
-    "#include \"surface.glsl\"\n"
-    "Surface surfaceAt(Ray ray, Hit hit)  // as the lab's surface_at.glsl\n"
-    "{\n"
-    "    vec4 s = gSpheres[hit.id];\n"
-    "    vec3 outward = normalize(ray.origin + hit.t * ray.dir - s.xyz);\n"
-    "    return Surface(s.xyz + s.w * outward, outward, gMaterials[hit.id], vec2(0.0), "
-    "vec3(0.0));\n"
-    "}\n"
-    "// Stand-ins for the shading (not the lab's formulas): colours that depend\n"
-    "// on the normal, the view and the direction.\n"
-    "vec3 skyColor(vec3 dir)\n"
-    "{\n"
-    "    return vec3(0.35, 0.5, 0.75) + 0.25 * dir;\n"
-    "}\n"
-    "vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)\n"
-    "{\n"
-    "    return m.ambient + m.diffuse * (0.25 + 0.75 * max(dot(normal, toEye), 0.0)) +\n"
-    "           0.1 * m.specular * (0.5 + 0.5 * normal.y);\n"
-    "}\n"
-    "#include \"fresnel.glsl\"\n";
+// The most spheres a world has: the size of the stand-in materials. (A
+// Material array of MAX_SPHERES tripled the harness's compile time in the
+// page: WebGL zero-fills every global and the driver reads an array at a
+// run-time index by choosing among all its entries. The spheres keep
+// MAX_SPHERES, which a lab's loop may run to; a material is read only for a
+// hit, whose index is below the world's count.)
+[[maybe_unused]] std::size_t mostWorldSpheres() {
+    std::size_t most = 0;
+    for (const World& w : worlds()) most = std::max(most, w.spheres.size());
+    return most;
+}
+
+[[maybe_unused]] std::string prelude() {
+    return "#include \"ray.glsl\"\n"
+           "#include \"scene_materials.glsl\"  // Material and MAT_*; the scene's uniforms go "
+           "unused\n"
+           "// Stand-ins for the scene, set by the case: the spheres findClosest reads\n"
+           "// and each sphere's material.\n"
+           "int gSphereCount;\n"
+           "vec4 gSpheres[MAX_SPHERES];\n"
+           "Material gMaterials[" +
+           std::to_string(mostWorldSpheres()) + "];\n" +
+           "#define uSphereCount gSphereCount\n"
+           "#define uSpheres gSpheres\n"
+           "#define materialOfSphere(i) gMaterials[i]\n"
+           "#include \"intersect_sphere.glsl\"\n"
+           "#include \"find_closest.glsl\"\n"
+           "#include \"surface.glsl\"\n"
+           "Surface surfaceAt(Ray ray, Hit hit)  // as the lab's surface_at.glsl\n"
+           "{\n"
+           "    vec4 s = gSpheres[hit.id];\n"
+           "    vec3 outward = normalize(ray.origin + hit.t * ray.dir - s.xyz);\n"
+           "    return Surface(s.xyz + s.w * outward, outward, gMaterials[hit.id], vec2(0.0), "
+           "vec3(0.0));\n"
+           "}\n"
+           "// Stand-ins for the shading (not the lab's formulas): colours that depend\n"
+           "// on the normal, the view and the direction.\n"
+           "vec3 skyColor(vec3 dir)\n"
+           "{\n"
+           "    return vec3(0.35, 0.5, 0.75) + 0.25 * dir;\n"
+           "}\n"
+           "vec3 blinnPhong(vec3 point, vec3 normal, vec3 toEye, Material m)\n"
+           "{\n"
+           "    return m.ambient + m.diffuse * (0.25 + 0.75 * max(dot(normal, toEye), 0.0)) +\n"
+           "           0.1 * m.specular * (0.5 + 0.5 * normal.y);\n"
+           "}\n"
+           "#include \"fresnel.glsl\"\n";
+}
 
 [[maybe_unused]] dvec3 skyStandIn(const dvec3& dir) { return dvec3(0.35, 0.5, 0.75) + 0.25 * dir; }
 
@@ -253,7 +268,7 @@ std::vector<FunctionDiagnosis> traceDiagnoses() {
 FunctionSpec traceSpec() {
     FunctionSpec s;
     s.name = "trace";
-    s.prelude = RAYLAB_HARNESS_GLSL(kPrelude);
+    s.prelude = RAYLAB_HARNESS_GLSL(prelude());
     s.includes = {"trace.glsl"};
     s.helpers = RAYLAB_HARNESS_GLSL(
         "vec3 gOffset;\n"

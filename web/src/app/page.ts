@@ -216,6 +216,7 @@ export class Page {
   async load(reload = false): Promise<void> {
     const stage = this.stage();
     $('title').textContent = `${stage.id}: ${stage.title}`;
+    $<HTMLAnchorElement>('guide-link').href = `guide.html?stage=${encodeURIComponent(stage.id)}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
     const codeKind = $<HTMLSelectElement>('source').value;
     const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}`;

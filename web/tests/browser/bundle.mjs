@@ -10,10 +10,12 @@
 //     is shown to catch a planted solution file and a planted stand-in;
 //  2. served by a plain static server (python3 -m http.server), a bundle of
 //     every single stage and ranges of both tracks, both levels, both carries
-//     (each holding its stages only, as in 1) open with their stages only, and the page's own Check button (no test hook:
-//     a bundle has none) gives a verdict on the lab as handed out (fails) and
-//     on a solved lab folder picked through the browser's folder input
-//     (passes), with no failed request.
+//     (each holding its stages only, as in 1) open with their stages only,
+//     the Guide link shows the stage's guide rendered with its pictures, and
+//     the page's own Check button (no test hook: a bundle has none) gives a
+//     verdict on the lab as handed out (fails) and on a solved lab folder
+//     picked through the browser's folder input (passes), with no failed
+//     request.
 // Usage: node tests/browser/bundle.mjs [--raylab PATH] [--only TEXT]
 import { execFileSync, spawn } from 'node:child_process';
 import { appendFileSync, copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -257,6 +259,20 @@ try {
     check(JSON.stringify(offered) === JSON.stringify(set.stages), `${set.name}: the page offers ${offered.join(', ')}`);
     const stage = set.stages[set.stages.length - 1];
     await choose(page, 'stage', stage);
+    // The stage's guide, from the page's Guide link: rendered, its pictures loaded, the page's words first.
+    const guideUrl = await page.$eval('#guide-link', (a) => a.href);
+    const guide = await browser.newPage();
+    const guideProblems = collectProblems(guide);
+    await guide.goto(guideUrl, { waitUntil: 'networkidle0' });
+    const shown = await guide.evaluate(() => ({
+      heading: document.querySelector('#guide h1')?.textContent ?? '',
+      pictures: [...document.images].map((i) => i.naturalWidth > 0),
+      note: document.getElementById('in-the-page').textContent,
+    }));
+    check(/^Lab \S+ - /.test(shown.heading) && shown.pictures.length >= 2 && shown.pictures.every(Boolean) &&
+      /Check is raylab check/.test(shown.note.replace(/\s+/g, ' ')) && guideProblems.length === 0,
+      `${set.name}: the Guide link shows "${shown.heading}" with ${shown.pictures.filter(Boolean).length}/${shown.pictures.length} pictures${guideProblems.length ? `; ${guideProblems.join('; ')}` : ''}`);
+    await guide.close();
     await choose(page, 'source', 'lab');
     const handedOut = await pressCheck(page);
     check(new RegExp(`^raylab check: stage ${stage}, lab labs/ against the reference pictures`, 'm').test(handedOut) && /\d+ passed, [1-9]\d* failed/.test(handedOut),

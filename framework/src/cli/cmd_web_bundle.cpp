@@ -154,7 +154,8 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
             for (const StageInfo* s : earlier) fs::rename(before / s->id, temp / "labs" / s->id);
             fs::remove_all(before);
         }
-        for (const char* file : {"web/index.html", "web/page.css", "web/guide.html", "web/guide.css"})
+        for (const char* file :
+             {"web/index.html", "web/page.css", "web/guide.html", "web/guide.css"})
             copyTree(root / file, temp / file);
         writeTextFileAtomic(temp / "web" / "function_tables.json", releasedFunctionTables(plan));
         for (const char* dir :

@@ -46,9 +46,7 @@ const FunctionTables& tables() {
 }
 
 std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) {
-    const auto it = tables().find(spec.name);
-    if (it == tables().end()) throw Error(tablesFile() + " has no table for " + spec.name);
-    return it->second.wants;
+    return tableOf(tables(), spec.name, tablesFile()).wants;
 }
 
 // What a harness wrote (RGBA floats, one pixel per case), one vec4 per case.

@@ -6,8 +6,9 @@
 import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
-import { canWatchFolders, changedOnDiskMessage, PickedFolder, WatchedLab } from './lab_folder.js';
-import { downloadZip, type ZipEntry } from './submission_zip.js';
+import { DiskFolder } from './disk_folder.js';
+import type { WatchedLab } from './lab_folder.js';
+import { downloadZip } from './submission_zip.js';
 import { WorkPanel } from '../editor/work_panel.js';
 import { type Catalog, type Sources, type StageJson, chain, stageById } from '../course/catalog.js';
 import { defaultSettings, type RenderSettings } from '../raytrace/render_settings.js';
@@ -31,8 +32,6 @@ export class Page {
   private last = 0;
   private held = new Set<string>();
   private note = '';
-  private watched: WatchedLab | null = null;  // a folder the page watches (Chrome, Edge)
-  private picked: PickedFolder | null = null;  // a snapshot of a folder (other browsers)
   private loading = 0;
   private demo = false;
   private sceneShells = 0;
@@ -50,6 +49,7 @@ export class Page {
 
   private checks: CheckPanel;
   private work: WorkPanel;
+  private disk: DiskFolder;  // Code: my lab folder…
   // Said above the first stage's messages where there is no solution (a
   // students' page): where to start.
   private startHere = '';
@@ -57,6 +57,15 @@ export class Page {
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {
     this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'), $('check'));
     this.work = new WorkPanel(catalog, () => void this.load(true), (m) => this.showError(m, true));
+    this.disk = new DiskFolder(this.stageIds(), {
+      opened: (again) => {
+        again &&= this.sourceShown === 'disk';
+        $<HTMLSelectElement>('source').value = this.sourceShown = 'disk';
+        void this.load(again);
+      },
+      cancelled: () => { $<HTMLSelectElement>('source').value = this.sourceShown; },
+      failed: (message) => this.showError(message, true),
+    });
   }
 
   start(): void {
@@ -89,36 +98,7 @@ export class Page {
         this.sourceShown = (e.target as HTMLSelectElement).value;
         return void this.load();
       }
-      if (!canWatchFolders) return $<HTMLInputElement>('folder').click();
-      WatchedLab.pick(this.stageIds()).then((lab) => {
-        this.watched = lab;
-        this.sourceShown = 'disk';
-        void this.load();
-      }, (err: Error) => {
-        // Cancelled or refused: back to what was shown.
-        if (err.name !== 'AbortError') this.showError(err.message, true);
-        $<HTMLSelectElement>('source').value = this.sourceShown;
-      });
-    };
-    $<HTMLInputElement>('folder').onchange = (e) => {
-      const files = (e.target as HTMLInputElement).files;
-      if (!files || files.length === 0) return;
-      // The same folder again ("Reload my files"): a reload, as after a save.
-      const again = this.sourceShown === 'disk' && this.picked !== null;
-      PickedFolder.read(files).then((picked) => {
-        this.picked = picked;
-        this.sourceShown = 'disk';
-        void this.load(again);
-      }, (err: Error) => this.showError(err.message, true));
-    };
-    $<HTMLInputElement>('folder').addEventListener('cancel', () => {
-      $<HTMLSelectElement>('source').value = this.sourceShown;
-    });
-    // Browsers without folder watching: read the folder again after an edit.
-    // (Emptied first: picking the same folder again must count as a change.)
-    $('reload').onclick = () => {
-      $<HTMLInputElement>('folder').value = '';
-      $<HTMLInputElement>('folder').click();
+      this.disk.pick();
     };
     // A watched folder: a saved file reloads the stage (as the native window does).
     setInterval(() => void this.reloadIfChanged(), 1000);
@@ -184,26 +164,17 @@ export class Page {
     const kind = $<HTMLSelectElement>('source').value;
     if (kind === 'work') return this.work.sources(this.stage().id, this.earlierStages(this.stage()));
     if (kind !== 'disk') return { kind: kind === 'lab' ? 'lab' : 'solution' };
-    if (this.watched) return this.watched.read(this.stage().id, this.earlierStages(this.stage()));
-    if (this.picked) return (await this.freshPicked()).lab(this.stage().id, this.stageIds(), this.earlierStages(this.stage()));
-    throw new Error('pick your lab folder (Code: my lab folder…)');
+    return this.disk.sources(this.stage().id, this.earlierStages(this.stage()));
   }
 
   private checking = false;
   private async reloadIfChanged(): Promise<void> {
-    if (!this.watched || this.checking || this.busy || $<HTMLSelectElement>('source').value !== 'disk') return;
+    if (!this.disk.watching || this.checking || this.busy || $<HTMLSelectElement>('source').value !== 'disk') return;
     this.checking = true;
     try {
       const stage = this.shown ?? this.stage();
-      if (await this.watched.changed(stage.id, this.earlierStages(stage))) await this.load(true);
-    } catch (e) {
-      // The folder went away or permission was withdrawn: stop watching it.
-      // Anything else (a file caught mid-save) is tried again next second.
-      const name = (e as Error).name;
-      if (name === 'NotFoundError' || name === 'NotAllowedError' || name === 'SecurityError') {
-        this.watched = null;
-        this.showError('Your lab folder can no longer be read: pick it again (Code: my lab folder…).', true);
-      }
+      const lost = () => this.showError('Your lab folder can no longer be read: pick it again (Code: my lab folder…).', true);
+      if (await this.disk.changed(stage.id, this.earlierStages(stage), lost)) await this.load(true);
     } finally {
       this.checking = false;
     }
@@ -251,7 +222,7 @@ export class Page {
       this.shown = stage;
       this.startPose = { pose: loaded.camera, fovYDeg: loaded.fovYDeg };
       if (!reload) this.restart(stage);
-      $('reload').hidden = !(codeKind === 'disk' && !this.watched);
+      $('reload').hidden = !(codeKind === 'disk' && !this.disk.watching);
       this.work.loaded(loaded.renderer.todos, '');
       // One entry per TODO, a blank line between them: titles run over lines.
       const todos = loaded.renderer.todos.map((t) => `• ${t.file}:${t.line}\n  ${t.title}`);
@@ -259,7 +230,7 @@ export class Page {
       const from = codeKind === 'work' ? `Your files: ${sources.kind === 'disk' ? sources.shown : ''}/, kept in this browser: ` +
         'the picture follows your edits (Ctrl+S: at once).'
         : sources.kind === 'disk'
-        ? `Your files: ${sources.shown}/${this.watched ? ' (watched: save a file to reload)' : ' (Reload my files after editing)'}` +
+        ? `Your files: ${sources.shown}/${this.disk.watching ? ' (watched: save a file to reload)' : ' (Reload my files after editing)'}` +
           (reload ? `\nRead again at ${new Date().toLocaleTimeString()}.` : '')
         : '';
       this.showMessage([
@@ -378,7 +349,7 @@ export class Page {
   // The student's lab folder as the zip the graders take (submission_zip.ts).
   private async downloadSubmission(): Promise<void> {
     try {
-      const entries = $<HTMLSelectElement>('source').value === 'work' ? await this.work.submission() : await this.folderSubmission();
+      const entries = $<HTMLSelectElement>('source').value === 'work' ? await this.work.submission() : await this.disk.submission(this.stage().id);
       if (!entries) throw new Error('the submission is made from your files: choose Code: my work (in this page), or my lab folder…');
       this.showMessage(downloadZip(entries));
     } catch (e) {
@@ -388,33 +359,14 @@ export class Page {
 
   // Watches LAB as if picked (the tests: a folder in the browser's private file system).
   watchForTest(lab: WatchedLab): void {
-    this.watched = lab;
-    this.picked = null;
-    this.sourceShown = 'disk';
-    $<HTMLSelectElement>('source').value = 'disk';
-    void this.load();
-  }
-
-  // The lab folder opened from disk as a submission's entries (null: none open).
-  private async folderSubmission(): Promise<ZipEntry[] | null> {
-    const current = this.stage().id;
-    return this.watched ? this.watched.submission(current)
-      : this.picked ? (await this.freshPicked()).submission(current, this.stageIds()) : null;
-  }
-
-  // The picked folder, unless a file of it changed on disk since it was read:
-  // then Check and Download stop with one line (never a stale verdict or zip).
-  private async freshPicked(): Promise<PickedFolder> {
-    const changed = await this.picked!.changedOnDisk();
-    if (changed.length) throw new Error(changedOnDiskMessage(changed));
-    return this.picked!;
+    this.disk.watch(lab);
   }
 
   // The lab folder opened from disk (Code: my lab folder…) kept in the page
   // as the student's work, which the page then shows.
   private async importFolder(): Promise<void> {
     try {
-      const entries = await this.folderSubmission();
+      const entries = await this.disk.submission(this.stage().id);
       if (!entries) throw new Error('pick your lab folder first (Code: my lab folder…)');
       if (!await this.work.import(entries, 'your folder')) return;
       $<HTMLSelectElement>('source').value = this.sourceShown = 'work';

@@ -41,16 +41,24 @@ export interface StageJson {
   count_checks?: string[];     // fin_count: a number the GPU produced against the CPU's
 }
 
+// A stage as the catalog lists it: its stage.json and the shader files its
+// solution and lab folders hold.
+export interface CatalogStage {
+  info: StageJson;
+  solutionFiles: string[];
+  labFiles: string[];
+}
+
 export interface Catalog {
   // False where the server keeps the solutions back (tools/serve.mjs without
   // --with-solutions): the page offers the labs only.
   solutions: boolean;
   // A students' bundle (`raylab web-bundle`): no test API, the work kept in the browser.
   bundle?: boolean;
-  stages: { info: StageJson; solutionFiles: string[]; labFiles: string[] }[];
+  stages: CatalogStage[];
   // A bundle's stages that those it releases build on and it does not
   // release: read for builds_on and their folders, not offered in the menu.
-  earlier?: { info: StageJson; solutionFiles: string[]; labFiles: string[] }[];
+  earlier?: CatalogStage[];
   framework: string[];
   web: string[];
   variants: Record<string, string[]>;

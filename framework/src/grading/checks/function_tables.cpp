@@ -121,25 +121,29 @@ FunctionTables parseFunctionTables(const std::string& text, const std::string& f
                                  numberFrom(c["want"][2], at), numberFrom(c["want"][3], at));
         }
     }
-    for (const auto& [name, entry] : doc["functions"].items()) {
-        (void)entry;
-        if (!tables.count(name))
-            throw Error(file + ": " + name +
+    for (const auto& item : doc["functions"].items())
+        if (!tables.count(item.key()))
+            throw Error(file + ": " + item.key() +
                         ": no such function check (write the file again: raylab "
                         "function-tables)");
-    }
     return tables;
+}
+
+const FunctionTable& tableOf(const FunctionTables& tables, const std::string& name,
+                             const std::string& file) {
+    const auto it = tables.find(name);
+    if (it == tables.end())
+        throw Error(file + " has no table for " + name +
+                    " (a bundle holds its released stages' checks only)");
+    return it->second;
 }
 
 FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
                              const std::string& file) {
-    const auto it = tables.find(spec.name);
-    if (it == tables.end())
-        throw Error(file + " has no table for " + spec.name +
-                    " (a bundle holds its released stages' checks only)");
+    const FunctionTable& table = tableOf(tables, spec.name, file);
     FunctionSpec out = spec;
-    out.prelude = it->second.prelude;
-    out.helpers = it->second.helpers;
+    out.prelude = table.prelude;
+    out.helpers = table.helpers;
     return out;
 }
 

@@ -36,6 +36,11 @@ enum class TableCoverage { Every, Some };
 FunctionTables parseFunctionTables(const std::string& text, const std::string& file,
                                    TableCoverage coverage = TableCoverage::Every);
 
+// NAME's table in TABLES; throws Error naming FILE when there is none (a
+// bundle without the stage that checks it).
+const FunctionTable& tableOf(const FunctionTables& tables, const std::string& name,
+                             const std::string& file);
+
 // SPEC with its harness GLSL from TABLES (the page's core, where the spec
 // was built without it). Throws Error naming FILE when TABLES has no table
 // for SPEC (a bundle without the stage that checks it).

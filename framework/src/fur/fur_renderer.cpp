@@ -83,6 +83,30 @@ void FurRenderer::setMesh(Mesh mesh) {
         boundsRadius_ = std::max(boundsRadius_, glm::length(p - boundsCentre_));
     adjacency_ = stage_.has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
     buffers_ = std::make_unique<MeshBuffers>(mesh_, stage_.has("fins") ? &adjacency_ : nullptr);
+    feedCorners();
+}
+
+void FurRenderer::feedCorners() {
+    // Each input primitive's corners one after the other (position, normal,
+    // uv at locations 0, 1, 2, as the mesh's vertex buffer has them).
+    auto corners = [&](const std::vector<std::uint32_t>& indices) {
+        std::vector<float> out;
+        out.reserve(indices.size() * 8);
+        for (std::uint32_t i : indices) {
+            const glm::vec3 &p = mesh_.positions[i], &n = mesh_.normals[i];
+            const glm::vec2& uv = mesh_.uvs[i];
+            out.insert(out.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y});
+        }
+        return out;
+    };
+    const std::vector<std::pair<int, int>> attributes = {{0, 3}, {1, 3}, {2, 2}};
+    if (finsEmulated_) finsEmulated_->setCorners(corners(adjacency_.indices), attributes);
+    if (strandsEmulated_) strandsEmulated_->setCorners(corners(mesh_.indices), attributes);
+}
+
+void FurRenderer::setGeometryEmulation(bool on) {
+    emulate_ = on;
+    rebuild();
 }
 
 void FurRenderer::rebuild() {
@@ -108,14 +132,27 @@ void FurRenderer::rebuild() {
         ShaderSource geometry = assemble(p.geometry);
         return std::make_unique<ShaderProgram>(vertex, geometry, fragment);
     };
+    auto emulated = [&](const StageProgram& p) -> std::unique_ptr<EmulatedGeometryPass> {
+        if (!emulate_ || p.geometry.empty()) return nullptr;
+        ShaderSource vertex = assemble(p.vertex);
+        ShaderSource geometry = assemble(p.geometry);
+        return std::make_unique<EmulatedGeometryPass>(vertex, geometry, assemble(p.fragment));
+    };
     // Built into locals first: a failure leaves the previous programs in use.
     auto shells = build(stage_.program);
     auto fins = stage_.has("fins") ? build(namedProgram(stage_, "fins", "fins")) : nullptr;
     auto strands =
         stage_.has("fur_shader") ? build(namedProgram(stage_, "strands", "fur_shader")) : nullptr;
+    auto finsEmulated = stage_.has("fins") ? emulated(namedProgram(stage_, "fins", "fins")) : nullptr;
+    auto strandsEmulated =
+        stage_.has("fur_shader") ? emulated(namedProgram(stage_, "strands", "fur_shader"))
+                                 : nullptr;
     shells_ = std::move(shells);
     fins_ = std::move(fins);
     strands_ = std::move(strands);
+    finsEmulated_ = std::move(finsEmulated);
+    strandsEmulated_ = std::move(strandsEmulated);
+    if (buffers_) feedCorners();
     files_ = std::move(files);
     todos_ = std::move(todos);
 }
@@ -164,19 +201,31 @@ void FurRenderer::drawSkinAndShells(const Frame& f, int shells) {
 }
 
 void FurRenderer::drawFins(const Frame& f) {
-    setUniforms(*fins_, f);
+    if (finsEmulated_) {
+        setUniforms(finsEmulated_->capture(), f);
+        setUniforms(finsEmulated_->draw(), f);
+    } else {
+        setUniforms(*fins_, f);
+    }
     // Fins are thin quads seen from either side; blended like the shells.
     const GLboolean culling = glIsEnabled(GL_CULL_FACE);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     blendOver();
-    buffers_->drawEdgesWithAdjacency();
+    if (finsEmulated_) finsEmulated_->run();
+    else buffers_->drawEdgesWithAdjacency();
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     if (culling) glEnable(GL_CULL_FACE);
 }
 
 void FurRenderer::drawStrands(const Frame& f) {
+    if (strandsEmulated_) {
+        setUniforms(strandsEmulated_->capture(), f);
+        setUniforms(strandsEmulated_->draw(), f);
+        strandsEmulated_->run();
+        return;
+    }
     setUniforms(*strands_, f);
     buffers_->drawTriangles();
 }
@@ -251,21 +300,40 @@ void FurRenderer::render(const Camera& camera, float timeSeconds, const RenderSe
 long FurRenderer::countFins(const Camera& camera, float timeSeconds,
                             const RenderSettings& settings) {
     if (!fins_) throw Error("stage " + stage_.id + " draws no fins");
-    const Frame f = frameFor(camera, timeSeconds, settings);
+    return countPrimitives(false, frameFor(camera, timeSeconds, settings)) / 2;
+}
+
+long FurRenderer::countStrandSegments(const Camera& camera, float timeSeconds,
+                                      const RenderSettings& settings) {
+    if (!strands_) throw Error("stage " + stage_.id + " draws no strands");
+    return countPrimitives(true, frameFor(camera, timeSeconds, settings));
+}
+
+long FurRenderer::countPrimitives(bool strands, const Frame& f) {
     target_->bind();
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    // Counted, not drawn: the frame in the target stays as it was.
-    glEnable(GL_RASTERIZER_DISCARD);
-    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-    drawFins(f);
-    glEndQuery(GL_PRIMITIVES_GENERATED);
-    glDisable(GL_RASTERIZER_DISCARD);
-    GLuint64 primitives = 0;
-    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
-    glDeleteQueries(1, &query);
+    EmulatedGeometryPass* emulated = strands ? strandsEmulated_.get() : finsEmulated_.get();
+    long primitives = 0;
+    if (emulated) {
+        setUniforms(emulated->capture(), f);
+        setUniforms(emulated->draw(), f);
+        primitives = emulated->run(true);
+    } else {
+        GLuint query = 0;
+        glGenQueries(1, &query);
+        // Counted, not drawn: the frame in the target stays as it was.
+        glEnable(GL_RASTERIZER_DISCARD);
+        glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+        if (strands) drawStrands(f);
+        else drawFins(f);
+        glEndQuery(GL_PRIMITIVES_GENERATED);
+        glDisable(GL_RASTERIZER_DISCARD);
+        GLuint64 generated = 0;
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &generated);
+        glDeleteQueries(1, &query);
+        primitives = long(generated);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return long(primitives / 2);
+    return primitives;
 }
 
 CountResult FurRenderer::countCheck(const std::string& name, const Camera& camera,

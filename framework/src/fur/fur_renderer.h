@@ -9,6 +9,7 @@
 // Which of these a stage draws follows its features (mesh, shells, fins,
 // fur_shader); its programs are stage.json's "program" (skin and shells),
 // "programs.fins" and "programs.strands".
+#include "emulated_geometry_pass.h"
 #include "framebuffer.h"
 #include "fur_scene.h"
 #include "mesh.h"
@@ -64,6 +65,15 @@ public:
     // geometry shader emitted (a GL_PRIMITIVES_GENERATED query: each fin is
     // a strip of two triangles). Needs the "fins" feature.
     long countFins(const Camera& camera, float timeSeconds, const RenderSettings& settings = {});
+    // The line segments the fur shader's strands are made of (same query).
+    long countStrandSegments(const Camera& camera, float timeSeconds,
+                             const RenderSettings& settings = {});
+
+    // Draws fins and strands as the page does, without a geometry shader
+    // (emulated_geometry_pass.h): for the tests that compare the two ways.
+    // Rebuilds the programs.
+    void setGeometryEmulation(bool on);
+    bool emulatesGeometry() const { return emulate_; }
 
     // Bytes of GPU buffers and textures a frame drawn with SETTINGS reads
     // (technique, fins) for this mesh; textures with their mipmaps.
@@ -76,6 +86,8 @@ private:
     void drawSkinAndShells(const Frame& f, int shells);
     void drawFins(const Frame& f);
     void drawStrands(const Frame& f);
+    void feedCorners();
+    long countPrimitives(bool strands, const Frame& f);  // the emulated passes' input primitives, from mesh_
 
     const StageInfo& stage_;
     StageSources sources_;
@@ -85,6 +97,8 @@ private:
     std::unique_ptr<MeshBuffers> buffers_;
     std::unique_ptr<Texture2D> colorMap_, pattern_, finMap_;
     std::unique_ptr<ShaderProgram> shells_, fins_, strands_;
+    std::unique_ptr<EmulatedGeometryPass> finsEmulated_, strandsEmulated_;
+    bool emulate_ = false;
     StrandBudget budget_;
     std::vector<std::filesystem::path> files_;
     std::vector<OpenTodo> todos_;

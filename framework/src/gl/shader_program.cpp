@@ -48,14 +48,19 @@ GLuint compile(GLenum kind, const ShaderSource& source) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment)
-    : ShaderProgram(vertex, nullptr, fragment) {}
+    : ShaderProgram(vertex, nullptr, fragment, {}) {}
+
+ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment,
+                             const std::vector<std::string>& feedback)
+    : ShaderProgram(vertex, nullptr, fragment, feedback) {}
 
 ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
                              const ShaderSource& fragment)
-    : ShaderProgram(vertex, &geometry, fragment) {}
+    : ShaderProgram(vertex, &geometry, fragment, {}) {}
 
 ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geometry,
-                             const ShaderSource& fragment) {
+                             const ShaderSource& fragment,
+                             const std::vector<std::string>& feedback) {
     // Compiled in pipeline order, so the first error reported is the first
     // a reader meets; what compiled is deleted when a later stage fails.
     std::vector<GLuint> shaders;
@@ -69,6 +74,12 @@ ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geo
     }
     id_ = glCreateProgram();
     for (GLuint sh : shaders) glAttachShader(id_, sh);
+    if (!feedback.empty()) {
+        std::vector<const char*> names;
+        for (const std::string& n : feedback) names.push_back(n.c_str());
+        glTransformFeedbackVaryings(id_, GLsizei(names.size()), names.data(),
+                                    GL_INTERLEAVED_ATTRIBS);
+    }
     glLinkProgram(id_);
     for (GLuint sh : shaders) {
         glDetachShader(id_, sh);
@@ -77,7 +88,7 @@ ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geo
     GLint ok = GL_FALSE;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (!ok) {
-        std::string log = mapCompilerLog(infoLog(id_, true), geometry ? *geometry : fragment);
+        std::string log = mapCompilerLog(infoLog(id_, true), geometry ? *geometry : feedback.empty() ? fragment : vertex);
         glDeleteProgram(id_);
         throw ShaderError("link error: " + firstErrorLine(log), log);
     }

@@ -7,6 +7,7 @@
 
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace raylab {
 
@@ -28,6 +29,10 @@ public:
     // With a geometry shader between them.
     ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
                   const ShaderSource& fragment);
+    // Linked for transform feedback of FEEDBACK (output names, interleaved
+    // into one buffer in this order).
+    ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment,
+                  const std::vector<std::string>& feedback);
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
@@ -39,7 +44,7 @@ public:
 
 private:
     ShaderProgram(const ShaderSource& vertex, const ShaderSource* geometry,
-                  const ShaderSource& fragment);
+                  const ShaderSource& fragment, const std::vector<std::string>& feedback);
     GLuint id_ = 0;
     mutable std::unordered_map<std::string, GLint> uniforms_;
 };

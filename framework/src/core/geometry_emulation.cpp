@@ -1,0 +1,462 @@
+#include "geometry_emulation.h"
+
+#include "error.h"
+#include "glsl_scan.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace raylab {
+
+namespace {
+
+// A global `in` or `out` variable.
+struct Varying {
+    std::string type, name;
+    bool array = false;
+    int line = 0;  // assembled line
+};
+
+// A statement at file scope: its tokens [begin, end), `;` or `}` included.
+struct Statement {
+    std::size_t begin = 0, end = 0;
+};
+
+std::vector<Statement> fileScopeStatements(const std::vector<GlslToken>& t) {
+    std::vector<Statement> out;
+    int depth = 0;
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const std::string& s = t[i].text;
+        if (s == "{") ++depth;
+        else if (s == "}" && --depth == 0) out.push_back({begin, i + 1}), begin = i + 1;
+        else if (s == ";" && depth == 0) out.push_back({begin, i + 1}), begin = i + 1;
+    }
+    return out;
+}
+
+const std::set<std::string> kQualifiers = {"flat",   "smooth", "noperspective", "centroid",
+                                           "invariant", "highp", "mediump",  "lowp"};
+
+// The `layout( ... )` group at I, if any: returns the index after it and
+// appends its words to WORDS.
+std::size_t skipLayout(const std::vector<GlslToken>& t, std::size_t i, std::size_t end,
+                       std::vector<std::string>* words = nullptr) {
+    if (i >= end || t[i].text != "layout" || i + 1 >= end || t[i + 1].text != "(") return i;
+    std::size_t j = i + 2;
+    for (; j < end && t[j].text != ")"; ++j)
+        if (words) words->push_back(t[j].text);
+    return j + 1;
+}
+
+// Parses statement S as `[layout(...)] qualifiers STORAGE type name[, name];`.
+// Returns false where it is something else.
+bool parseVaryings(const std::vector<GlslToken>& t, const Statement& s, const std::string& storage,
+                   std::vector<Varying>& out, const ShaderSource& source) {
+    std::size_t i = skipLayout(t, s.begin, s.end);
+    bool hasStorage = false;
+    while (i < s.end && (kQualifiers.count(t[i].text) || t[i].text == storage)) {
+        hasStorage = hasStorage || t[i].text == storage;
+        ++i;
+    }
+    if (!hasStorage || i + 1 >= s.end || t[i].text == ";") return false;
+    const GlslToken& type = t[i++];
+    if (t[i].text == "{") {
+        const SourceLine w = source.where(type.line);
+        throw Error(w.file + ":" + std::to_string(w.line) + ": an interface block (" + type.text +
+                    " { ... }) cannot be passed between the page's emulated shader stages; "
+                    "declare its members one by one");
+    }
+    while (i < s.end) {
+        Varying v{type.text, t[i].text, false, t[i].line};
+        ++i;
+        if (i < s.end && t[i].text == "[") {
+            v.array = true;
+            while (i < s.end && t[i].text != "]") ++i;
+            ++i;
+        }
+        out.push_back(v);
+        if (i < s.end && t[i].text == ",") ++i;
+        else break;
+    }
+    return true;
+}
+
+// Components and base type of a type the emulation passes on.
+struct BasicType {
+    int components = 0;
+    char base = 0;  // 'f', 'i', 'u'; 0: not a scalar or vector of these
+};
+
+BasicType basicType(const std::string& type) {
+    static const std::map<std::string, BasicType> kTypes = {
+        {"float", {1, 'f'}}, {"vec2", {2, 'f'}},  {"vec3", {3, 'f'}},  {"vec4", {4, 'f'}},
+        {"int", {1, 'i'}},   {"ivec2", {2, 'i'}}, {"ivec3", {3, 'i'}}, {"ivec4", {4, 'i'}},
+        {"uint", {1, 'u'}},  {"uvec2", {2, 'u'}}, {"uvec3", {3, 'u'}}, {"uvec4", {4, 'u'}},
+    };
+    const auto it = kTypes.find(type);
+    return it == kTypes.end() ? BasicType{} : it->second;
+}
+
+std::string at(const ShaderSource& source, int line) {
+    const SourceLine w = source.where(line);
+    return w.file + ":" + std::to_string(w.line) + ": ";
+}
+
+[[noreturn]] void notInThePage(const ShaderSource& gs, int line, const std::string& what) {
+    throw Error(at(gs, line) + what +
+                " is not available where geometry shaders are emulated (the page: WebGL 2 has "
+                "none); raylab run and check run it natively");
+}
+
+// An edit of the text: the characters [pos, pos + length) become TEXT.
+struct Edit {
+    std::size_t pos = 0, length = 0;
+    std::string text;
+};
+
+// TEXT for the span [from, to) of SOURCE, with as many newlines as the span
+// had, so that every later line keeps its number.
+std::string keepingLines(const std::string& source, std::size_t from, std::size_t to,
+                         const std::string& text) {
+    return text + std::string(std::size_t(std::count(source.begin() + long(from),
+                                                     source.begin() + long(to), '\n')),
+                              '\n');
+}
+
+// The GLSL expression of a value of TYPE read from the captured words
+// starting at WORD (word w is component w % 4 of attribute raylab_in<w / 4>).
+std::string readWords(const std::string& type, int word) {
+    const BasicType b = basicType(type);
+    std::string words;
+    for (int c = 0; c < b.components; ++c) {
+        const int w = word + c;
+        words += (c ? ", " : "") + std::string("raylab_in") + std::to_string(w / 4) + "." +
+                 "xyzw"[w % 4];
+    }
+    const std::string u = b.components == 1 ? words
+                                            : "uvec" + std::to_string(b.components) + "(" + words + ")";
+    if (b.base == 'f') return "uintBitsToFloat(" + u + ")";
+    if (b.base == 'i') return type + "(" + u + ")";
+    return u;
+}
+
+}  // namespace
+
+std::string EmulatedGeometry::json() const {
+    static const char* const kOutputs[] = {"points", "lines", "triangles"};
+    return nlohmann::json{{"input", inputName},
+                          {"corners", corners},
+                          {"recordWords", recordWords},
+                          {"attributes", attributes},
+                          {"captured", captured},
+                          {"output", kOutputs[int(output)]},
+                          {"maxVertices", maxVertices},
+                          {"slots", slots},
+                          {"verticesPerSlot", verticesPerSlot}}
+        .dump();
+}
+
+ShaderSource captureFragmentShader(const std::string& version) {
+    ShaderSource s;
+    s.text = version + "\nvoid main() {}\n";
+    s.origin = {{"<raylab>", 1}, {"<raylab>", 2}};
+    return s;
+}
+
+EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderSource& geometry) {
+    const std::string& text = geometry.text;
+    const GlslScan gs = scanGlsl(text);
+    const std::vector<GlslToken>& t = gs.tokens;
+    EmulatedGeometry out;
+    std::vector<Edit> edits;
+    auto blank = [&](const Statement& s) {
+        const std::size_t from = t[s.begin].pos, to = t[s.end - 1].pos + 1;
+        edits.push_back({from, to - from, keepingLines(text, from, to, "")});
+    };
+
+    // The vertex shader's outputs, by name.
+    std::map<std::string, Varying> written;
+    {
+        const GlslScan vs = scanGlsl(vertex.text);
+        std::vector<Varying> outs;
+        for (const Statement& s : fileScopeStatements(vs.tokens))
+            parseVaryings(vs.tokens, s, "out", outs, vertex);
+        for (const Varying& v : outs) written[v.name] = v;
+    }
+
+    // The layouts, the inputs and the outputs; main, the void functions.
+    std::vector<Varying> inputs, outputs;
+    std::set<std::size_t> voidBodies;  // token index of a void function's "{"
+    int layoutLine = 0;
+    for (const Statement& s : fileScopeStatements(t)) {
+        std::vector<std::string> words;
+        const std::size_t afterLayout = skipLayout(t, s.begin, s.end, &words);
+        if (afterLayout != s.begin && afterLayout + 2 == s.end &&
+            (t[afterLayout].text == "in" || t[afterLayout].text == "out")) {
+            const bool in = t[afterLayout].text == "in";
+            for (std::size_t k = 0; k < words.size(); ++k) {
+                const std::string& w = words[k];
+                if (in && (w == "points" || w == "lines" || w == "lines_adjacency" ||
+                           w == "triangles" || w == "triangles_adjacency")) {
+                    out.inputName = w;
+                    out.corners = w == "points"              ? 1
+                                  : w == "lines"             ? 2
+                                  : w == "lines_adjacency"   ? 4
+                                  : w == "triangles"         ? 3
+                                                             : 6;
+                    layoutLine = t[s.begin].line;
+                } else if (in && w == "invocations") {
+                    notInThePage(geometry, t[s.begin].line, "an instanced geometry shader (invocations)");
+                } else if (!in && (w == "points" || w == "line_strip" || w == "triangle_strip")) {
+                    out.output = w == "points"       ? EmulatedOutput::Points
+                                 : w == "line_strip" ? EmulatedOutput::Lines
+                                                     : EmulatedOutput::Triangles;
+                    out.verticesPerSlot = w == "points" ? 1 : w == "line_strip" ? 2 : 3;
+                } else if (!in && w == "max_vertices" && k + 2 < words.size() &&
+                           words[k + 1] == "=") {
+                    out.maxVertices = int(glslWholeNumber(words[k + 2], gs.macros));
+                    if (out.maxVertices < 0)
+                        throw Error(at(geometry, t[s.begin].line) + "max_vertices = " +
+                                    words[k + 2] + " is not a whole number the page can read");
+                }
+            }
+            blank(s);
+            continue;
+        }
+        const std::size_t before = inputs.size();
+        if (parseVaryings(t, s, "in", inputs, geometry)) {
+            std::string decl;
+            for (std::size_t k = before; k < inputs.size(); ++k) {
+                if (!inputs[k].array)
+                    throw Error(at(geometry, inputs[k].line) + "a geometry shader's input " +
+                                inputs[k].name + " must be an array (" + inputs[k].name + "[])");
+                decl += inputs[k].type + " " + inputs[k].name + "[RAYLAB_CORNERS]; ";
+            }
+            const std::size_t from = t[s.begin].pos, to = t[s.end - 1].pos + 1;
+            edits.push_back({from, to - from, keepingLines(text, from, to, decl)});
+            continue;
+        }
+        if (parseVaryings(t, s, "out", outputs, geometry)) continue;  // now the vertex shader's
+        // A function definition: `type name ( ... ) { ... }`.
+        for (std::size_t k = s.begin; k + 1 < s.end; ++k) {
+            if (t[k].text != "{") continue;
+            std::size_t open = k;
+            while (open > s.begin && t[open].text != "(") --open;
+            if (open >= s.begin + 2 && t[open - 2].text == "void") voidBodies.insert(k);
+            break;
+        }
+    }
+    if (!out.corners)
+        throw Error(at(geometry, 1) + "the geometry shader declares no input primitive "
+                                      "(layout(triangles) in;)");
+    if (!out.verticesPerSlot || out.maxVertices <= 0)
+        throw Error(at(geometry, layoutLine) + "the geometry shader declares no output "
+                                                "(layout(triangle_strip, max_vertices = N) out;)");
+    for (const Varying& v : outputs)
+        if (v.array || !basicType(v.type).components)
+            throw Error(at(geometry, v.line) + "the output " + v.name + " (" + v.type +
+                        (v.array ? "[]" : "") +
+                        ") cannot be emulated: use float, int or uint scalars and vectors");
+
+    // The calls and built-ins, with where each function body is.
+    bool readsPositions = false;
+    int depth = 0;
+    std::vector<bool> inVoid;  // per open brace: inside a void function
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const GlslToken& k = t[i];
+        const std::string& w = k.text;
+        if (w == "{") {
+            inVoid.push_back(depth == 0 ? voidBodies.count(i) > 0 : inVoid.back());
+            ++depth;
+        } else if (w == "}") {
+            if (depth > 0) --depth, inVoid.pop_back();
+        } else if (w == "main" && depth == 0 && i + 1 < t.size() && t[i + 1].text == "(") {
+            edits.push_back({k.pos, w.size(), "raylab_geometryMain"});
+        } else if (w == "EmitVertex") {
+            const bool statement = i + 3 < t.size() && t[i + 1].text == "(" &&
+                                   t[i + 2].text == ")" && t[i + 3].text == ";";
+            if (statement && depth > 0 && inVoid.back()) {
+                // Its emissions kept, the body stops here (in a void function).
+                edits.push_back({k.pos, t[i + 3].pos + 1 - k.pos,
+                                 "{ if (raylab_emitVertex()) return; }"});
+                i += 3;
+            } else {
+                edits.push_back({k.pos, w.size(), "raylab_emitVertex"});
+            }
+        } else if (w == "EndPrimitive") {
+            edits.push_back({k.pos, w.size(), "raylab_endPrimitive"});
+        } else if (w == "gl_PrimitiveIDIn") {
+            edits.push_back({k.pos, w.size(), "raylab_primitiveId"});
+        } else if (w == "gl_in") {
+            // gl_in[i].gl_Position -> raylab_inPosition[i]
+            std::size_t close = i + 1, nest = 0;
+            for (; close < t.size(); ++close) {
+                if (t[close].text == "[") ++nest;
+                else if (t[close].text == "]" && --nest == 0) break;
+            }
+            if (i + 1 >= t.size() || t[i + 1].text != "[" || close + 2 >= t.size() ||
+                t[close + 1].text != "." || t[close + 2].text != "gl_Position")
+                notInThePage(geometry, k.line, "gl_in other than gl_in[i].gl_Position");
+            edits.push_back({k.pos, w.size(), "raylab_inPosition"});
+            edits.push_back({t[close + 1].pos, t[close + 2].pos + 11 - t[close + 1].pos, ""});
+            readsPositions = true;
+        } else if (w == "gl_InvocationID" || w == "gl_Layer" || w == "gl_ViewportIndex" ||
+                   w == "gl_PrimitiveID" || w == "EmitStreamVertex" ||
+                   w == "EndStreamPrimitive" || w == "gl_PointSize" || w == "gl_ClipDistance") {
+            notInThePage(geometry, k.line, w);
+        }
+    }
+
+    // The record: each input, as the vertex shader wrote it; gl_Position last.
+    std::string fill;  // the wrapper's copies from the attributes into the inputs
+    std::vector<std::pair<std::string, std::string>> fields;  // type, name
+    for (const Varying& v : inputs) {
+        const auto w = written.find(v.name);
+        if (w == written.end())
+            throw Error(at(geometry, v.line) + "the input " + v.name +
+                        " is not an output of the vertex shader");
+        if (w->second.type != v.type)
+            throw Error(at(geometry, v.line) + "the input " + v.name + " is a " + v.type +
+                        ", the vertex shader's output a " + w->second.type);
+        if (!basicType(v.type).components)
+            throw Error(at(geometry, v.line) + "the input " + v.name + " (" + v.type +
+                        ") cannot be emulated: use float, int or uint scalars and vectors");
+        fields.push_back({v.type, v.name});
+    }
+    if (readsPositions) fields.push_back({"vec4", "gl_Position"});
+    std::vector<int> offsets;
+    for (const auto& [type, name] : fields) {
+        offsets.push_back(out.recordWords);
+        out.recordWords += basicType(type).components;
+        out.captured.push_back(name);
+    }
+    for (int c = 0; c < out.corners; ++c)
+        for (std::size_t f = 0; f < fields.size(); ++f) {
+            const std::string target = fields[f].second == "gl_Position"
+                                           ? "raylab_inPosition"
+                                           : fields[f].second;
+            fill += "    " + target + "[" + std::to_string(c) + "] = " +
+                    readWords(fields[f].first, c * out.recordWords + offsets[f]) + ";\n";
+        }
+    out.attributes = std::max(1, (out.corners * out.recordWords + 3) / 4);
+    constexpr int kMaxAttributes = 16;  // WebGL 2's guaranteed vertex attributes
+    if (out.attributes > kMaxAttributes)
+        throw Error(at(geometry, layoutLine) + "the vertex shader's outputs the geometry shader "
+                    "reads take " + std::to_string(out.recordWords) + " components per vertex, " +
+                    std::to_string(out.corners * out.recordWords) + " per primitive; the page "
+                    "passes at most " + std::to_string(4 * kMaxAttributes));
+    out.slots = std::max(0, out.maxVertices - (out.verticesPerSlot - 1));
+
+    // The edits, last first, so that positions stay right.
+    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
+    std::string body = text;
+    for (const Edit& e : edits) body.replace(e.pos, e.length, e.text);
+
+    // Declarations the body needs before its own code, after #version (and
+    // its #extension lines): generated lines, which errors name as such.
+    const std::string n = std::to_string(out.corners);
+    std::vector<std::string> head = {
+        "#define RAYLAB_CORNERS " + n,
+        "int raylab_primitiveId;",
+        "bool raylab_emitVertex();",
+        "void raylab_endPrimitive();",
+    };
+    if (readsPositions) head.push_back("vec4 raylab_inPosition[RAYLAB_CORNERS];");
+
+    // The wrapper: inputs in, the student's main, the kept emission out.
+    const int v = out.verticesPerSlot;
+    std::string tail;
+    for (int a = 0; a < out.attributes; ++a)
+        tail += "in uvec4 raylab_in" + std::to_string(a) + ";\n";
+    tail += std::string("flat out int ") + kEmulationKeptOutput + ";\n";
+    tail += "int raylab_emitted = 0, raylab_strip = 0, raylab_stripStart = 0;\n"
+            "int raylab_first = 0, raylab_corner = 0, raylab_keep = -1;\n"
+            "int raylab_firstStrip = -1, raylab_lastStrip = -2;\n"
+            "vec4 raylab_keptPosition = vec4(0.0);\n";
+    std::string keep, give;
+    for (const Varying& o : outputs) {
+        tail += o.type + " raylab_kept_" + o.name + " = " + o.type + "(0);\n";
+        keep += " raylab_kept_" + o.name + " = " + o.name + ";";
+        give += "    " + o.name + " = raylab_kept_" + o.name + ";\n";
+    }
+    tail += "bool raylab_emitVertex()\n{\n"
+            "    int n = raylab_emitted;\n"
+            "    if (n >= " + std::to_string(out.maxVertices) + ") return true;\n"
+            "    raylab_emitted = n + 1;\n"
+            "    if (n == raylab_first) {\n"
+            "        raylab_firstStrip = raylab_strip;\n";
+    if (out.output == EmulatedOutput::Triangles)
+        tail += "        // The odd triangles of a strip swap their first two corners.\n"
+                "        bool odd = (n - raylab_stripStart) % 2 == 1;\n"
+                "        raylab_keep = n + (odd && raylab_corner < 2 ? 1 - raylab_corner : "
+                "raylab_corner);\n";
+    else
+        tail += "        raylab_keep = n + raylab_corner;\n";
+    tail += "    }\n"
+            "    if (n == raylab_keep) {" + keep + " raylab_keptPosition = gl_Position; }\n"
+            "    if (n == raylab_first + " + std::to_string(v - 1) + ") {\n"
+            "        raylab_lastStrip = raylab_strip;\n"
+            "        return true;\n"
+            "    }\n"
+            "    return false;\n"
+            "}\n"
+            "void raylab_endPrimitive()\n{\n"
+            "    raylab_strip += 1;\n"
+            "    raylab_stripStart = raylab_emitted;\n"
+            "}\n"
+            "void main()\n{\n"
+            "    raylab_primitiveId = gl_InstanceID;\n"
+            "    raylab_first = gl_VertexID / " + std::to_string(v) + ";\n"
+            "    raylab_corner = gl_VertexID - " + std::to_string(v) + " * raylab_first;\n" +
+            fill +
+            "    raylab_geometryMain();\n"
+            "    bool kept = raylab_firstStrip >= 0 && raylab_firstStrip == raylab_lastStrip;\n" +
+            give +
+            "    // A primitive not made: a point outside the view.\n"
+            "    gl_Position = kept ? raylab_keptPosition : vec4(2.0, 2.0, 2.0, 1.0);\n"
+            "    " + kEmulationKeptOutput + " = kept ? 1 : 0;\n"
+            "}\n";
+
+    // Assemble with the origin: line 1, its #extension lines, the head, the
+    // body's other lines, the tail.
+    std::vector<std::string> lines;
+    {
+        std::size_t start = 0;
+        while (start <= body.size()) {
+            const std::size_t end = body.find('\n', start);
+            if (end == std::string::npos) {
+                if (start < body.size()) lines.push_back(body.substr(start));
+                break;
+            }
+            lines.push_back(body.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+    std::size_t afterVersion = lines.empty() ? 0 : 1;
+    while (afterVersion < lines.size() && lines[afterVersion].rfind("#extension", 0) == 0)
+        ++afterVersion;
+    ShaderSource& s = out.vertex;
+    s.files = geometry.files;
+    auto emit = [&](const std::string& line, const SourceLine& from) {
+        s.text += line + "\n";
+        s.origin.push_back(from);
+    };
+    for (std::size_t i = 0; i < afterVersion; ++i) emit(lines[i], geometry.where(int(i) + 1));
+    int generated = 1;
+    for (const std::string& h : head) emit(h, {"<raylab>", generated++});
+    for (std::size_t i = afterVersion; i < lines.size(); ++i)
+        emit(lines[i], geometry.where(int(i) + 1));
+    std::size_t start = 0;
+    while (start < tail.size()) {
+        const std::size_t end = tail.find('\n', start);
+        emit(tail.substr(start, end - start), {"<raylab>", generated++});
+        start = end + 1;
+    }
+    return out;
+}
+
+}  // namespace raylab

@@ -1,0 +1,48 @@
+#pragma once
+// A vertex + geometry + fragment program drawn without a geometry shader,
+// as the page draws it (WebGL 2 has none): the geometry shader rewritten by
+// emulateGeometryShader (geometry_emulation.h), the vertex shader's outputs
+// captured by transform feedback. Native draws fins and strands with real
+// geometry shaders; this runs the page's way on desktop GL 3.3, so that
+// native tests compare the two. Students need not read this file.
+#include "geometry_emulation.h"
+#include "shader_program.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace raylab {
+
+class EmulatedGeometryPass {
+public:
+    // Throws ShaderError (compile, link) or Error (what the emulation cannot run).
+    EmulatedGeometryPass(const ShaderSource& vertex, const ShaderSource& geometry,
+                         const ShaderSource& fragment);
+    ~EmulatedGeometryPass();
+    EmulatedGeometryPass(const EmulatedGeometryPass&) = delete;
+    EmulatedGeometryPass& operator=(const EmulatedGeometryPass&) = delete;
+
+    // Both programs read the stage's uniforms: the caller sets them on each.
+    const ShaderProgram& capture() const { return *capture_; }
+    const ShaderProgram& draw() const { return *draw_; }
+    const EmulatedGeometry& layout() const { return layout_; }
+
+    // The input primitives' corners, one after the other: FLOATS per corner
+    // interleaved as ATTRIBUTES says ({location, size}), for the vertex shader.
+    void setCorners(const std::vector<float>& floats,
+                    const std::vector<std::pair<int, int>>& attributes);
+
+    // Runs the vertex shader on the corners, then draws the primitives the
+    // geometry shader makes. With COUNT, draws nothing and returns how many
+    // primitives it made (transform feedback of raylab_kept).
+    long run(bool count = false);
+
+private:
+    EmulatedGeometry layout_;
+    std::unique_ptr<ShaderProgram> capture_, draw_;
+    GLuint cornerVao_ = 0, corners_ = 0, recordVao_ = 0, records_ = 0, kept_ = 0;
+    long cornerCount_ = 0;
+};
+
+}  // namespace raylab

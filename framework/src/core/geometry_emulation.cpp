@@ -106,6 +106,13 @@ std::string at(const ShaderSource& source, int line) {
     return w.file + ":" + std::to_string(w.line) + ": ";
 }
 
+// The file the shader was assembled from: the first line not generated.
+std::string entryFile(const ShaderSource& source) {
+    for (const SourceLine& l : source.origin)
+        if (l.file != "<raylab>") return l.file;
+    return "<raylab>";
+}
+
 [[noreturn]] void notInThePage(const ShaderSource& gs, int line, const std::string& what) {
     throw Error(at(gs, line) + what +
                 " is not available where geometry shaders are emulated (the page: WebGL 2 has "
@@ -251,7 +258,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
         }
     }
     if (!out.corners)
-        throw Error(at(geometry, 1) + "the geometry shader declares no input primitive "
+        throw Error(entryFile(geometry) + ": the geometry shader declares no input primitive "
                                       "(layout(triangles) in;)");
     if (!out.verticesPerSlot || out.maxVertices <= 0)
         throw Error(at(geometry, layoutLine) + "the geometry shader declares no output "
@@ -320,8 +327,8 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             throw Error(at(geometry, v.line) + "the input " + v.name +
                         " is not an output of the vertex shader");
         if (w->second.type != v.type)
-            throw Error(at(geometry, v.line) + "the input " + v.name + " is a " + v.type +
-                        ", the vertex shader's output a " + w->second.type);
+            throw Error(at(geometry, v.line) + "the input " + v.name + " is " + v.type +
+                        ", the vertex shader's output " + w->second.type);
         if (!basicType(v.type).components)
             throw Error(at(geometry, v.line) + "the input " + v.name + " (" + v.type +
                         ") cannot be emulated: use float, int or uint scalars and vectors");

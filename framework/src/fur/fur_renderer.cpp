@@ -346,13 +346,9 @@ CountResult FurRenderer::countCheck(const std::string& name, const Camera& camer
     const SilhouetteCount cpu =
         countSilhouettes(mesh_, adjacency_, glm::dmat4(scene_.modelMatrix(timeSeconds)),
                          glm::dvec3(camera.pose().position));
-    r.passed = gpu >= cpu.certain && gpu <= cpu.certain + cpu.uncertain;
-    r.detail = "the geometry shader emitted " + std::to_string(gpu) + " fins for " +
-               std::to_string(adjacency_.edgeCount()) + " edges; " + std::to_string(cpu.certain) +
-               " edges are silhouettes" +
-               (cpu.uncertain ? " (and " + std::to_string(cpu.uncertain) +
-                                    " edge-on ones may count either way)"
-                              : "");
+    const FinCountVerdict v = judgeFinCount(gpu, adjacency_.edgeCount(), cpu);
+    r.passed = v.passed;
+    r.detail = v.detail;
     return r;
 }
 

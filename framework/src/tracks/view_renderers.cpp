@@ -67,11 +67,7 @@ CountOutcome runCountCheck(ViewRenderers& renderers, const std::string& name,
     out.name = name;
     for (const CheckView& view : views) {
         CountResult r = renderers.countCheck(name, view);
-        if (!r.applies) continue;
-        ++out.total;
-        if (out.example.empty()) out.example = "view " + view.name + ": " + r.detail;
-        if (r.passed) ++out.passed;
-        else if (out.firstFailure.empty()) out.firstFailure = "view " + view.name + ": " + r.detail;
+        if (r.applies) tallyCount(out, view.name, r.passed, r.detail);
     }
     return out;
 }

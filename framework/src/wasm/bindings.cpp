@@ -129,7 +129,13 @@ std::string mapLog(const std::string& log, const std::string& sourceJson) {
 }
 
 json programsJson(const WebFurPrograms& p) {
-    return {{"vertex", sourceJson(p.vertex)}, {"fragment", sourceJson(p.fragment)}};
+    json out = {{"vertex", sourceJson(p.vertex)}, {"fragment", sourceJson(p.fragment)}};
+    if (p.geometry) {
+        out["geometry"] = sourceJson(p.geometry->vertex);
+        out["captureFragment"] = sourceJson(p.captureFragment);
+        out["emulation"] = json::parse(p.geometry->json());
+    }
+    return out;
 }
 
 // A fur stage for the page (web_fur_stage.h).
@@ -202,6 +208,12 @@ public:
     }
     val indices() const { return typedArray("Uint32Array", stage_->mesh().indices); }
     val adjacency() const { return typedArray("Uint32Array", stage_->adjacency().indices); }
+    // The fin count check's verdict on EMITTED fins seen from (X, Y, Z) at
+    // time T: {passed, detail}.
+    std::string finCount(double emitted, float t, float x, float y, float z) const {
+        const FinCountVerdict v = stage_->finCount(long(emitted), t, glm::vec3(x, y, z));
+        return json{{"passed", v.passed}, {"detail", v.detail}}.dump();
+    }
     // The model matrix at time T, column-major.
     val modelMatrix(float t) const {
         const glm::mat4 m = stage_->scene().modelMatrix(t);
@@ -252,5 +264,6 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("uvs", &FurStage::uvs)
         .function("indices", &FurStage::indices)
         .function("adjacency", &FurStage::adjacency)
-        .function("modelMatrix", &FurStage::modelMatrix);
+        .function("modelMatrix", &FurStage::modelMatrix)
+        .function("finCount", &FurStage::finCount);
 }

@@ -237,6 +237,21 @@ public:
         } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
     }
 
+    // Count check NAME, per check view: RESULTSJSON [{view, applies, passed,
+    // detail}] (the page counted; the core judged each, as natively).
+    std::string addCount(const std::string& name, const std::string& resultsJson) {
+        try {
+            CountOutcome c;
+            c.name = name;
+            for (const json& r : json::parse(resultsJson))
+                if (r.value("applies", false))
+                    tallyCount(c, r.value("view", ""), r.value("passed", false),
+                               r.value("detail", ""));
+            counts_.push_back(c);
+            return json{{"passed", countPassed(c)}}.dump();
+        } catch (const std::exception& e) { return json{{"error", e.what()}}.dump(); }
+    }
+
     // A count check the page cannot run, and why.
     void addCountNotRun(const std::string& name, const std::string& why) {
         notRun_.push_back("  ---- " + name + ": not checked here: " + why + "\n");
@@ -278,6 +293,7 @@ public:
         out += formatViewsHeading();
         for (const ViewOutcome& v : views_)
             out += formatViewLines(v, failedFunctions, todos_.size());
+        for (const CountOutcome& c : counts_) out += formatCountLine(c);
         for (const std::string& line : notRun_) out += line;
         return out + formatSummary(passed(), failed()) + scoreLine();
     }
@@ -293,6 +309,7 @@ private:
         std::vector<std::string> viewWeights, otherNames;
         for (const ViewOutcome& v : views_) viewWeights.push_back(v.name);
         for (const FunctionOutcome& f : functions_) otherNames.push_back(f.name);
+        for (const CountOutcome& c : counts_) otherNames.push_back(c.name);
         const std::vector<double> points = checkPoints(stage_->grading, viewWeights, otherNames);
         std::vector<CheckCredit> credits;
         for (std::size_t i = 0; i < views_.size(); ++i) {
@@ -305,6 +322,8 @@ private:
         }
         for (const FunctionOutcome& f : functions_)
             credits.push_back({false, points[credits.size()], wrongShare(f.passed, f.total)});
+        for (const CountOutcome& c : counts_)
+            credits.push_back({false, points[credits.size()], wrongShare(c.passed, c.total)});
         return formatScoreLine(scoreChecks(credits), stage_->grading.seededViews);
     }
     std::string scoreInto(const std::string& name, const val& floats) {
@@ -336,6 +355,7 @@ private:
         int n = 0;
         for (const FunctionOutcome& f : functions_) n += (f.passed == f.total) == ok;
         for (const ViewOutcome& v : views_) n += v.passed == ok;
+        for (const CountOutcome& c : counts_) n += countPassed(c) == ok;
         return n;
     }
     const StageInfo* stage_ = nullptr;
@@ -343,6 +363,7 @@ private:
     std::vector<OpenTodo> todos_;
     std::vector<FunctionOutcome> functions_;
     std::vector<ViewOutcome> views_;
+    std::vector<CountOutcome> counts_;
     std::vector<Image> mine_, expected_;  // views_'s pictures, for the score
     std::map<std::string, Image> untouched_;
     std::vector<std::string> notRun_, countsNotRun_;
@@ -371,6 +392,7 @@ EMSCRIPTEN_BINDINGS(raylab_checks) {
         .function("addFunction", &CheckSession::addFunction)
         .function("addFunctionNotBuilt", &CheckSession::addFunctionNotBuilt)
         .function("addView", &CheckSession::addView)
+        .function("addCount", &CheckSession::addCount)
         .function("addCountNotRun", &CheckSession::addCountNotRun)
         .function("addUntouched", &CheckSession::addUntouched)
         .function("noScore", &CheckSession::noScore)

@@ -13,8 +13,7 @@ namespace raylab {
 namespace {
 
 // The geometry-shader budget every OpenGL 3.3 driver offers: the page's
-// instanced strands draw as many as native strand.geom would there, so the
-// fur looks the same.
+// emulated strand.geom is compiled for it, as native's would be there.
 constexpr int kMinOutputVertices = 256;
 constexpr int kMinTotalComponents = 1024;
 
@@ -50,27 +49,37 @@ WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
         for (const std::string& d : budget_->defines()) defines.push_back(d);
     }
     if (todoMarks) defines.push_back("RAYLAB_TODO_MARK");  // a check's target, as natively
-    std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
-    search.insert(search.begin(), projectRoot() / "web" / "shaders");
+    const std::vector<std::filesystem::path> search = searchWithVariants(sources_, defines);
     std::set<std::pair<std::string, int>> seen;
-    auto assemble = [&](const std::string& entry) {
-        ShaderSource s = asGlslEs300(assembleShader(entry, search, defines));
+    // As GLSL 3.30 (the emulation rewrites that), then for WebGL 2.
+    auto assemble330 = [&](const std::string& entry) {
+        ShaderSource s = assembleShader(entry, search, defines);
         for (const OpenTodo& t : findOpenTodos(s))
             if (seen.insert({t.file, t.line}).second) todos_.push_back(t);
         return s;
     };
-    shells_ = {assemble(stage.program.vertex), assemble(stage.program.fragment)};
-    if (stage.has("fins")) {
-        const StageProgram& p = namedProgram(stage, "fins", "fins");
-        fins_ = WebFurPrograms{assemble("fin_instanced.vert"), assemble(p.fragment)};
-        assemble(p.vertex);  // for its TODOs only
-        if (!p.geometry.empty()) assemble(p.geometry);
-    }
-    if (stage.has("fur_shader")) {
-        const StageProgram& p = namedProgram(stage, "strands", "fur_shader");
-        strands_ = WebFurPrograms{assemble("strand_instanced.vert"), assemble(p.fragment)};
-        if (!p.geometry.empty()) assemble(p.geometry);
-    }
+    auto assemble = [&](const std::string& entry) { return asGlslEs300(assemble330(entry)); };
+    auto build = [&](const StageProgram& p) {
+        WebFurPrograms out;
+        const ShaderSource vertex = assemble330(p.vertex);
+        out.vertex = asGlslEs300(vertex);
+        if (!p.geometry.empty()) {
+            out.geometry = emulateGeometryShader(vertex, assemble330(p.geometry));
+            out.geometry->vertex = asGlslEs300(out.geometry->vertex);
+            out.captureFragment = asGlslEs300(captureFragmentShader());
+        }
+        out.fragment = assemble(p.fragment);
+        return out;
+    };
+    shells_ = {assemble(stage.program.vertex), assemble(stage.program.fragment), {}, {}};
+    if (stage.has("fins")) fins_ = build(namedProgram(stage, "fins", "fins"));
+    if (stage.has("fur_shader")) strands_ = build(namedProgram(stage, "strands", "fur_shader"));
+}
+
+FinCountVerdict WebFurStage::finCount(long emitted, float t, glm::vec3 eye) const {
+    const SilhouetteCount cpu =
+        countSilhouettes(mesh_, adjacency_, glm::dmat4(scene_.modelMatrix(t)), glm::dvec3(eye));
+    return judgeFinCount(emitted, adjacency_.edgeCount(), cpu);
 }
 
 }  // namespace raylab

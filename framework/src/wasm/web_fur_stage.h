@@ -3,16 +3,16 @@
 // (fur/fur_renderer.cpp) prepares on the CPU, with the same code, for the
 // page's WebGL 2 calls (web/src/fur/fur_renderer.ts). The fur scene, its mesh
 // and edge adjacency, the bounding sphere, and the programs. WebGL 2 has no
-// geometry shaders: the fins and strands are drawn with instanced vertex
-// shaders of the web's own (web/shaders/fin_instanced.vert,
-// strand_instanced.vert) in front of the stage's fragment shaders; the
-// stage's own vertex and geometry files are still read, for their TODOs.
-// Students need not read this file.
+// geometry shaders: the stage's fin.geom and strand.geom run rewritten into
+// vertex shaders (core/geometry_emulation.h), fed by the stage's vertex
+// shader through transform feedback. Students need not read this file.
 #include "adjacency.h"
 #include "fur_scene.h"
+#include "geometry_emulation.h"
 #include "mesh.h"
 #include "shader_source.h"
 #include "stage_catalog.h"
+#include "silhouette.h"
 #include "stage_sources.h"
 #include "strand_budget.h"
 
@@ -24,6 +24,10 @@ namespace raylab {
 
 struct WebFurPrograms {
     ShaderSource vertex, fragment;
+    // With a geometry shader: its emulation (the vertex shader above runs
+    // first, captured; this one draws in front of the fragment shader).
+    std::optional<EmulatedGeometry> geometry;
+    ShaderSource captureFragment;
 };
 
 class WebFurStage {
@@ -45,6 +49,9 @@ public:
     const std::optional<StrandBudget>& strandBudget() const { return budget_; }
     const std::vector<OpenTodo>& todos() const { return todos_; }
     glm::vec3 boundsCentre() const { return boundsCentre_; }
+    // The fin count check's verdict on EMITTED fins seen from EYE at time T
+    // (native: FurRenderer::countCheck).
+    FinCountVerdict finCount(long emitted, float t, glm::vec3 eye) const;
     float boundsRadius() const { return boundsRadius_; }
 
 private:

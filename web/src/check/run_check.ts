@@ -6,6 +6,7 @@
 import { frameOfView, sceneOfView } from '../app/frame.js';
 import { type Catalog, type CheckViewJson, type Sources, type StageJson } from '../course/catalog.js';
 import { ensureProjectFiles, labForCore, loadCore, projectFiles } from '../core/core.js';
+import { FurRenderer } from '../fur/fur_renderer.js';
 import { loadStage, type LoadedStage } from '../tracks/track_registry.js';
 import { CheckTarget } from './check_target.js';
 import { runFunctionChecks } from './function_checks.js';
@@ -45,10 +46,26 @@ export function backendName(gl: WebGL2RenderingContext): string {
   return `WebGL 2 (${gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)})`;
 }
 
-// Why a count check does not run in the page.
-const COUNT_NOT_RUN: Record<string, string> = {
-  fin_count: 'WebGL 2 has no geometry shader whose output the page could count; run `raylab check` natively for it',
-};
+// A count check from the check views' cameras (native: runCountCheck): the
+// number the student's shaders produced against the same number worked out
+// on the CPU by the core. Null where the page has no such count.
+async function countResults(name: string, stage: StageJson, rendererFor: (scene: string) => Promise<LoadedStage>) {
+  if (name !== 'fin_count') return null;
+  const results = [];
+  for (const view of stage.check_views) {
+    const loaded = await rendererFor(sceneOfView(stage, view));
+    const r = loaded.renderer;
+    const frame = frameOfView(loaded.camera, loaded.fovYDeg, view, stage);
+    const applies = r instanceof FurRenderer && frame.settings.fins && frame.settings.furTechnique === 0;
+    const fins = applies ? r.countFins(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT) : null;
+    if (fins === null || !(r instanceof FurRenderer)) {
+      results.push({ view: view.name, applies: false });
+      continue;
+    }
+    results.push({ view: view.name, applies: true, ...r.finCountVerdict(fins, frame.camera, frame.time) });
+  }
+  return results;
+}
 
 // LABEL: where the code comes from, as the report's first line names it.
 // SCORE: end the report with the grader's score (when a view fails, the lab
@@ -128,7 +145,15 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
       } finally {
         target.dispose();
       }
-      for (const name of stage.count_checks ?? []) session.addCountNotRun(name, COUNT_NOT_RUN[name] ?? 'not available in the page');
+      for (const name of stage.count_checks ?? []) {
+        const results = await countResults(name, stage, rendererFor);
+        if (!results) {
+          session.addCountNotRun(name, 'not available in the page');
+          continue;
+        }
+        const added = JSON.parse(session.addCount(name, JSON.stringify(results))) as { error?: string };
+        if (added.error) throw new Error(added.error);
+      }
       const report = session.report();
       for (const m of report.matchAll(/^ {2}FAIL (\S+)/gm)) failedChecks.push(m[1]!);
       return { report, passed: session.passed(), failed: session.failed(), failedChecks, views };

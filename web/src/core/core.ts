@@ -9,6 +9,7 @@
 // folder (under STUDENT_ROOT, the core's working folder, so that its files
 // are named as the student's folder names them).
 import { ROOT, type Catalog, type Sources } from '../course/catalog.js';
+import type { EmulationLayout } from '../gl/emulated_geometry_pass.js';
 
 export const CORE_ROOT = '/raylab';
 export const STUDENT_ROOT = '/student';
@@ -61,7 +62,11 @@ export interface RayStageHandle {
 export interface FurStageInfo {
   stage: string;
   sceneFile: string;
-  programs: Record<'shells' | 'fins' | 'strands', { vertex: CoreSource; fragment: CoreSource } | undefined>;
+  // fins and strands: with their geometry shader's emulation (gl/emulated_geometry_pass.ts).
+  programs: Record<'shells' | 'fins' | 'strands', {
+    vertex: CoreSource; fragment: CoreSource;
+    geometry?: CoreSource; captureFragment?: CoreSource; emulation?: EmulationLayout;
+  } | undefined>;
   todos: OpenTodo[];
   background: [number, number, number];
   camera: RayStageInfo['camera'];
@@ -87,6 +92,7 @@ export interface FurStageHandle {
   indices(): Uint32Array;
   adjacency(): Uint32Array;
   modelMatrix(t: number): Float32Array;
+  finCount(emitted: number, t: number, x: number, y: number, z: number): string;  // {passed, detail}
   delete(): void;
 }
 interface CoreFs {
@@ -120,6 +126,7 @@ export interface CheckSessionHandle {
   addFunction(name: string, results: Float32Array): string;
   addFunctionNotBuilt(name: string, message: string): string;
   addView(view: string, mine: Uint8Array, expected: Uint8Array, width: number, height: number, nonFinite: number, todoPixels: number): string;
+  addCount(name: string, resultsJson: string): string;
   addCountNotRun(name: string, why: string): void;
   addUntouched(viewName: string, rgba: Uint8Array, width: number, height: number): string;
   noScore(): void;

@@ -1,10 +1,7 @@
 // The mesh on the GPU for the fur track (native: fur/mesh_buffers.cpp):
 // vertices (position, normal, uv at locations 0, 1, 2) and triangles for the
-// skin and shells; for the web's instanced fins one instance per edge
-// (locations 3..10: A, B, C, D, the normals and uvs at B and C); for the
-// instanced strands one triangle per STRANDS instances (locations 3..11:
-// three corners, three normals, three uvs, advancing every STRANDS instances).
-import { edgeInstances } from './fin_instances.js';
+// skin and shells. Fins and strands read the mesh through their emulated
+// geometry shaders' own corner buffers (gl/emulated_geometry_pass.ts).
 
 // A mesh as the core gives it (native: fur/mesh/mesh.h).
 export interface MeshArrays {
@@ -16,20 +13,10 @@ export interface MeshArrays {
 
 export class FurMeshBuffers {
   private triangles: WebGLVertexArrayObject;
-  private finVao: WebGLVertexArrayObject | null = null;
-  private strandVao: WebGLVertexArrayObject | null = null;
   private buffers: WebGLBuffer[] = [];
   private indexCount: number;
-  private edgeCount = 0;
-  private triangleCount: number;
 
-  constructor(
-    private gl: WebGL2RenderingContext,
-    mesh: MeshArrays,
-    adjacency: Uint32Array | null,  // the core's: 4 per edge (A B C D); null without fins
-    // The fur shader's strands: per triangle, and vertices per strand (segments + 1).
-    private strands: { perTriangle: number; vertices: number } | null,
-  ) {
+  constructor(private gl: WebGL2RenderingContext, mesh: MeshArrays) {
     const n = mesh.positions.length / 3;
     const vertices = new Float32Array(8 * n);
     for (let i = 0; i < n; ++i) {
@@ -40,36 +27,12 @@ export class FurMeshBuffers {
     this.triangles = gl.createVertexArray()!;
     gl.bindVertexArray(this.triangles);
     this.arrayBuffer(vertices);
-    this.attributes([[0, 3], [1, 3], [2, 2]], 0);
+    this.attributes([[0, 3], [1, 3], [2, 2]]);
     const indices = mesh.indices;
     this.buffers.push(gl.createBuffer()!);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.buffers[this.buffers.length - 1]);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
     this.indexCount = indices.length;
-    this.triangleCount = indices.length / 3;
-
-    if (adjacency && adjacency.length) {
-      this.edgeCount = adjacency.length / 4;
-      this.finVao = gl.createVertexArray()!;
-      gl.bindVertexArray(this.finVao);
-      this.arrayBuffer(edgeInstances(mesh, adjacency));
-      this.attributes([[3, 3], [4, 3], [5, 3], [6, 3], [7, 3], [8, 3], [9, 2], [10, 2]], 1);
-    }
-    if (strands) {
-      const data = new Float32Array(24 * this.triangleCount);
-      for (let t = 0; t < this.triangleCount; ++t) {
-        for (let k = 0; k < 3; ++k) {
-          const v = indices[3 * t + k]!;
-          data.set(mesh.positions.subarray(3 * v, 3 * v + 3), 24 * t + 3 * k);
-          data.set(mesh.normals.subarray(3 * v, 3 * v + 3), 24 * t + 9 + 3 * k);
-          data.set(mesh.uvs.subarray(2 * v, 2 * v + 2), 24 * t + 18 + 2 * k);
-        }
-      }
-      this.strandVao = gl.createVertexArray()!;
-      gl.bindVertexArray(this.strandVao);
-      this.arrayBuffer(data);
-      this.attributes([[3, 3], [4, 3], [5, 3], [6, 3], [7, 3], [8, 3], [9, 2], [10, 2], [11, 2]], strands.perTriangle);
-    }
     gl.bindVertexArray(null);
   }
 
@@ -80,15 +43,14 @@ export class FurMeshBuffers {
     gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
   }
 
-  // Interleaved float attributes [location, size]; DIVISOR 0 per vertex, else per DIVISOR instances.
-  private attributes(list: [number, number][], divisor: number): void {
+  // Interleaved float attributes [location, size], per vertex.
+  private attributes(list: [number, number][]): void {
     const gl = this.gl;
     const stride = 4 * list.reduce((s, [, size]) => s + size, 0);
     let offset = 0;
     for (const [loc, size] of list) {
       gl.enableVertexAttribArray(loc);
       gl.vertexAttribPointer(loc, size, gl.FLOAT, false, stride, offset);
-      gl.vertexAttribDivisor(loc, divisor);
       offset += 4 * size;
     }
   }
@@ -100,25 +62,9 @@ export class FurMeshBuffers {
     gl.bindVertexArray(null);
   }
 
-  drawFins(): void {
-    if (!this.finVao) return;
-    const gl = this.gl;
-    gl.bindVertexArray(this.finVao);
-    gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, this.edgeCount);
-    gl.bindVertexArray(null);
-  }
-
-  drawStrands(): void {
-    if (!this.strandVao || !this.strands) return;
-    const gl = this.gl;
-    gl.bindVertexArray(this.strandVao);
-    gl.drawArraysInstanced(gl.LINE_STRIP, 0, this.strands.vertices, this.triangleCount * this.strands.perTriangle);
-    gl.bindVertexArray(null);
-  }
-
   dispose(): void {
     const gl = this.gl;
-    for (const v of [this.triangles, this.finVao, this.strandVao]) if (v) gl.deleteVertexArray(v);
+    gl.deleteVertexArray(this.triangles);
     for (const b of this.buffers) gl.deleteBuffer(b);
   }
 }

@@ -1,10 +1,8 @@
 // The fur track's renderer in WebGL 2 (native: framework/src/fur/fur_renderer.cpp):
 // the skin and the shells with the stage's own program, then the fins or
-// the fur shader's strands. WebGL 2 has no geometry shaders, so fins and
-// strands come from instanced draws whose vertex shaders
-// (web/shaders/fin_instanced.vert, strand_instanced.vert) do what fin.geom
-// and strand.geom do natively, calling the student's silhouette.glsl and
-// strand_point.glsl; the fragment shaders are the stage's own. The scene, the
+// the fur shader's strands with the stage's own fin and strand programs.
+// WebGL 2 has no geometry shaders: the core rewrote fin.geom and strand.geom
+// into vertex shaders, run by gl/emulated_geometry_pass.ts. The scene, the
 // mesh, its edge adjacency and the programs come from the C++ core
 // (core/core.ts: framework/src/wasm/web_fur_stage.h); what stays here is WebGL.
 import type { Camera } from '../app/camera.js';
@@ -14,6 +12,7 @@ import {
   type OpenTodo, projectFiles, writeProjectFile,
 } from '../core/core.js';
 import { columnLength, lookAt, perspective, transformPoint } from '../gl/mat4.js';
+import { EmulatedGeometryPass, MESH_CORNER_ATTRIBUTES, meshCorners } from '../gl/emulated_geometry_pass.js';
 import { Program } from '../gl/program.js';
 import { texture2D } from '../gl/textures.js';
 import type { RenderSettings } from '../raytrace/render_settings.js';
@@ -50,6 +49,10 @@ export async function openFurStage(core: Core, catalog: Catalog, r: FurStageRequ
   return { handle, info };
 }
 
+interface Frame {
+  model: Float32Array; view: Float32Array; projection: Float32Array; eye: number[]; time: number; furLength: number;
+}
+
 export class FurRenderer implements TrackRenderer {
   readonly notes: string[] = [];
   private textures: WebGLTexture[] = [];
@@ -61,8 +64,8 @@ export class FurRenderer implements TrackRenderer {
     readonly info: FurStageInfo,
     private buffers: FurMeshBuffers,
     private shells: Program,
-    private fins: Program | null,
-    private strands: Program | null,
+    private fins: EmulatedGeometryPass | null,
+    private strands: EmulatedGeometryPass | null,
   ) {
     this.todos = info.todos;
   }
@@ -75,38 +78,39 @@ export class FurRenderer implements TrackRenderer {
     const has = (f: string) => stage.features.includes(f);
     // Built into locals: a failure (a student's compile error) deletes what
     // was built so far, so a watched folder's broken saves leak nothing.
-    const programs: Program[] = [];
-    const built = async (name: 'shells' | 'fins' | 'strands') => {
-      const p = info.programs[name];
-      if (!p) return null;
+    const built: { dispose(): void }[] = [];
+    const program = async (name: 'shells') => {
+      const p = info.programs[name]!;
       const program = await Program.build(gl, core, p.vertex, p.fragment);
-      programs.push(program);
+      built.push(program);
       return program;
     };
-    let shells: Program, fins: Program | null, strands: Program | null;
+    const emulated = async (name: 'fins' | 'strands') => {
+      const p = info.programs[name];
+      if (!p?.geometry || !p.captureFragment || !p.emulation) return null;
+      const pass = await EmulatedGeometryPass.build(gl, core, {
+        vertex: p.vertex, fragment: p.fragment, geometry: p.geometry, captureFragment: p.captureFragment, emulation: p.emulation,
+      });
+      built.push(pass);
+      return pass;
+    };
+    let shells: Program, fins: EmulatedGeometryPass | null, strands: EmulatedGeometryPass | null;
     try {
-      shells = (await built('shells'))!;
-      fins = await built('fins');
-      strands = await built('strands');
+      shells = await program('shells');
+      fins = await emulated('fins');
+      strands = await emulated('strands');
     } catch (e) {
-      for (const p of programs) p.dispose();
+      for (const p of built) p.dispose();
       handle.delete();
       throw e;
     }
-    const notes: string[] = [];
-    const named = (name: string) => stage.programs?.[name];
-    if (fins) {
-      const p = named('fins')!;
-      notes.push(`WebGL 2 has no geometry shaders, so the fins are instanced quads (web/shaders/fin_instanced.vert) that use your silhouette.glsl but the web's own finished copies of ${p.vertex} and ${p.geometry}: what you write in those two shows only natively (raylab run/check --stage ${stage.id.split('-')[0]})`);
-    }
-    if (strands) {
-      const p = named('strands')!;
-      notes.push(`the fur shader's strands (key T) are instanced line strips (web/shaders/strand_instanced.vert) that use your strand_point.glsl in place of ${p.vertex} and ${p.geometry}, which run natively only`);
-    }
     const mesh = { positions: handle.positions(), normals: handle.normals(), uvs: handle.uvs(), indices: handle.indices() };
-    const buffers = new FurMeshBuffers(gl, mesh, has('fins') ? handle.adjacency() : null, info.strands);
+    const buffers = new FurMeshBuffers(gl, mesh);
+    // Each input primitive's corners for the emulated geometry shaders:
+    // an edge with its neighbours (A B C D) for the fins, a triangle for the strands.
+    fins?.setCorners(meshCorners(mesh, handle.adjacency()), MESH_CORNER_ATTRIBUTES);
+    strands?.setCorners(meshCorners(mesh, mesh.indices), MESH_CORNER_ATTRIBUTES);
     const r = new FurRenderer(gl, stage, handle, info, buffers, shells, fins, strands);
-    r.notes.push(...notes);
     // All three pictures or none: those that loaded are deleted with the rest.
     const pictures = await Promise.allSettled(info.textures.map((u) => texture2D(gl, coreFileUrl(u))));
     r.textures = pictures.flatMap((p) => (p.status === 'fulfilled' ? [p.value] : []));
@@ -118,7 +122,7 @@ export class FurRenderer implements TrackRenderer {
     return r;
   }
 
-  private setUniforms(p: Program, f: { model: Float32Array; view: Float32Array; projection: Float32Array; eye: number[]; time: number; furLength: number }): void {
+  private setUniforms(p: Program, f: Frame): void {
     const gl = this.gl, s = this.info;
     gl.useProgram(p.id);
     gl.uniformMatrix4fv(p.uniform('uModel'), false, f.model);
@@ -139,10 +143,10 @@ export class FurRenderer implements TrackRenderer {
     gl.uniform1i(p.uniform('uFinMap'), FIN_UNIT);
   }
 
-  render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
-    const gl = this.gl, s = this.info;
-    // The frame (native: FurRenderer::frameFor): near and far planes hug the
-    // mesh's bounding sphere with room for the fur.
+  // The frame (native: FurRenderer::frameFor): near and far planes hug the
+  // mesh's bounding sphere with room for the fur.
+  private frameFor(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number) {
+    const s = this.info;
     const model = this.core.modelMatrix(timeSeconds);
     const eye = camera.pose.position;
     const f = camera.forward(), up = camera.up();
@@ -155,8 +159,12 @@ export class FurRenderer implements TrackRenderer {
     const far = distance + radius;
     const near = Math.max(far * NEAR_SHARE_OF_FAR, distance - radius);
     const projection = perspective((camera.fovYDeg * Math.PI) / 180, width / height, near, far);
-    const frame = { model, view, projection, eye, time: timeSeconds, furLength };
+    return { model, view, projection, eye, time: timeSeconds, furLength };
+  }
 
+  render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
+    const gl = this.gl, s = this.info;
+    const frame = this.frameFor(camera, timeSeconds, settings, width, height);
     gl.viewport(0, 0, width, height);
     gl.clearColor(s.background[0], s.background[1], s.background[2], 1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
@@ -192,21 +200,40 @@ export class FurRenderer implements TrackRenderer {
     gl.disable(gl.BLEND);
 
     if (furShader && this.strands) {
-      this.setUniforms(this.strands, frame);
-      this.buffers.drawStrands();
+      this.setPassUniforms(this.strands, frame);
+      this.strands.run();
     } else if (has('fins') && settings.fins && this.fins) {
-      this.setUniforms(this.fins, frame);
+      this.setPassUniforms(this.fins, frame);
       gl.disable(gl.CULL_FACE);  // fins are seen from either side
       gl.depthMask(false);
       gl.enable(gl.BLEND);
       gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-      this.buffers.drawFins();
+      this.fins.run();
       gl.disable(gl.BLEND);
       gl.depthMask(true);
     }
     gl.colorMask(true, true, true, true);
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.CULL_FACE);
+  }
+
+  private setPassUniforms(pass: EmulatedGeometryPass, frame: Frame): void {
+    this.setUniforms(pass.capture, frame);
+    this.setUniforms(pass.draw, frame);
+  }
+
+  // The fins the stage's fin.geom makes in a frame (native:
+  // FurRenderer::countFins), drawn nowhere; null without fins.
+  countFins(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): number | null {
+    if (!this.fins) return null;
+    this.setPassUniforms(this.fins, this.frameFor(camera, timeSeconds, settings, width, height));
+    return this.fins.run(true) / 2;  // each fin a strip of two triangles
+  }
+
+  // The fin count check's verdict on FINS seen from CAMERA (the core's, as native's).
+  finCountVerdict(fins: number, camera: Camera, timeSeconds: number): { passed: boolean; detail: string } {
+    const [x, y, z] = camera.pose.position;
+    return JSON.parse(this.core.finCount(fins, timeSeconds, x, y, z)) as { passed: boolean; detail: string };
   }
 
   dispose(): void {

@@ -22,7 +22,9 @@ export class Program {
   private constructor(private gl: WebGL2RenderingContext, readonly id: WebGLProgram) {}
 
   // Throws ShaderError naming the file and line of the first problem.
-  static async build(gl: WebGL2RenderingContext, core: Core, vertex: CoreSource, fragment: CoreSource): Promise<Program> {
+  // FEEDBACK: outputs transform feedback captures, interleaved in this order.
+  static async build(gl: WebGL2RenderingContext, core: Core, vertex: CoreSource, fragment: CoreSource,
+    feedback: string[] = []): Promise<Program> {
     const shader = (type: number, source: CoreSource) => {
       const s = gl.createShader(type)!;
       gl.shaderSource(s, source.text);
@@ -34,6 +36,7 @@ export class Program {
     gl.attachShader(p, vs);
     gl.attachShader(p, fs);
     gl.bindAttribLocation(p, 0, 'aCorner');
+    if (feedback.length) gl.transformFeedbackVaryings(p, feedback, gl.INTERLEAVED_ATTRIBS);
     gl.linkProgram(p);
     const parallel = gl.getExtension('KHR_parallel_shader_compile');
     if (parallel)
@@ -43,7 +46,7 @@ export class Program {
         if (!gl.getShaderParameter(s, gl.COMPILE_STATUS))
           throw new ShaderError(`${what} shader does not compile:\n${mapCompilerLog(core, gl.getShaderInfoLog(s) ?? '', source)}`);
       if (!gl.getProgramParameter(p, gl.LINK_STATUS))
-        throw new ShaderError(`the program does not link:\n${mapCompilerLog(core, gl.getProgramInfoLog(p) ?? '', fragment)}`);
+        throw new ShaderError(`the program does not link:\n${mapCompilerLog(core, gl.getProgramInfoLog(p) ?? '', feedback.length ? vertex : fragment)}`);
     } catch (e) {
       gl.deleteProgram(p);
       throw e;

@@ -5,15 +5,13 @@
 //  - each catalogued mistake (tests/mistakes/<stage>/*.json: text
 //    replacements in a solved lab, "caught_by" the exact set of checks native
 //    `raylab check` fails, which tests/e2e/stage_checks_test.cpp holds it to)
-//    fails exactly the same checks in the page, but for what WebGL 2 cannot
-//    run, listed as native only: the count checks (fin_count: no geometry
-//    shader whose output could be counted) and mistakes in a geometry shader
-//    (fin.geom, strand.geom: the page draws fins and strands instanced, from
-//    the student's functions but not from their geometry shader), which the
-//    page must then pass.
+//    fails exactly the same checks in the page, with no exception: the
+//    student's geometry shaders (fin.geom, strand.geom) run in the page
+//    (emulated: framework/src/core/geometry_emulation.h) and the fin count
+//    is counted there.
 // For the first mistake of each stage the page's hints and score line must
 // also be native's, word for word (native `raylab check` run on the same
-// files; but for a mistake in a geometry shader, which the page does not run).
+// files).
 // Default: the first two mistakes of each stage, for trying a change;
 // --all: every mistake (ctest web_parity, labels web and web-parity);
 // --every N [--offset K]: of all mistakes in course order, those whose index
@@ -38,7 +36,6 @@ if (args.includes('--every') && !(Number.isInteger(every) && every >= 1 && offse
 const all = args.includes('--all') || every >= 1;
 const labgen = resolve(option('--labgen', join(projectRoot, 'build/raylab-labgen')));
 const onlyStages = option('--stages', '').split(',').filter(Boolean);
-const NATIVE_ONLY = new Set(['fin_count']);
 const raylab = join(projectRoot, 'build/raylab');
 
 // The hint and score lines of a report, as both print them.
@@ -71,7 +68,6 @@ let browser;
 const started = Date.now();
 let mistakesChecked = 0;
 let mistakesSeen = 0;  // in course order, for --every
-const nativeOnly = [];
 const scoreGaps = [];  // |page - native| of each compared score
 try {
   browser = await launchBrowser();
@@ -95,20 +91,14 @@ try {
     for (const file of chosen) {
       const m = JSON.parse(readFileSync(join(dir, file), 'utf8'));
       const labFiles = { ...solvedFiles };
-      const inGeometryShader = m.file.endsWith('.geom');
       for (const [from, to] of m.replace) {
         if (!labFiles[m.file].includes(from)) throw new Error(`${file}: '${from}' is not in ${stage.id}/${m.file}`);
         labFiles[m.file] = labFiles[m.file].replace(from, to);
       }
       // The score (and the handed-out lab's pictures it needs) only where compared.
-      const compared = !inGeometryShader && file === files[0];
+      const compared = file === files[0];
       const r = await runCheck({ stage: stage.id, labFiles, score: compared });
-      const expected = inGeometryShader ? [] : m.caught_by.filter((c) => !NATIVE_ONLY.has(c));
-      const missed = m.caught_by.filter((c) => !expected.includes(c));
-      if (missed.length) {
-        nativeOnly.push(`${stage.id}/${file}: ${missed.join(', ')}` + (inGeometryShader ? ` (a mistake in ${m.file})` : '') +
-          (expected.length ? '' : '; the page passes it'));
-      }
+      const expected = m.caught_by;
       if (r.ok && compared) {
         // The hint and note lines word for word; the score within a quarter
         // point: the page's pictures differ from native's within the
@@ -117,13 +107,10 @@ try {
         const native = verdictLines(nativeReport(stage, labFiles)), mine = verdictLines(r.report);
         const score = (lines) => Number((lines.find((l) => l.startsWith('score: ')) ?? '').match(/^score: ([0-9.]+)/)?.[1] ?? NaN);
         const words = (lines) => JSON.stringify(lines.filter((l) => !l.startsWith('score: ')));
-        // A stage with a count check the page cannot run leaves its score to native.
-        const natively = (stage.count_checks ?? []).length > 0;
         const gap = Math.abs(score(native) - score(mine));
-        const agree = words(native) === words(mine) &&
-          (natively ? mine.some((l) => l.startsWith('score: given natively only')) : gap <= 0.25);
-        if (!natively) scoreGaps.push(gap);
-        check(agree, `${stage.id}/${file}: the page's hints are native's, its score ${natively ? 'left to native' : score(mine)}, native's ${score(native)}` +
+        const agree = words(native) === words(mine) && gap <= 0.25;
+        scoreGaps.push(gap);
+        check(agree, `${stage.id}/${file}: the page's hints are native's, its score ${score(mine)}, native's ${score(native)}` +
           (agree ? '' : `\n  native: ${native.join('\n          ')}\n  page:   ${mine.join('\n          ')}`));
       }
       check(r.ok && same(r.failedChecks, expected),
@@ -141,7 +128,6 @@ try {
 console.log(`\n${mistakesChecked} mistakes checked in ${((Date.now() - started) / 1000).toFixed(0)} s`);
 const finite = scoreGaps.filter((g) => Number.isFinite(g));
 if (finite.length) console.log(`scores compared with native: ${finite.length}, largest gap ${Math.max(...finite).toFixed(2)} points`);
-if (nativeOnly.length) console.log(`caught natively only (WebGL 2 has no geometry shader):\n  ${nativeOnly.join('\n  ')}`);
 if (failures.length) {
   console.log(`\n${failures.length} parity check(s) failed`);
   process.exit(1);

@@ -95,11 +95,21 @@ test('a closed sphere: every edge between two triangles (E = 3T/2)', async () =>
     }
 });
 
-test('the fins are the web\'s instanced quads, and the lab\'s geometry shader TODO is still listed', async () => {
+test('fin.geom runs in the page: rewritten into a vertex shader that keeps its lines, fed by fin.vert', async () => {
     const core = await loadCore();
     const { handle, info } = openFur(core, { stage: 'f3', lab: '/raylab/labs' });
     try {
-        assert.ok(info.programs.fins.vertex.origin.some(([file]) => file === 'web/shaders/fin_instanced.vert'));
+        const fins = info.programs.fins;
+        assert.ok(fins.vertex.origin.some(([file]) => file === 'labs/f3-fins/fin.vert'));
+        // The emulated shader's lines come from the student's fin.geom (and its includes) but for generated ones.
+        const from = new Set(fins.geometry.origin.map(([file]) => file));
+        assert.ok(from.has('labs/f3-fins/fin.geom'), [...from].join(', '));
+        assert.ok([...from].every((f) => f === '<raylab>' || f.startsWith('labs/') || f.startsWith('framework/')), [...from].join(', '));
+        const line = fins.geometry.text.split('\n').findIndex((l) => l.includes('raylab_geometryMain()') && !l.includes(';'));
+        assert.equal(fins.geometry.origin[line][0], 'labs/f3-fins/fin.geom', 'main keeps its file and line');
+        // lines_adjacency in, triangle strips of at most 4 out: 2 triangles of 3 corners per edge.
+        assert.deepEqual([fins.emulation.input, fins.emulation.corners, fins.emulation.output, fins.emulation.slots], ['lines_adjacency', 4, 'triangles', 2]);
+        assert.deepEqual(fins.emulation.captured, ['vWorldPos', 'vNormal', 'vUv', 'vLabTodo']);
         assert.ok(info.todos.some((t) => t.file.endsWith('.geom')), JSON.stringify(info.todos));
     } finally {
         handle.delete();

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+
 namespace raylab {
 
 // dot(PB, N_abc) * dot(PB, N_bcd) with N_abc = cross(B - A, C - B) and
@@ -33,5 +35,14 @@ struct SilhouetteCount {
 // `certain + uncertain` fins.
 SilhouetteCount countSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency,
                                  const glm::dmat4& model, const glm::dvec3& eye);
+
+// The fin count check's verdict on EMITTED fins (native: a query of the
+// real geometry shader; the page: its emulation's transform feedback)
+// against CPU, for a mesh of EDGES edges, in the report's words.
+struct FinCountVerdict {
+    bool passed = false;
+    std::string detail;  // "the geometry shader emitted 12 fins for 96 edges; ..."
+};
+FinCountVerdict judgeFinCount(long emitted, std::size_t edges, const SilhouetteCount& cpu);
 
 }  // namespace raylab

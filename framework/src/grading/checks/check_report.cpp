@@ -151,4 +151,11 @@ std::string formatSummary(int passed, int failed) {
     return format("%d passed, %d failed\n", passed, failed);
 }
 
+void tallyCount(CountOutcome& c, const std::string& view, bool passed, const std::string& detail) {
+    ++c.total;
+    if (c.example.empty()) c.example = "view " + view + ": " + detail;
+    if (passed) ++c.passed;
+    else if (c.firstFailure.empty()) c.firstFailure = "view " + view + ": " + detail;
+}
+
 }  // namespace raylab

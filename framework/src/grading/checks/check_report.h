@@ -78,4 +78,7 @@ std::string formatSummary(int passed, int failed);  // "3 passed, 1 failed"
 
 bool countPassed(const CountOutcome& c);
 
+// Adds one view's result of a count check to C (its example and first failure).
+void tallyCount(CountOutcome& c, const std::string& view, bool passed, const std::string& detail);
+
 }  // namespace raylab

@@ -1,0 +1,130 @@
+// The rewrite of a geometry shader into a vertex shader (the page's
+// geometry shaders, core/geometry_emulation.h), without a GL context: what
+// it reads from the layouts, how it rewrites the calls, and the errors it
+// gives for what it cannot run, each naming the student's file and line.
+// (tests/fur/geometry_emulation_draw_test.cpp draws it against real
+// geometry shaders.)
+#include "error.h"
+#include "geometry_emulation.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+using namespace raylab;
+
+namespace {
+
+// TEXT as assembled from FILE: line 1 generated (#version), the rest FILE's.
+ShaderSource source(const std::string& file, const std::string& text) {
+    ShaderSource s;
+    s.text = std::string(kGlslVersionLine) + "\n" + text;
+    s.origin.push_back({"<raylab>", 1});
+    std::istringstream in(text);
+    int n = 1;
+    for (std::string line; std::getline(in, line);) s.origin.push_back({file, n++});
+    return s;
+}
+
+const ShaderSource kVertex = source("v.vert",
+                                    "layout(location = 0) in vec3 aPosition;\n"
+                                    "out vec3 vPos;\n"
+                                    "flat out int vFlag;\n"
+                                    "void main() { vPos = aPosition; vFlag = 1; }\n");
+
+std::string errorOf(const std::string& geometry) {
+    try {
+        emulateGeometryShader(kVertex, source("g.geom", geometry));
+    } catch (const Error& e) { return e.what(); }
+    return "(no error)";
+}
+
+const char* kFins =
+    "layout(lines_adjacency) in;\n"
+    "layout(triangle_strip, max_vertices = 4) out;\n"
+    "in vec3 vPos[];\n"
+    "flat in int vFlag[];\n"
+    "out vec2 gUv;\n"
+    "void corner(vec3 p) { gl_Position = vec4(p, 1.0); gUv = p.xy; EmitVertex(); }\n"
+    "int twice() { EmitVertex(); return 2; }\n"
+    "void main()\n"
+    "{\n"
+    "    corner(vPos[1]); corner(vPos[2]);\n"
+    "    EndPrimitive();\n"
+    "}\n";
+
+}  // namespace
+
+TEST(GeometryEmulation, ReadsTheLayoutsAndTheVertexShadersOutputs) {
+    const EmulatedGeometry e = emulateGeometryShader(kVertex, source("g.geom", kFins));
+    EXPECT_EQ(e.inputName, "lines_adjacency");
+    EXPECT_EQ(e.corners, 4);
+    EXPECT_EQ(e.output, EmulatedOutput::Triangles);
+    EXPECT_EQ(e.maxVertices, 4);
+    EXPECT_EQ(e.slots, 2);  // triangles 0-1-2 and 1-2-3 of a strip of 4
+    EXPECT_EQ(e.verticesPerSlot, 3);
+    EXPECT_EQ(e.captured, (std::vector<std::string>{"vPos", "vFlag"}));
+    EXPECT_EQ(e.recordWords, 4);
+    EXPECT_EQ(e.attributes, 4);  // 4 corners x 4 words
+}
+
+TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
+    const EmulatedGeometry e = emulateGeometryShader(kVertex, source("g.geom", kFins));
+    const std::string& t = e.vertex.text;
+    // In a void function the body stops once its emissions are kept; in
+    // another one the call stays a call.
+    EXPECT_NE(t.find("{ if (raylab_emitVertex()) return; }"), std::string::npos) << t;
+    EXPECT_NE(t.find("int twice() { raylab_emitVertex(); return 2; }"), std::string::npos) << t;
+    EXPECT_NE(t.find("raylab_endPrimitive();"), std::string::npos);
+    EXPECT_NE(t.find("void raylab_geometryMain()"), std::string::npos);
+    EXPECT_NE(t.find("vec3 vPos[RAYLAB_CORNERS];"), std::string::npos);
+    // Every line of g.geom is still there, at its own origin.
+    std::istringstream in(t);
+    int line = 0, fromGeom = 0;
+    for (std::string l; std::getline(in, l);) {
+        const SourceLine w = e.vertex.where(++line);
+        if (w.file != "g.geom") continue;
+        ++fromGeom;
+        if (w.line == 8) EXPECT_EQ(l, "void raylab_geometryMain()");
+    }
+    EXPECT_EQ(fromGeom, 12);
+}
+
+TEST(GeometryEmulation, ReadsMaxVerticesThroughMacrosAndSkipsInactiveCode) {
+    const EmulatedGeometry e = emulateGeometryShader(
+        kVertex, source("g.geom",
+                        "#define SEGMENTS 7\n"
+                        "#define MAX_V (SEGMENTS)\n"
+                        "layout(triangles) in;\n"
+                        "layout(line_strip, max_vertices = MAX_V) out;\n"
+                        "in vec3 vPos[];\n"
+                        "#ifdef NOT_DEFINED\n"
+                        "out mat3 gNever;\n"
+                        "#endif\n"
+                        "void main() { gl_Position = vec4(vPos[0], 1.0); EmitVertex(); }\n"));
+    EXPECT_EQ(e.maxVertices, 7);
+    EXPECT_EQ(e.output, EmulatedOutput::Lines);
+    EXPECT_EQ(e.slots, 6);
+    EXPECT_EQ(e.verticesPerPrimitive(), 12);
+}
+
+TEST(GeometryEmulation, NamesTheFileAndLineOfWhatItCannotRun) {
+    const std::string head = "layout(triangles) in;\nlayout(points, max_vertices = 1) out;\n";
+    EXPECT_EQ(errorOf(head + "in vec3 vNormal[];\nvoid main() {}\n"),
+              "g.geom:3: the input vNormal is not an output of the vertex shader");
+    EXPECT_EQ(errorOf(head + "flat in float vFlag[];\nvoid main() {}\n"),
+              "g.geom:3: the input vFlag is float, the vertex shader's output int");
+    EXPECT_EQ(errorOf(head + "in VS { vec3 p; } vs[];\nvoid main() {}\n"),
+              "g.geom:3: an interface block (VS { ... }) cannot be passed between the page's "
+              "emulated shader stages; declare its members one by one");
+    EXPECT_EQ(errorOf(head + "void main()\n{\n    int i = gl_InvocationID;\n}\n"),
+              "g.geom:5: gl_InvocationID is not available where geometry shaders are emulated "
+              "(the page: WebGL 2 has none); raylab run and check run it natively");
+    EXPECT_EQ(errorOf(head + "out mat3 gBasis;\nvoid main() {}\n"),
+              "g.geom:3: the output gBasis (mat3) cannot be emulated: use float, int or uint "
+              "scalars and vectors");
+    EXPECT_EQ(errorOf("layout(triangles) in;\nlayout(points, max_vertices = N) out;\n"),
+              "g.geom:2: max_vertices = N is not a whole number the page can read");
+    EXPECT_EQ(errorOf("void main() {}\n"),
+              "g.geom: the geometry shader declares no input primitive (layout(triangles) in;)");
+}

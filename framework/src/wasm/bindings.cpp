@@ -7,6 +7,7 @@
 #include "embind_support.h"
 #include "error.h"
 #include "gpu_values.h"
+#include "mesh_shapes.h"
 #include "web_fur_stage.h"
 #include "web_ray_stage.h"
 
@@ -192,6 +193,7 @@ public:
             {"textures", {f.colorMap.string(), f.pattern.string(), f.finMap.string()}},
             {"bounds", {{"centre", vec3Json(s.boundsCentre())}, {"radius", s.boundsRadius()}}},
             {"strands", strands},
+            {"shapes", shapeNames()},
             {"mesh",
              {{"name", s.mesh().name},
               {"vertices", s.mesh().vertexCount()},
@@ -208,6 +210,9 @@ public:
     }
     val indices() const { return typedArray("Uint32Array", stage_->mesh().indices); }
     val adjacency() const { return typedArray("Uint32Array", stage_->adjacency().indices); }
+    // The procedural mesh FURMESH (1.. of shapes) instead of the scene's (0),
+    // the native window's key M; the mesh's arrays and info() change.
+    void showMesh(int furMesh) { stage_->showMesh(furMesh); }
     // The fin count check's verdict on EMITTED fins seen from (X, Y, Z) at
     // time T: {passed, detail}.
     std::string finCount(double emitted, float t, float x, float y, float z) const {
@@ -265,5 +270,6 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("indices", &FurStage::indices)
         .function("adjacency", &FurStage::adjacency)
         .function("modelMatrix", &FurStage::modelMatrix)
-        .function("finCount", &FurStage::finCount);
+        .function("finCount", &FurStage::finCount)
+        .function("showMesh", &FurStage::showMesh);
 }

@@ -1,6 +1,7 @@
 #include "web_fur_stage.h"
 
 #include "error.h"
+#include "mesh_shapes.h"
 #include "paths.h"
 
 #include <algorithm>
@@ -30,17 +31,7 @@ WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
                     ": features: a fur stage needs the \"mesh\" feature");
     scene_ = loadFurScene(sceneFile.empty() ? projectRoot() / "assets" / "scenes" / stage.scene
                                             : std::filesystem::path(sceneFile));
-    mesh_ = loadFurMesh(scene_);
-    // The bounding sphere (FurRenderer::setMesh).
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& p : mesh_.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    boundsCentre_ = 0.5f * (lo + hi);
-    for (const glm::vec3& p : mesh_.positions)
-        boundsRadius_ = std::max(boundsRadius_, glm::length(p - boundsCentre_));
-    if (stage.has("fins")) adjacency_ = buildEdgeAdjacency(mesh_);
+    showMesh(0);
 
     std::vector<std::string> defines = stage.defines();
     if (stage.has("fur_shader")) {
@@ -74,6 +65,25 @@ WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
     shells_ = {assemble(stage.program.vertex), assemble(stage.program.fragment), {}, {}};
     if (stage.has("fins")) fins_ = build(namedProgram(stage, "fins", "fins"));
     if (stage.has("fur_shader")) strands_ = build(namedProgram(stage, "strands", "fur_shader"));
+}
+
+void WebFurStage::showMesh(int furMesh) {
+    const std::vector<std::string>& shapes = shapeNames();
+    mesh_ = furMesh > 0 && furMesh <= int(shapes.size())
+                ? makeShape(shapes[std::size_t(furMesh - 1)],
+                            defaultDetail(shapes[std::size_t(furMesh - 1)]))
+                : loadFurMesh(scene_);
+    // The bounding sphere (FurRenderer::setMesh).
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh_.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    boundsCentre_ = 0.5f * (lo + hi);
+    boundsRadius_ = 0.0f;
+    for (const glm::vec3& p : mesh_.positions)
+        boundsRadius_ = std::max(boundsRadius_, glm::length(p - boundsCentre_));
+    adjacency_ = stage_->has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
 }
 
 FinCountVerdict WebFurStage::finCount(long emitted, float t, glm::vec3 eye) const {

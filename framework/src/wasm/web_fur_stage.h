@@ -49,6 +49,10 @@ public:
     const std::optional<StrandBudget>& strandBudget() const { return budget_; }
     const std::vector<OpenTodo>& todos() const { return todos_; }
     glm::vec3 boundsCentre() const { return boundsCentre_; }
+    // Draws the procedural mesh FURMESH (1..: shapeNames(), at its default
+    // detail) instead of the scene's (0), as the native window's key M does
+    // (FurRenderer::render): the mesh, adjacency and bounds change.
+    void showMesh(int furMesh);
     // The fin count check's verdict on EMITTED fins seen from EYE at time T
     // (native: FurRenderer::countCheck).
     FinCountVerdict finCount(long emitted, float t, glm::vec3 eye) const;

@@ -2,7 +2,7 @@
 // each only on the stages that have what it switches (stage.json's
 // features), and the overlay's rows for the same switches.
 import type { StageJson } from '../course/catalog.js';
-import { COLOR_MODES, FUR_TECHNIQUES, MAX_DEPTH, MAX_SHELLS, type RenderSettings } from '../raytrace/render_settings.js';
+import { COLOR_MODES, FUR_MESHES, FUR_TECHNIQUES, MAX_DEPTH, MAX_SHELLS, type RenderSettings } from '../raytrace/render_settings.js';
 
 const FUR_LENGTH_STEP = 1.25, MIN_FUR_LENGTH = 0.25, MAX_FUR_LENGTH = 4;
 const onOff = (b: boolean) => (b ? 'on' : 'off');
@@ -47,7 +47,16 @@ const SWITCHES: Switch[] = [
     apply: (s) => `technique ${FUR_TECHNIQUES[(s.furTechnique = (s.furTechnique + 1) % FUR_TECHNIQUES.length)]}`,
     row: (s) => `technique ${FUR_TECHNIQUES[s.furTechnique]}`,
   },
+  {
+    feature: 'mesh', keys: ['m', 'M'],
+    apply: (s) => `mesh ${meshName((s.furMesh = (s.furMesh + 1) % (FUR_MESHES.length + 1)))}`,
+    row: (s) => `mesh ${meshName(s.furMesh)}`,
+  },
 ];
+
+function meshName(furMesh: number): string {
+  return furMesh > 0 ? FUR_MESHES[furMesh - 1]! : "the scene's";
+}
 
 const has = (stage: StageJson, f: string) => stage.features.includes(f);
 

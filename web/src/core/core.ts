@@ -81,6 +81,7 @@ export interface FurStageInfo {
   bounds: { centre: [number, number, number]; radius: number };
   strands: { perTriangle: number; vertices: number } | null;
   mesh: { name: string; vertices: number; triangles: number };
+  shapes: string[];  // key M's meshes (native: shapeNames())
   todoMarks?: boolean;  // the programs mark TODO pixels (a check's target)
 }
 export interface FurStageHandle {
@@ -93,6 +94,7 @@ export interface FurStageHandle {
   adjacency(): Uint32Array;
   modelMatrix(t: number): Float32Array;
   finCount(emitted: number, t: number, x: number, y: number, z: number): string;  // {passed, detail}
+  showMesh(furMesh: number): void;  // key M: 0 the scene's mesh, i shapes[i - 1]
   delete(): void;
 }
 interface CoreFs {

@@ -17,7 +17,7 @@ import { Program } from '../gl/program.js';
 import { texture2D } from '../gl/textures.js';
 import type { RenderSettings } from '../raytrace/render_settings.js';
 import type { TrackRenderer } from '../tracks/track_renderer.js';
-import { FurMeshBuffers } from './fur_mesh_buffers.js';
+import { FurMeshBuffers, type MeshArrays } from './fur_mesh_buffers.js';
 
 const COLOR_UNIT = 0, PATTERN_UNIT = 1, FIN_UNIT = 2;
 // As natively: from inside the bounding sphere the near plane is this share of the far one.
@@ -49,12 +49,18 @@ export async function openFurStage(core: Core, catalog: Catalog, r: FurStageRequ
   return { handle, info };
 }
 
+// The core's current mesh.
+function meshArrays(handle: FurStageHandle): MeshArrays {
+  return { positions: handle.positions(), normals: handle.normals(), uvs: handle.uvs(), indices: handle.indices() };
+}
+
 interface Frame {
   model: Float32Array; view: Float32Array; projection: Float32Array; eye: number[]; time: number; furLength: number;
 }
 
 export class FurRenderer implements TrackRenderer {
   readonly notes: string[] = [];
+  private meshShown = 0;  // RenderSettings.furMesh of the mesh in buffers
   private textures: WebGLTexture[] = [];
 
   private constructor(
@@ -104,7 +110,7 @@ export class FurRenderer implements TrackRenderer {
       handle.delete();
       throw e;
     }
-    const mesh = { positions: handle.positions(), normals: handle.normals(), uvs: handle.uvs(), indices: handle.indices() };
+    const mesh = meshArrays(handle);
     const buffers = new FurMeshBuffers(gl, mesh);
     // Each input primitive's corners for the emulated geometry shaders:
     // an edge with its neighbours (A B C D) for the fins, a triangle for the strands.
@@ -162,7 +168,22 @@ export class FurRenderer implements TrackRenderer {
     return { model, view, projection, eye, time: timeSeconds, furLength };
   }
 
+  // Key M (native: FurRenderer::render): the procedural mesh FURMESH, or the scene's (0).
+  private showMesh(furMesh: number): void {
+    this.core.showMesh(furMesh);
+    const info = JSON.parse(this.core.info()) as FurStageInfo;
+    this.info.bounds = info.bounds;
+    this.info.mesh = info.mesh;
+    this.buffers.dispose();
+    const mesh = meshArrays(this.core);
+    this.buffers = new FurMeshBuffers(this.gl, mesh);
+    this.fins?.setCorners(meshCorners(mesh, this.core.adjacency()), MESH_CORNER_ATTRIBUTES);
+    this.strands?.setCorners(meshCorners(mesh, mesh.indices), MESH_CORNER_ATTRIBUTES);
+    this.meshShown = furMesh;
+  }
+
   render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
+    if ((settings.furMesh ?? 0) !== this.meshShown) this.showMesh(settings.furMesh ?? 0);
     const gl = this.gl, s = this.info;
     const frame = this.frameFor(camera, timeSeconds, settings, width, height);
     gl.viewport(0, 0, width, height);

@@ -8,6 +8,7 @@
 //  2. the f4 lab opens on the fur shader (its stage.json "technique"), its
 //     TODOs listed one per entry, each title a whole sentence;
 //  3. the fur track's Ready line leaves the shell count to the overlay,
+//     [ changes it, and key M draws the procedural meshes,
 //     which follows [ and ];
 //  4. stage 08's scene menu offers every ray-tracing scene, the OBJ mesh
 //     scene too;
@@ -75,6 +76,16 @@ try {
   await new Promise((res) => setTimeout(res, 300));
   const after = await shellsRow();
   check(before && after && before !== after, `[ changes the overlay's shell count: ${before} -> ${after}`);
+  // Key M: the next procedural mesh, drawn (native: the window's key M).
+  const meshRow = async () => (await text('overlay')).split('\n').join('  ').match(/mesh [^ ]+( [^ ]+)?/)?.[0];
+  const shot = async () => Buffer.from(await (await page.$('#view')).screenshot()).toString('base64');
+  const scenePicture = await shot();
+  await page.keyboard.press('m');
+  await page.keyboard.press('m');
+  await new Promise((res) => setTimeout(res, 500));
+  const torusRow = await meshRow();
+  const meshPicture = await shot();
+  check(torusRow === 'mesh torus' && scenePicture !== meshPicture, `M M shows the torus mesh (overlay: ${torusRow}; the picture ${scenePicture !== meshPicture ? 'changed' : 'did not change'})`);
 
   // 4. Stage 08's scene menu.
   await page.evaluate(() => window.raylab.switchTo({ stage: '08' }));

@@ -2,8 +2,8 @@
 // framework/src/wasm/web_fur_stage.h): every fur scene opens for every fur
 // stage with its mesh, edge adjacency and programs; every mistake in a fur
 // scene file gives native's one-line message (a sample also checked against
-// `raylab render` itself); a stage with fins gets the web's instanced fin
-// program and still lists the TODOs of the student's geometry shader.
+// `raylab render` itself); a stage with fins gets its own fin.geom rewritten
+// for WebGL 2 and lists its TODOs; key M's meshes are native's.
 import assert from 'node:assert/strict';
 import { readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
@@ -111,6 +111,28 @@ test('fin.geom runs in the page: rewritten into a vertex shader that keeps its l
         assert.deepEqual([fins.emulation.input, fins.emulation.corners, fins.emulation.output, fins.emulation.slots], ['lines_adjacency', 4, 'triangles', 2]);
         assert.deepEqual(fins.emulation.captured, ['vWorldPos', 'vNormal', 'vUv', 'vLabTodo']);
         assert.ok(info.todos.some((t) => t.file.endsWith('.geom')), JSON.stringify(info.todos));
+    } finally {
+        handle.delete();
+    }
+});
+
+test("key M's meshes: native's shapes, each with its own closed adjacency; 0 the scene's again", async () => {
+    const core = await loadCore();
+    const { FUR_MESHES } = await import(path.join(ROOT, 'web/dist/raytrace/render_settings.js'));
+    const { handle, info } = openFur(core, { stage: 'f3', scene: sceneAt(core, variant('mesh.detail', 7)) });
+    try {
+        assert.deepEqual(info.shapes, FUR_MESHES);
+        const edges = [handle.adjacency().length / 4];
+        for (let i = 1; i <= FUR_MESHES.length; ++i) {
+            handle.showMesh(i);
+            const shown = JSON.parse(handle.info());
+            assert.equal(shown.mesh.name.split('-')[0], FUR_MESHES[i - 1], JSON.stringify(shown.mesh));
+            assert.equal(2 * (handle.adjacency().length / 4), 3 * shown.mesh.triangles, FUR_MESHES[i - 1]);
+            edges.push(handle.adjacency().length / 4);
+        }
+        handle.showMesh(0);
+        assert.equal(handle.adjacency().length / 4, edges[0]);
+        assert.equal(new Set(edges).size, edges.length, `every mesh its own: ${edges}`);
     } finally {
         handle.delete();
     }

@@ -73,16 +73,9 @@ void WebFurStage::showMesh(int furMesh) {
                 ? makeShape(shapes[std::size_t(furMesh - 1)],
                             defaultDetail(shapes[std::size_t(furMesh - 1)]))
                 : loadFurMesh(scene_);
-    // The bounding sphere (FurRenderer::setMesh).
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& p : mesh_.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    boundsCentre_ = 0.5f * (lo + hi);
-    boundsRadius_ = 0.0f;
-    for (const glm::vec3& p : mesh_.positions)
-        boundsRadius_ = std::max(boundsRadius_, glm::length(p - boundsCentre_));
+    const BoundingSphere bounds = boundingSphere(mesh_);
+    boundsCentre_ = bounds.centre;
+    boundsRadius_ = bounds.radius;
     adjacency_ = stage_->has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
 }
 

@@ -114,4 +114,17 @@ void validateMesh(const Mesh& mesh) {
             fail("vertex " + std::to_string(i) + " has a value that is not a finite number");
 }
 
+BoundingSphere boundingSphere(const Mesh& mesh) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    BoundingSphere b;
+    b.centre = 0.5f * (lo + hi);
+    for (const glm::vec3& p : mesh.positions)
+        b.radius = std::max(b.radius, glm::length(p - b.centre));
+    return b;
+}
+
 }  // namespace raylab

@@ -26,6 +26,14 @@ struct Mesh {
     std::size_t bufferBytes() const;
 };
 
+// A sphere around every position: the centre of the bounding box and the
+// farthest position's distance from it (the near and far planes hug it).
+struct BoundingSphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+BoundingSphere boundingSphere(const Mesh& mesh);
+
 // Area-weighted vertex normals; vertices at one position get one normal
 // (smooth across seams). Triangles of zero area add nothing; a vertex that
 // touches only such triangles gets (0, 1, 0).

@@ -26,11 +26,10 @@ ShaderSource source(const std::string& file, const std::string& text) {
     return s;
 }
 
-const ShaderSource kVertex = source("v.vert",
-                                    "layout(location = 0) in vec3 aPosition;\n"
-                                    "out vec3 vPos;\n"
-                                    "flat out int vFlag;\n"
-                                    "void main() { vPos = aPosition; vFlag = 1; }\n");
+const ShaderSource kVertex = source("v.vert", "layout(location = 0) in vec3 aPosition;\n"
+                                              "out vec3 vPos;\n"
+                                              "flat out int vFlag;\n"
+                                              "void main() { vPos = aPosition; vFlag = 1; }\n");
 
 std::string errorOf(const std::string& geometry) {
     try {
@@ -92,16 +91,16 @@ TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
 
 TEST(GeometryEmulation, ReadsMaxVerticesThroughMacrosAndSkipsInactiveCode) {
     const EmulatedGeometry e = emulateGeometryShader(
-        kVertex, source("g.geom",
-                        "#define SEGMENTS 7\n"
-                        "#define MAX_V (SEGMENTS)\n"
-                        "layout(triangles) in;\n"
-                        "layout(line_strip, max_vertices = MAX_V) out;\n"
-                        "in vec3 vPos[];\n"
-                        "#ifdef NOT_DEFINED\n"
-                        "out mat3 gNever;\n"
-                        "#endif\n"
-                        "void main() { gl_Position = vec4(vPos[0], 1.0); EmitVertex(); }\n"));
+        kVertex,
+        source("g.geom", "#define SEGMENTS 7\n"
+                         "#define MAX_V (SEGMENTS)\n"
+                         "layout(triangles) in;\n"
+                         "layout(line_strip, max_vertices = MAX_V) out;\n"
+                         "in vec3 vPos[];\n"
+                         "#ifdef NOT_DEFINED\n"
+                         "out mat3 gNever;\n"
+                         "#endif\n"
+                         "void main() { gl_Position = vec4(vPos[0], 1.0); EmitVertex(); }\n"));
     EXPECT_EQ(e.maxVertices, 7);
     EXPECT_EQ(e.output, EmulatedOutput::Lines);
     EXPECT_EQ(e.slots, 6);

@@ -38,8 +38,8 @@ std::vector<Statement> fileScopeStatements(const std::vector<GlslToken>& t) {
     return out;
 }
 
-const std::set<std::string> kQualifiers = {"flat",   "smooth", "noperspective", "centroid",
-                                           "invariant", "highp", "mediump",  "lowp"};
+const std::set<std::string> kQualifiers = {"flat",      "smooth", "noperspective", "centroid",
+                                           "invariant", "highp",  "mediump",       "lowp"};
 
 // The `layout( ... )` group at I, if any: returns the index after it and
 // appends its words to WORDS.
@@ -144,8 +144,8 @@ std::string readWords(const std::string& type, int word) {
         words += (c ? ", " : "") + std::string("raylab_in") + std::to_string(w / 4) + "." +
                  "xyzw"[w % 4];
     }
-    const std::string u = b.components == 1 ? words
-                                            : "uvec" + std::to_string(b.components) + "(" + words + ")";
+    const std::string u =
+        b.components == 1 ? words : "uvec" + std::to_string(b.components) + "(" + words + ")";
     if (b.base == 'f') return "uintBitsToFloat(" + u + ")";
     if (b.base == 'i') return type + "(" + u + ")";
     return u;
@@ -155,15 +155,10 @@ std::string readWords(const std::string& type, int word) {
 
 std::string EmulatedGeometry::json() const {
     static const char* const kOutputs[] = {"points", "lines", "triangles"};
-    return nlohmann::json{{"input", inputName},
-                          {"corners", corners},
-                          {"recordWords", recordWords},
-                          {"attributes", attributes},
-                          {"captured", captured},
-                          {"output", kOutputs[int(output)]},
-                          {"maxVertices", maxVertices},
-                          {"slots", slots},
-                          {"verticesPerSlot", verticesPerSlot}}
+    return nlohmann::json{
+        {"input", inputName},         {"corners", corners},   {"recordWords", recordWords},
+        {"attributes", attributes},   {"captured", captured}, {"output", kOutputs[int(output)]},
+        {"maxVertices", maxVertices}, {"slots", slots},       {"verticesPerSlot", verticesPerSlot}}
         .dump();
 }
 
@@ -210,14 +205,15 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
                 if (in && (w == "points" || w == "lines" || w == "lines_adjacency" ||
                            w == "triangles" || w == "triangles_adjacency")) {
                     out.inputName = w;
-                    out.corners = w == "points"              ? 1
-                                  : w == "lines"             ? 2
-                                  : w == "lines_adjacency"   ? 4
-                                  : w == "triangles"         ? 3
-                                                             : 6;
+                    out.corners = w == "points"            ? 1
+                                  : w == "lines"           ? 2
+                                  : w == "lines_adjacency" ? 4
+                                  : w == "triangles"       ? 3
+                                                           : 6;
                     layoutLine = t[s.begin].line;
                 } else if (in && w == "invocations") {
-                    notInThePage(geometry, t[s.begin].line, "an instanced geometry shader (invocations)");
+                    notInThePage(geometry, t[s.begin].line,
+                                 "an instanced geometry shader (invocations)");
                 } else if (!in && (w == "points" || w == "line_strip" || w == "triangle_strip")) {
                     out.output = w == "points"       ? EmulatedOutput::Points
                                  : w == "line_strip" ? EmulatedOutput::Lines
@@ -259,10 +255,10 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     }
     if (!out.corners)
         throw Error(entryFile(geometry) + ": the geometry shader declares no input primitive "
-                                      "(layout(triangles) in;)");
+                                          "(layout(triangles) in;)");
     if (!out.verticesPerSlot || out.maxVertices <= 0)
         throw Error(at(geometry, layoutLine) + "the geometry shader declares no output "
-                                                "(layout(triangle_strip, max_vertices = N) out;)");
+                                               "(layout(triangle_strip, max_vertices = N) out;)");
     for (const Varying& v : outputs)
         if (v.array || !basicType(v.type).components)
             throw Error(at(geometry, v.line) + "the output " + v.name + " (" + v.type +
@@ -288,8 +284,8 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
                                    t[i + 2].text == ")" && t[i + 3].text == ";";
             if (statement && depth > 0 && inVoid.back()) {
                 // Its emissions kept, the body stops here (in a void function).
-                edits.push_back({k.pos, t[i + 3].pos + 1 - k.pos,
-                                 "{ if (raylab_emitVertex()) return; }"});
+                edits.push_back(
+                    {k.pos, t[i + 3].pos + 1 - k.pos, "{ if (raylab_emitVertex()) return; }"});
                 i += 3;
             } else {
                 edits.push_back({k.pos, w.size(), "raylab_emitVertex"});
@@ -312,8 +308,8 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             edits.push_back({t[close + 1].pos, t[close + 2].pos + 11 - t[close + 1].pos, ""});
             readsPositions = true;
         } else if (w == "gl_InvocationID" || w == "gl_Layer" || w == "gl_ViewportIndex" ||
-                   w == "gl_PrimitiveID" || w == "EmitStreamVertex" ||
-                   w == "EndStreamPrimitive" || w == "gl_PointSize" || w == "gl_ClipDistance") {
+                   w == "gl_PrimitiveID" || w == "EmitStreamVertex" || w == "EndStreamPrimitive" ||
+                   w == "gl_PointSize" || w == "gl_ClipDistance") {
             notInThePage(geometry, k.line, w);
         }
     }
@@ -343,23 +339,27 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     }
     for (int c = 0; c < out.corners; ++c)
         for (std::size_t f = 0; f < fields.size(); ++f) {
-            const std::string target = fields[f].second == "gl_Position"
-                                           ? "raylab_inPosition"
-                                           : fields[f].second;
-            fill += "    " + target + "[" + std::to_string(c) + "] = " +
-                    readWords(fields[f].first, c * out.recordWords + offsets[f]) + ";\n";
+            const std::string target =
+                fields[f].second == "gl_Position" ? "raylab_inPosition" : fields[f].second;
+            fill += "    " + target + "[" + std::to_string(c) +
+                    "] = " + readWords(fields[f].first, c * out.recordWords + offsets[f]) + ";\n";
         }
     out.attributes = std::max(1, (out.corners * out.recordWords + 3) / 4);
     constexpr int kMaxAttributes = 16;  // WebGL 2's guaranteed vertex attributes
     if (out.attributes > kMaxAttributes)
-        throw Error(at(geometry, layoutLine) + "the vertex shader's outputs the geometry shader "
-                    "reads take " + std::to_string(out.recordWords) + " components per vertex, " +
-                    std::to_string(out.corners * out.recordWords) + " per primitive; the page "
-                    "passes at most " + std::to_string(4 * kMaxAttributes));
+        throw Error(at(geometry, layoutLine) +
+                    "the vertex shader's outputs the geometry shader "
+                    "reads take " +
+                    std::to_string(out.recordWords) + " components per vertex, " +
+                    std::to_string(out.corners * out.recordWords) +
+                    " per primitive; the page "
+                    "passes at most " +
+                    std::to_string(4 * kMaxAttributes));
     out.slots = std::max(0, out.maxVertices - (out.verticesPerSlot - 1));
 
     // The edits, last first, so that positions stay right.
-    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
+    std::sort(edits.begin(), edits.end(),
+              [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
     std::string body = text;
     for (const Edit& e : edits) body.replace(e.pos, e.length, e.text);
 
@@ -392,7 +392,9 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     }
     tail += "bool raylab_emitVertex()\n{\n"
             "    int n = raylab_emitted;\n"
-            "    if (n >= " + std::to_string(out.maxVertices) + ") return true;\n"
+            "    if (n >= " +
+            std::to_string(out.maxVertices) +
+            ") return true;\n"
             "    raylab_emitted = n + 1;\n"
             "    if (n == raylab_first) {\n"
             "        raylab_firstStrip = raylab_strip;\n";
@@ -401,11 +403,14 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
                 "        bool odd = (n - raylab_stripStart) % 2 == 1;\n"
                 "        raylab_keep = n + (odd && raylab_corner < 2 ? 1 - raylab_corner : "
                 "raylab_corner);\n";
-    else
-        tail += "        raylab_keep = n + raylab_corner;\n";
+    else tail += "        raylab_keep = n + raylab_corner;\n";
     tail += "    }\n"
-            "    if (n == raylab_keep) {" + keep + " raylab_keptPosition = gl_Position; }\n"
-            "    if (n == raylab_first + " + std::to_string(v - 1) + ") {\n"
+            "    if (n == raylab_keep) {" +
+            keep +
+            " raylab_keptPosition = gl_Position; }\n"
+            "    if (n == raylab_first + " +
+            std::to_string(v - 1) +
+            ") {\n"
             "        raylab_lastStrip = raylab_strip;\n"
             "        return true;\n"
             "    }\n"
@@ -417,15 +422,19 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             "}\n"
             "void main()\n{\n"
             "    raylab_primitiveId = gl_InstanceID;\n"
-            "    raylab_first = gl_VertexID / " + std::to_string(v) + ";\n"
-            "    raylab_corner = gl_VertexID - " + std::to_string(v) + " * raylab_first;\n" +
-            fill +
+            "    raylab_first = gl_VertexID / " +
+            std::to_string(v) +
+            ";\n"
+            "    raylab_corner = gl_VertexID - " +
+            std::to_string(v) + " * raylab_first;\n" + fill +
             "    raylab_geometryMain();\n"
             "    bool kept = raylab_firstStrip >= 0 && raylab_firstStrip == raylab_lastStrip;\n" +
             give +
             "    // A primitive not made: a point outside the view.\n"
             "    gl_Position = kept ? raylab_keptPosition : vec4(2.0, 2.0, 2.0, 1.0);\n"
-            "    " + kEmulationKeptOutput + " = kept ? 1 : 0;\n"
+            "    " +
+            kEmulationKeptOutput +
+            " = kept ? 1 : 0;\n"
             "}\n";
 
     // Assemble with the origin: line 1, its #extension lines, the head, the

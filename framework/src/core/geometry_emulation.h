@@ -39,9 +39,9 @@ struct EmulatedGeometry {
     int recordWords = 0;                // 32-bit words per captured vertex
     int attributes = 0;                 // uvec4 attributes per input primitive
     EmulatedOutput output = EmulatedOutput::Triangles;
-    int maxVertices = 0;       // the geometry shader's max_vertices
-    int slots = 0;             // output primitives one input primitive can make
-    int verticesPerSlot = 0;   // 1, 2 or 3
+    int maxVertices = 0;      // the geometry shader's max_vertices
+    int slots = 0;            // output primitives one input primitive can make
+    int verticesPerSlot = 0;  // 1, 2 or 3
     int verticesPerPrimitive() const { return slots * verticesPerSlot; }
     std::string inputName;     // "lines_adjacency", for messages
     std::string json() const;  // everything but the source, for the page

@@ -121,8 +121,7 @@ long glslWholeNumber(const std::string& name, const std::map<std::string, std::s
     for (int depth = 0; depth < 8; ++depth) {
         while (t.size() >= 2 && t.front() == '(' && t.back() == ')')
             t = trim(t.substr(1, t.size() - 2));
-        if (!t.empty() && t.size() < 10 &&
-            t.find_first_not_of("0123456789") == std::string::npos)
+        if (!t.empty() && t.size() < 10 && t.find_first_not_of("0123456789") == std::string::npos)
             return std::stol(t);
         const auto m = macros.find(t);
         if (m == macros.end()) return -1;
@@ -199,8 +198,7 @@ GlslScan scanGlsl(const std::string& text) {
                 branches.push_back(b);
             } else if ((name == "elif" || name == "else") && !branches.empty()) {
                 Branch& b = branches.back();
-                const bool v =
-                    !b.taken && (name == "else" || Condition(rest, out.macros).value());
+                const bool v = !b.taken && (name == "else" || Condition(rest, out.macros).value());
                 b.active = b.outerActive && v;
                 b.taken = b.taken || v;
             } else if (name == "endif" && !branches.empty()) {
@@ -218,8 +216,9 @@ GlslScan scanGlsl(const std::string& text) {
         std::size_t j = i + 1;
         if (wordChar(c)) {
             // A word or a number (with its fraction, exponent and suffix).
-            while (j < text.size() && (wordChar(text[j]) || (text[j] == '.' && std::isdigit(
-                                                                                 static_cast<unsigned char>(c)))))
+            while (j < text.size() &&
+                   (wordChar(text[j]) ||
+                    (text[j] == '.' && std::isdigit(static_cast<unsigned char>(c)))))
                 ++j;
         }
         if (active()) out.tokens.push_back({text.substr(i, j - i), i, line});

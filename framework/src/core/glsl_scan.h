@@ -12,10 +12,10 @@
 namespace raylab {
 
 struct GlslToken {
-    std::string text;      // an identifier, a number, or one punctuation character
-    std::size_t pos = 0;   // where it starts in the text
-    int line = 1;          // 1-based line of the text
-    bool isWord() const;   // an identifier or keyword
+    std::string text;     // an identifier, a number, or one punctuation character
+    std::size_t pos = 0;  // where it starts in the text
+    int line = 1;         // 1-based line of the text
+    bool isWord() const;  // an identifier or keyword
 };
 
 struct GlslScan {

@@ -137,10 +137,11 @@ void FurRenderer::rebuild() {
     auto fins = stage_.has("fins") ? build(namedProgram(stage_, "fins", "fins")) : nullptr;
     auto strands =
         stage_.has("fur_shader") ? build(namedProgram(stage_, "strands", "fur_shader")) : nullptr;
-    auto finsEmulated = stage_.has("fins") ? emulated(namedProgram(stage_, "fins", "fins")) : nullptr;
-    auto strandsEmulated =
-        stage_.has("fur_shader") ? emulated(namedProgram(stage_, "strands", "fur_shader"))
-                                 : nullptr;
+    auto finsEmulated =
+        stage_.has("fins") ? emulated(namedProgram(stage_, "fins", "fins")) : nullptr;
+    auto strandsEmulated = stage_.has("fur_shader")
+                               ? emulated(namedProgram(stage_, "strands", "fur_shader"))
+                               : nullptr;
     shells_ = std::move(shells);
     fins_ = std::move(fins);
     strands_ = std::move(strands);

@@ -87,7 +87,8 @@ private:
     void drawFins(const Frame& f);
     void drawStrands(const Frame& f);
     void feedCorners();
-    long countPrimitives(bool strands, const Frame& f);  // the emulated passes' input primitives, from mesh_
+    long countPrimitives(bool strands,
+                         const Frame& f);  // the emulated passes' input primitives, from mesh_
 
     const StageInfo& stage_;
     StageSources sources_;

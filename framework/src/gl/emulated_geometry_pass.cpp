@@ -2,8 +2,7 @@
 
 namespace raylab {
 
-EmulatedGeometryPass::EmulatedGeometryPass(const ShaderSource& vertex,
-                                           const ShaderSource& geometry,
+EmulatedGeometryPass::EmulatedGeometryPass(const ShaderSource& vertex, const ShaderSource& geometry,
                                            const ShaderSource& fragment)
     : layout_(emulateGeometryShader(vertex, geometry)) {
     capture_ = std::make_unique<ShaderProgram>(vertex, captureFragmentShader(), layout_.captured);
@@ -46,13 +45,13 @@ void EmulatedGeometryPass::setCorners(const std::vector<float>& floats,
     // (16 bytes more: the last attribute may read past the last record.)
     const std::size_t recordBytes = std::size_t(layout_.recordWords) * 4;
     glBindBuffer(GL_ARRAY_BUFFER, records_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::size_t(cornerCount_) * recordBytes + 16),
-                 nullptr, GL_DYNAMIC_COPY);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::size_t(cornerCount_) * recordBytes + 16), nullptr,
+                 GL_DYNAMIC_COPY);
     glBindVertexArray(recordVao_);
     const GLsizei stride = GLsizei(std::size_t(layout_.corners) * recordBytes);
     for (int a = 0; a < layout_.attributes; ++a) {
-        const GLint location = glGetAttribLocation(draw_->id(),
-                                                   ("raylab_in" + std::to_string(a)).c_str());
+        const GLint location =
+            glGetAttribLocation(draw_->id(), ("raylab_in" + std::to_string(a)).c_str());
         if (location < 0) continue;  // not read
         glEnableVertexAttribArray(GLuint(location));
         glVertexAttribIPointer(GLuint(location), 4, GL_UNSIGNED_INT, stride,

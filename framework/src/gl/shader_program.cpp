@@ -88,7 +88,9 @@ ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geo
     GLint ok = GL_FALSE;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (!ok) {
-        std::string log = mapCompilerLog(infoLog(id_, true), geometry ? *geometry : feedback.empty() ? fragment : vertex);
+        std::string log = mapCompilerLog(infoLog(id_, true), geometry           ? *geometry
+                                                             : feedback.empty() ? fragment
+                                                                                : vertex);
         glDeleteProgram(id_);
         throw ShaderError("link error: " + firstErrorLine(log), log);
     }

@@ -11,8 +11,8 @@
 #include "geometry_emulation.h"
 #include "mesh.h"
 #include "shader_source.h"
-#include "stage_catalog.h"
 #include "silhouette.h"
+#include "stage_catalog.h"
 #include "stage_sources.h"
 #include "strand_budget.h"
 

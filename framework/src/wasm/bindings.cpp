@@ -43,6 +43,7 @@ public:
             q.bvh = r.value("bvh", -1);
             q.maxBlockBytes = r.value("maxBlockBytes", 0);
             q.todoMarks = r.value("todoMarks", false);
+            q.view = r.value("view", "color");
             stage_ = std::make_unique<WebRayStage>(q);
         } catch (const std::exception& e) { error_ = e.what(); }
     }
@@ -107,6 +108,20 @@ public:
         val out = val::object();
         out.set("eye", typedArray("Float32Array", std::vector<float>{eye.x, eye.y, eye.z}));
         out.set("eyeCellsMoved", moved);
+        return out;
+    }
+
+    // The debug view's picture of FLOATS (RGBA, rows bottom-up, WIDTH x
+    // HEIGHT): {rgba (top-down bytes), mapping} or {error}.
+    val viewPicture(const val& floats, int width, int height) const {
+        val out = val::object();
+        try {
+            std::string mapping;
+            const Image image = stage_->viewPicture(
+                emscripten::convertJSArrayToNumberVector<float>(floats), width, height, &mapping);
+            out.set("rgba", typedArray("Uint8Array", image.rgba));
+            out.set("mapping", mapping);
+        } catch (const std::exception& e) { out.set("error", std::string(e.what())); }
         return out;
     }
 
@@ -258,7 +273,8 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("eyeCells", &RayStage::eyeCells)
         .function("meshCorners", &RayStage::meshCorners)
         .function("meshMaterials", &RayStage::meshMaterials)
-        .function("placeEye", &RayStage::placeEye);
+        .function("placeEye", &RayStage::placeEye)
+        .function("viewPicture", &RayStage::viewPicture);
     using raylab::FurStage;
     emscripten::class_<FurStage>("FurStage")
         .constructor<std::string>()

@@ -54,7 +54,21 @@ WebRayStage::WebRayStage(const WebRayRequest& r)
                     std::to_string(r.maxBlockBytes / kSphereBlockStride) +
                     " (MAX_UNIFORM_BLOCK_SIZE " + std::to_string(r.maxBlockBytes) + " bytes, " +
                     std::to_string(kSphereBlockStride) + " per sphere)");
-    programs_ = assembleStagePrograms(*stage_, sources_, scene_, variant_);
+    view_ = parseDebugView(r.view);
+    if (viewNeedsReference(view_))
+        throw Error(std::string("the ") + debugViewName(view_) +
+                    " view counts the reference tracer's rays: raylab render --view " +
+                    debugViewName(view_) + " --reference draws it natively");
+    std::string entry;
+    if (view_ != DebugView::Color) {
+        // view_main.frag around the stage's own files (debug_views.h natively).
+        viewStage_ = *stage_;
+        for (const std::string& d : gpuViewDefines(GpuView(int(view_)), stage_->has("surface_at")))
+            viewStage_.extraDefines.push_back(d);
+        stage_ = &viewStage_;
+        entry = kViewFragmentEntry;
+    }
+    programs_ = assembleStagePrograms(*stage_, sources_, scene_, variant_, entry);
     todos_ = findOpenTodos(programs_.fragment);
     const std::string& text = programs_.fragment.text;
     auto reads = [&](const char* uniform) { return text.find(uniform) != std::string::npos; };
@@ -123,6 +137,24 @@ bool WebRayStage::moveEye(glm::vec3 eye) {
     eyeCellsCentre_ = eye;
     eyeBuilt_ = true;
     return true;
+}
+
+Image WebRayStage::viewPicture(const std::vector<float>& bottomUp, int width, int height,
+                               std::string* mapping) const {
+    const std::size_t row = std::size_t(width) * 4;
+    if (width <= 0 || height <= 0 || bottomUp.size() != row * std::size_t(height))
+        throw Error("viewPicture: " + std::to_string(bottomUp.size()) + " floats for " +
+                    std::to_string(width) + "x" + std::to_string(height));
+    std::vector<float> rows(bottomUp.size());
+    for (int y = 0; y < height; ++y)
+        std::copy_n(bottomUp.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row), row,
+                    rows.begin() + std::ptrdiff_t(std::size_t(y) * row));
+    // The shaders measure depth in their frame; people read the file's units
+    // (GpuViewRenderer::readFloats).
+    if (view_ == DebugView::Depth && frame_.scale != 1.0)
+        for (std::size_t i = 0; i < rows.size(); i += 4)
+            rows[i] = float(double(rows[i]) / frame_.scale);
+    return viewToPng(viewFromGpu(view_, rows, width, height), mapping);
 }
 
 }  // namespace raylab

@@ -11,6 +11,7 @@
 #include "scene.h"
 #include "scene_transform.h"
 #include "stage_programs.h"
+#include "view_pictures.h"
 
 #include <optional>
 #include <string>
@@ -20,13 +21,14 @@ namespace raylab {
 
 // What the page asks for (web/src/core/core.ts writes it as JSON).
 struct WebRayRequest {
-    std::string stage;        // id or number
-    std::string lab;          // the lab's folder (laid out like labs/); empty: the solution
-    std::string scene;        // a scene file; empty: the stage's own
-    bool demoLevers = false;  // the demo's levers (solution only), as `raylab demo`
-    int bvh = -1;             // 1 or 0: with or without the BVH; -1: the fastest choice
-    int maxBlockBytes = 0;    // the browser's MAX_UNIFORM_BLOCK_SIZE
-    bool todoMarks = false;   // also mark the pixels that reach a TODO stub (a check's target)
+    std::string stage;           // id or number
+    std::string lab;             // the lab's folder (laid out like labs/); empty: the solution
+    std::string scene;           // a scene file; empty: the stage's own
+    bool demoLevers = false;     // the demo's levers (solution only), as `raylab demo`
+    int bvh = -1;                // 1 or 0: with or without the BVH; -1: the fastest choice
+    int maxBlockBytes = 0;       // the browser's MAX_UNIFORM_BLOCK_SIZE
+    bool todoMarks = false;      // also mark the pixels that reach a TODO stub (a check's target)
+    std::string view = "color";  // a debug view (depth, normal, id): view_main.frag's program
 };
 
 class WebRayStage {
@@ -43,6 +45,12 @@ public:
     const ShaderVariant& variant() const { return variant_; }
     const StagePrograms& programs() const { return programs_; }
     const std::vector<OpenTodo>& todos() const { return todos_; }
+    DebugView view() const { return view_; }
+    // The picture of a frame of the debug view (RGBA floats the program
+    // wrote, rows bottom-up as WebGL reads them), depths in the scene
+    // file's units; *MAPPING says what was mapped how (view_pictures.h).
+    Image viewPicture(const std::vector<float>& bottomUp, int width, int height,
+                      std::string* mapping) const;
     // What the program was compiled with, for the overlay ("BVH", "light buffer", ...).
     std::vector<std::string> levers() const;
 
@@ -70,6 +78,8 @@ public:
 
 private:
     const StageInfo* stage_ = nullptr;
+    StageInfo viewStage_;  // the stage with a debug view's #defines (stage_ points here then)
+    DebugView view_ = DebugView::Color;
     StageSources sources_;
     Scene scene_;
     SceneTransform frame_;

@@ -6,6 +6,7 @@
 import { CheckPanel } from './check_panel.js';
 import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
+import { DebugViewMenu } from './debug_view.js';
 import { DiskFolder } from './disk_folder.js';
 import type { WatchedLab } from './lab_folder.js';
 import { downloadZip } from './submission_zip.js';
@@ -50,12 +51,16 @@ export class Page {
   private checks: CheckPanel;
   private work: WorkPanel;
   private disk: DiskFolder;  // Code: my lab folder…
+  private views: DebugViewMenu;  // View: colour, depth, normal, id
+  private shownView: string | undefined;  // the debug view drawn (undefined: colour)
+  private viewMapping = '';  // what the debug view's picture maps how
   // Said above the first stage's messages where there is no solution (a
   // students' page): where to start.
   private startHere = '';
 
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {
     this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'), $('check'));
+    this.views = new DebugViewMenu(gl, $('view-mode'), $('view-mode-label'), () => void this.load());
     this.work = new WorkPanel(catalog, () => void this.load(true), (m) => this.showError(m, true));
     this.disk = new DiskFolder(this.stageIds(), {
       opened: (again) => {
@@ -190,7 +195,9 @@ export class Page {
     $<HTMLAnchorElement>('guide-link').href = `guide.html?stage=${encodeURIComponent(stage.id)}`;
     const sceneName = $<HTMLSelectElement>('scene').value || stage.scene;
     const codeKind = $<HTMLSelectElement>('source').value;
-    const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}`;
+    const view = this.views.chosen(stage);
+    const label = `${stage.id} (${{ work: 'my work', disk: 'your files', lab: 'labs/' }[codeKind] ?? 'solution'}) on ${sceneName}` +
+      (view ? `, ${view} view` : '');
     this.work.show(codeKind === 'work');
     $('import').hidden = codeKind !== 'disk';  // a folder from disk can be kept in the page
     // Another stage, scene or code: the last check's pictures were of something else.
@@ -210,12 +217,13 @@ export class Page {
     try {
       const sources = await this.sources();
       // The solution gets the demo's levers, as in the native window.
-      const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName, undefined, undefined, true);
+      const loaded = await loadStage(this.gl, this.catalog, stage, sources, sceneName, { demoLevers: true, view });
       if (ticket !== this.loading) return loaded.renderer.dispose();
       this.busy = false;
       this.building = null;
       this.canvas.classList.remove('building');
       this.shownLabel = label;
+      this.shownView = view;
       this.renderer?.dispose();
       this.renderer = loaded.renderer;
       this.sceneShells = loaded.sceneShells;
@@ -389,7 +397,8 @@ export class Page {
     if (this.building || this.checks.running) return this.updateOverlay();
     if (this.renderer) {
       const camera = this.demo ? new Camera(flyThroughPose(this.camera.pose, this.time * 10), this.camera.fovYDeg) : this.camera;
-      this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);
+      if (this.shownView) this.viewMapping = this.views.painter.draw(this.renderer, camera, this.time, this.settings, this.canvas.width, this.canvas.height);
+      else this.renderer.render(camera, this.time, this.settings, this.canvas.width, this.canvas.height);
       // The frame time: waited for by reading one pixel back (the browser's
       // glFinish), so that it is the drawing's time, not how fast frames are
       // queued - and so that without vsync the queue cannot grow without end.
@@ -418,6 +427,7 @@ export class Page {
       `${this.shownLabel}  ${this.canvas.width}x${this.canvas.height}`,
       `frame ${median.toFixed(1)} ms${this.vsync ? ' (vsync on)' : ''}`,
       ...rows,
+      ...(this.shownView ? [this.viewMapping] : []),
       `time ${this.time.toFixed(1)} s${this.paused ? ' (paused)' : ''}`,
       ...(this.note ? [this.note] : []),
     ].join('\n');

@@ -13,6 +13,7 @@ import { openRayStage } from '../raytrace/stage_renderer.js';
 import { loadStage } from '../tracks/track_registry.js';
 import { backendName, runCheck, sourceLabel } from '../check/run_check.js';
 import type { OpenTodo } from '../core/core.js';
+import { DebugViewPainter } from './debug_view.js';
 
 export interface ViewRequest {
   stage: string;
@@ -25,6 +26,7 @@ export interface ViewRequest {
   height: number;
   bvh?: boolean;               // stage 08: walk the BVH; default: where it repays itself
   demoLevers?: boolean;        // the solution with the demo's levers (raylab demo's program)
+  debugView?: string;          // depth, normal, id: the ray tracer's debug view (app/debug_view.ts)
 }
 
 export interface ViewResult {
@@ -43,7 +45,7 @@ async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: V
   const sources: Sources = req.labFiles
     ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
     : { kind: req.source ?? 'solution' };
-  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, req.bvh, req.sceneText, req.demoLevers);
+  const loaded = await loadStage(gl, catalog, stage, sources, sceneName, { bvh: req.bvh, sceneText: req.sceneText, demoLevers: req.demoLevers, view: req.debugView });
   return { renderer: loaded.renderer, frame: frameOfView(loaded.camera, loaded.fovYDeg, view, stage) };
 }
 
@@ -56,6 +58,15 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
       try {
         const { renderer, frame } = await makeRenderer(gl, catalog, req);
         try {
+          if (req.debugView && req.debugView !== 'color') {
+            const painter = new DebugViewPainter(gl);
+            try {
+              const mapping = painter.draw(renderer, frame.camera, frame.time, frame.settings, req.width, req.height);
+              return { ok: true, png: canvas.toDataURL('image/png'), todos: renderer.todos, notes: [mapping] };
+            } finally {
+              painter.dispose();
+            }
+          }
           renderer.render(frame.camera, frame.time, frame.settings, req.width, req.height);
           return { ok: true, png: canvas.toDataURL('image/png'), todos: renderer.todos, notes: renderer.notes };
         } finally {

@@ -82,7 +82,7 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
     if (!r) {
       // With the BVH in every scene, as native's check (its generic program
       // walks the tree even in a scene of ten spheres, so a wrong walk fails there too).
-      r = await loadStage(gl, catalog, stage, sources, scene, true, undefined, false, true);
+      r = await loadStage(gl, catalog, stage, sources, scene, { bvh: true, todoMarks: true });
       renderers.set(scene, r);
     }
     return r;
@@ -131,7 +131,7 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
               const scene = sceneOfView(stage, view);
               let r = handedOut.get(scene);
               if (!r) {
-                r = await loadStage(gl, catalog, stage, { kind: 'lab' }, scene, true, undefined, false, true);
+                r = await loadStage(gl, catalog, stage, { kind: 'lab' }, scene, { bvh: true, todoMarks: true });
                 handedOut.set(scene, r);
               }
               const read = draw(r, view);

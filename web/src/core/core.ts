@@ -56,6 +56,8 @@ export interface RayStageHandle {
   meshCorners(): Float32Array;
   meshMaterials(): Int32Array;
   placeEye(x: number, y: number, z: number): { eye: Float32Array; eyeCellsMoved: boolean };
+  // A debug view's picture of the floats its program drew (rows bottom-up).
+  viewPicture(floats: Float32Array, width: number, height: number): { rgba?: Uint8Array; mapping?: string; error?: string };
   delete(): void;
 }
 // What the core gives for a fur stage.

@@ -50,6 +50,7 @@ export interface RayStageRequest {
   bvh?: boolean;           // stage 08: with or without the BVH; default: the fastest choice
   demoLevers?: boolean;    // the demo's levers (the solution only), as `raylab demo`
   todoMarks?: boolean;     // a check's target: also mark the pixels that reach a TODO stub
+  view?: string;           // a debug view (depth, normal, id): view_main.frag's program
 }
 
 // The core's stage for REQUEST, after the files it reads are in its file
@@ -63,6 +64,7 @@ export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catal
     demoLevers: r.demoLevers ?? false, bvh: r.bvh === undefined ? -1 : r.bvh ? 1 : 0,
     maxBlockBytes: Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)),
     todoMarks: r.todoMarks ?? false,
+    view: r.view ?? 'color',
   }));
   const error = handle.error();
   if (error) {
@@ -104,6 +106,14 @@ export class StageRenderer implements TrackRenderer {
 
   // Throws ShaderError (file:line) or Error (native's message: the scene,
   // the stage's limits, a missing file).
+  // A debug view's picture of FLOATS (RGBA, rows bottom-up), top-down
+  // bytes, and what was mapped how; throws Error.
+  viewPicture(floats: Float32Array, width: number, height: number): { rgba: Uint8Array; mapping: string } {
+    const r = this.core.viewPicture(floats, width, height);
+    if (r.error || !r.rgba) throw new Error(r.error ?? 'viewPicture: no picture');
+    return { rgba: r.rgba, mapping: r.mapping ?? '' };
+  }
+
   static async create(gl: WebGL2RenderingContext, core: Core, catalog: Catalog, request: RayStageRequest): Promise<StageRenderer> {
     if (request.stage.track !== 'raytrace') throw new Error(`stage ${request.stage.id} is not a ray-tracing stage`);
     const { handle, info } = await openRayStage(gl, core, catalog, request);

@@ -16,22 +16,31 @@ export interface LoadedStage {
   sceneShells: number; // the fur scene's shell count (what shells 0 means); 0 elsewhere
 }
 
+export interface LoadOptions {
+  // The ray tracer's BVH switch (stage 08); undefined: as natively.
+  bvh?: boolean;
+  // The scene file's text, not fetched (the browser tests' made-up scenes,
+  // window.raylab.renderView); it is still shown as assets/scenes/SCENENAME.
+  sceneText?: string;
+  // The ray tracer's program with the demo's levers (the solution only), as
+  // `raylab demo` and the native window showing the solution draw it.
+  demoLevers?: boolean;
+  // For a check's target (check/check_target.ts): the programs also mark
+  // the pixels that reach a TODO stub, in a second colour attachment.
+  todoMarks?: boolean;
+  // A ray tracer's debug view (depth, normal, id: app/debug_view.ts).
+  view?: string;
+}
+
 // SCENENAME: a file under assets/scenes/ ("lite.json", "fur/torus.json").
-// BVH: the ray tracer's BVH switch (stage 08); undefined: as natively.
-// SCENETEXT: the scene file's text, not fetched (the browser tests' made-up
-// scenes, window.raylab.renderView); it is still shown as assets/scenes/SCENENAME.
-// DEMOLEVERS: the ray tracer's program with the demo's levers (the solution
-// only), as `raylab demo` and the native window showing the solution draw it.
-// TODOMARKS: for a check's target (check/check_target.ts): the programs also
-// mark the pixels that reach a TODO stub, in a second colour attachment.
 export async function loadStage(
-  gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, bvh?: boolean,
-  sceneText?: string, demoLevers = false, todoMarks = false,
+  gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, o: LoadOptions = {},
 ): Promise<LoadedStage> {
+  const { bvh, sceneText, demoLevers = false, todoMarks = false, view } = o;
   if (stage.track === 'raytrace') {
     const core = await loadCore();
     const renderer = await StageRenderer.create(gl, core, catalog, {
-      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution', todoMarks,
+      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution', todoMarks, view,
     });
     const c = renderer.info.camera;
     return {

@@ -11,7 +11,8 @@
 //     [ changes it, and key M draws the procedural meshes,
 //     which follows [ and ];
 //  4. stage 08's scene menu offers every ray-tracing scene, the OBJ mesh
-//     scene too;
+//     scene too; its View menu draws the depth view (the overlay names it
+//     and its mapping), and hides on a fur stage;
 //  5. layout: at 1024x768 in a 1280x720 window the messages stay in view
 //     beside the picture; on a 390x844 phone the overlay covers little of it;
 //  6. a server started without --with-solutions: the page offers the labs
@@ -92,6 +93,19 @@ try {
   await settled();
   const scenes = await page.$$eval('#scene option', (os) => os.map((o) => o.value));
   check(scenes.includes('mesh.json') && scenes.includes('pro.json'), `08's scenes: ${scenes.join(', ')}`);
+  // The View menu: a debug view drawn by the stage's own files, its mapping in the overlay.
+  await choose('view-mode', 'depth');
+  await settled();
+  const depthOverlay = await text('overlay');
+  check(/, depth view/.test(depthOverlay) && /depth [0-9.]+\.\.[0-9.]+ mapped to white\.\.grey/.test(depthOverlay),
+    `View depth: the overlay names the view and its mapping: ${JSON.stringify(depthOverlay.split('\n').filter((l) => /depth/.test(l)))}`);
+  await choose('view-mode', 'color');
+  await settled();
+  await page.evaluate(() => window.raylab.switchTo({ stage: 'f1' }));
+  await settled();
+  check(await page.$eval('#view-mode-label', (l) => l.hidden), 'the View menu hides on a fur stage (no debug views there)');
+  await page.evaluate(() => window.raylab.switchTo({ stage: '08' }));
+  await settled();
 
   // 5. Layout.
   await choose('size', '1024x768');

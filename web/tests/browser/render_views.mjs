@@ -116,6 +116,35 @@ try {
     else fail(`labs/${stage.id} untouched: ${c.stdout.trim()}`);
   }
 
+  // 3b. The debug views (depth, normal, id) from the stage's own files, as
+  // `raylab render --view` draws them: the first and the last ray-tracing
+  // stage asked for, solution and lab as handed out.
+  const rayStages = stages.filter((s) => s.track === 'raytrace');
+  for (const stage of [...new Set([rayStages[0], rayStages.at(-1)])].filter(Boolean)) {
+    for (const source of ['solution', 'lab']) {
+      for (const debugView of ['depth', 'normal', 'id']) {
+        const what = `${stage.id} ${source} ${debugView} view`;
+        const r = await page.evaluate((req) => window.raylab.renderView(req), { stage: stage.id, source, debugView, width: 320, height: 240 });
+        if (!r.ok) { fail(`${what}: ${r.error}`); continue; }
+        const mine = join(outDir, stage.id, `${source}-${debugView}.png`);
+        writeFileSync(mine, dataUrlBytes(r.png));
+        const native = join(outDir, stage.id, `${source}-${debugView}.native.png`);
+        execFileSync(raylab, ['render', '--stage', stage.id, ...(source === 'solution' ? ['--solution'] : ['--lab', join(projectRoot, 'labs')]),
+          '--view', debugView, '--size', '320x240', '--out', native], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+        const c = spawnSync(raylab, ['compare', mine, native], { encoding: 'utf8' });
+        if (c.status === 0) console.log(`ok   ${what} as natively (${r.notes[0]})`);
+        else fail(`${what}: ${c.stdout.trim()}`);
+      }
+    }
+  }
+  if (rayStages.length) {
+    // Control: a view told apart from another (the page's depth against native's normal).
+    const dir = join(outDir, rayStages[0].id);
+    const other = spawnSync(raylab, ['compare', join(dir, 'solution-depth.png'), join(dir, 'solution-normal.native.png')], { encoding: 'utf8' });
+    if (other.status !== 1) fail(`control: the depth view passed as the normal view (${other.stdout.trim()})`);
+    else console.log('ok   control: the depth view is told apart from the normal view');
+  }
+
   // 4. A syntax error in a student's file: the page names the file and line.
   const first = catalog.stages.map((s) => s.info).find((s) => s.track === 'raytrace' && stages.includes(s)) ?? catalog.stages[0].info;
   const labDir = join(projectRoot, 'labs', first.id);

@@ -227,4 +227,28 @@ GlslScan scanGlsl(const std::string& text) {
     return out;
 }
 
+std::vector<GlslFunction> glslFunctions(const std::vector<GlslToken>& t) {
+    std::vector<GlslFunction> out;
+    int depth = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i].text == "{") {
+            // `type name ( ... ) {` at file scope (not a struct's or a block's).
+            if (depth++ == 0 && i > 0 && t[i - 1].text == ")") {
+                std::size_t open = i - 1;
+                int nest = 0;
+                for (; open > 0; --open) {
+                    if (t[open].text == ")") ++nest;
+                    else if (t[open].text == "(" && --nest == 0) break;
+                }
+                if (open >= 2 && t[open - 1].isWord() && t[open - 2].isWord())
+                    out.push_back({t[open - 2].text, t[open - 1].text, i, i});
+            }
+        } else if (t[i].text == "}" && depth > 0 && --depth == 0 && !out.empty() &&
+                   out.back().close == out.back().open) {
+            out.back().close = i;
+        }
+    }
+    return out;
+}
+
 }  // namespace raylab

@@ -27,6 +27,13 @@ struct GlslScan {
 // `&&`, `||` and whole numbers counts as true (its code is scanned).
 GlslScan scanGlsl(const std::string& text);
 
+// A function defined at file scope: `type name(...) { ... }`.
+struct GlslFunction {
+    std::string returnType, name;
+    std::size_t open = 0, close = 0;  // token indices of its body's braces
+};
+std::vector<GlslFunction> glslFunctions(const std::vector<GlslToken>& tokens);
+
 // The whole number NAME stands for: a literal, or a macro of one (through a
 // few macros and parentheses); -1 when it is neither.
 long glslWholeNumber(const std::string& name, const std::map<std::string, std::string>& macros);

@@ -44,6 +44,7 @@ public:
             q.maxBlockBytes = r.value("maxBlockBytes", 0);
             q.todoMarks = r.value("todoMarks", false);
             q.view = r.value("view", "color");
+            q.trace = r.value("trace", false);
             stage_ = std::make_unique<WebRayStage>(q);
         } catch (const std::exception& e) { error_ = e.what(); }
     }
@@ -108,6 +109,20 @@ public:
         val out = val::object();
         out.set("eye", typedArray("Float32Array", std::vector<float>{eye.x, eye.y, eye.z}));
         out.set("eyeCellsMoved", moved);
+        return out;
+    }
+
+    // With the trace build: pixel (X, Y)'s path, from SUMMARY (4 floats)
+    // and RECORDS (16 per call): {report} or {error}.
+    val traceReport(const val& summary, const val& records, int x, int y, int width,
+                    int height) const {
+        val out = val::object();
+        try {
+            out.set("report",
+                    stage_->traceReport(emscripten::convertJSArrayToNumberVector<float>(summary),
+                                        emscripten::convertJSArrayToNumberVector<float>(records), x,
+                                        y, width, height));
+        } catch (const std::exception& e) { out.set("error", std::string(e.what())); }
         return out;
     }
 
@@ -274,7 +289,8 @@ EMSCRIPTEN_BINDINGS(raylab_core) {
         .function("meshCorners", &RayStage::meshCorners)
         .function("meshMaterials", &RayStage::meshMaterials)
         .function("placeEye", &RayStage::placeEye)
-        .function("viewPicture", &RayStage::viewPicture);
+        .function("viewPicture", &RayStage::viewPicture)
+        .function("traceReport", &RayStage::traceReport);
     using raylab::FurStage;
     emscripten::class_<FurStage>("FurStage")
         .constructor<std::string>()

@@ -11,6 +11,7 @@
 #include "scene.h"
 #include "scene_transform.h"
 #include "stage_programs.h"
+#include "trace_recording.h"
 #include "view_pictures.h"
 
 #include <optional>
@@ -29,6 +30,7 @@ struct WebRayRequest {
     int maxBlockBytes = 0;       // the browser's MAX_UNIFORM_BLOCK_SIZE
     bool todoMarks = false;      // also mark the pixels that reach a TODO stub (a check's target)
     std::string view = "color";  // a debug view (depth, normal, id): view_main.frag's program
+    bool trace = false;  // the debug build that records one pixel's path (trace_recording.h)
 };
 
 class WebRayStage {
@@ -46,6 +48,12 @@ public:
     const StagePrograms& programs() const { return programs_; }
     const std::vector<OpenTodo>& todos() const { return todos_; }
     DebugView view() const { return view_; }
+    // With WebRayRequest::trace: the recorded path of pixel (X, Y) (0,0 top
+    // left) of a WIDTH x HEIGHT picture, in the words of `raylab trace`.
+    // SUMMARY: what uTraceRecord 0 wrote (colour, calls); RECORDS: 16
+    // floats per call (locations 0..3, trace_recording.h).
+    std::string traceReport(const std::vector<float>& summary, const std::vector<float>& records,
+                            int x, int y, int width, int height) const;
     // The picture of a frame of the debug view (RGBA floats the program
     // wrote, rows bottom-up as WebGL reads them), depths in the scene
     // file's units; *MAPPING says what was mapped how (view_pictures.h).
@@ -80,6 +88,7 @@ private:
     const StageInfo* stage_ = nullptr;
     StageInfo viewStage_;  // the stage with a debug view's #defines (stage_ points here then)
     DebugView view_ = DebugView::Color;
+    std::vector<TraceCallSite> traceSites_;
     StageSources sources_;
     Scene scene_;
     SceneTransform frame_;

@@ -8,6 +8,7 @@ import { Camera, type CameraPose, flyThroughPose } from './camera.js';
 import { frameOfView } from './frame.js';
 import { DebugViewMenu } from './debug_view.js';
 import { DiskFolder } from './disk_folder.js';
+import { PixelTraceButton } from './pixel_trace.js';
 import type { WatchedLab } from './lab_folder.js';
 import { downloadZip } from './submission_zip.js';
 import { WorkPanel } from '../editor/work_panel.js';
@@ -61,6 +62,10 @@ export class Page {
   constructor(readonly gl: WebGL2RenderingContext, readonly canvas: HTMLCanvasElement, readonly catalog: Catalog) {
     this.checks = new CheckPanel(gl, catalog, $('messages'), $('check-views'), $('check'));
     this.views = new DebugViewMenu(gl, $('view-mode'), $('view-mode-label'), () => void this.load());
+    new PixelTraceButton(gl, catalog, canvas, $('trace'), () => this.shown, async () => this.shown && {
+      stage: this.shown, sources: await this.sources(), sceneName: $<HTMLSelectElement>('scene').value || this.shown.scene,
+      camera: this.camera, time: this.time, settings: this.settings, width: canvas.width, height: canvas.height,
+    }, (text, isError) => (isError ? this.showError(text, true) : this.showMessage(text)));
     this.work = new WorkPanel(catalog, () => void this.load(true), (m) => this.showError(m, true));
     this.disk = new DiskFolder(this.stageIds(), {
       opened: (again) => {
@@ -234,7 +239,6 @@ export class Page {
       this.work.loaded(loaded.renderer.todos, '');
       // One entry per TODO, a blank line between them: titles run over lines.
       const todos = loaded.renderer.todos.map((t) => `• ${t.file}:${t.line}\n  ${t.title}`);
-      const notes = loaded.renderer.notes.map((n) => `In the browser: ${n}.`);
       const from = codeKind === 'work' ? `Your files: ${sources.kind === 'disk' ? sources.shown : ''}/, kept in this browser: ` +
         'the picture follows your edits (Ctrl+S: at once).'
         : sources.kind === 'disk'
@@ -245,7 +249,6 @@ export class Page {
         ...(this.startHere ? [this.startHere] : []),
         todos.length ? `Unfinished (magenta stripes where this code runs):\n${todos.join('\n\n')}` : `Ready: ${loaded.summary}.`,
         ...(from ? [from] : []),
-        ...notes,
       ].join('\n\n'));
       this.startHere = '';  // the first screen's only
     } catch (e) {

@@ -14,6 +14,7 @@ import { loadStage } from '../tracks/track_registry.js';
 import { backendName, runCheck, sourceLabel } from '../check/run_check.js';
 import type { OpenTodo } from '../core/core.js';
 import { DebugViewPainter } from './debug_view.js';
+import { tracePixel } from './pixel_trace.js';
 
 export interface ViewRequest {
   stage: string;
@@ -34,7 +35,7 @@ export interface ViewResult {
   png?: string;  // data URL
   error?: string;
   todos: OpenTodo[];
-  notes: string[];
+  notes: string[];  // a debug view's mapping
 }
 
 async function makeRenderer(gl: WebGL2RenderingContext, catalog: Catalog, req: ViewRequest) {
@@ -68,7 +69,7 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
             }
           }
           renderer.render(frame.camera, frame.time, frame.settings, req.width, req.height);
-          return { ok: true, png: canvas.toDataURL('image/png'), todos: renderer.todos, notes: renderer.notes };
+          return { ok: true, png: canvas.toDataURL('image/png'), todos: renderer.todos, notes: [] };
         } finally {
           renderer.dispose();
         }
@@ -76,6 +77,25 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
         const error = (e as Error).message;
         page.showError(error);  // what the page shows a student
         return { ok: false, error, todos: [], notes: [] };
+      }
+    },
+    // One pixel's path from the stage's own shader (app/pixel_trace.ts),
+    // from the scene's camera: the report, or {error}.
+    async tracePixel(req: { stage: string; source?: 'solution' | 'lab'; labFiles?: Record<string, string>; width: number; height: number; x: number; y: number }) {
+      try {
+        const stage = stageById(catalog, req.stage);
+        const sources: Sources = req.labFiles
+          ? { kind: 'disk', shown: `my-lab/${stage.id}`, files: new Map(Object.entries(req.labFiles)) }
+          : { kind: req.source ?? 'solution' };
+        const { renderer, frame } = await makeRenderer(gl, catalog, { stage: req.stage, source: req.source, labFiles: req.labFiles, width: req.width, height: req.height });
+        renderer.dispose();
+        const report = await tracePixel(gl, catalog, {
+          stage, sources, sceneName: stage.scene, camera: frame.camera, time: frame.time, settings: frame.settings,
+          width: req.width, height: req.height, x: req.x, y: req.y,
+        });
+        return { ok: true, report };
+      } catch (e) {
+        return { ok: false, error: (e as Error).message };
       }
     },
     // A lab folder watched as the page watches one, in the browser's private

@@ -58,6 +58,8 @@ export interface RayStageHandle {
   placeEye(x: number, y: number, z: number): { eye: Float32Array; eyeCellsMoved: boolean };
   // A debug view's picture of the floats its program drew (rows bottom-up).
   viewPicture(floats: Float32Array, width: number, height: number): { rgba?: Uint8Array; mapping?: string; error?: string };
+  // The trace build: a pixel's path in raylab trace's words.
+  traceReport(summary: Float32Array, records: Float32Array, x: number, y: number, width: number, height: number): { report?: string; error?: string };
   delete(): void;
 }
 // What the core gives for a fur stage.

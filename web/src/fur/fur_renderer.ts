@@ -59,7 +59,6 @@ interface Frame {
 }
 
 export class FurRenderer implements TrackRenderer {
-  readonly notes: string[] = [];
   private meshShown = 0;  // RenderSettings.furMesh of the mesh in buffers
   private textures: WebGLTexture[] = [];
 

@@ -51,6 +51,7 @@ export interface RayStageRequest {
   demoLevers?: boolean;    // the demo's levers (the solution only), as `raylab demo`
   todoMarks?: boolean;     // a check's target: also mark the pixels that reach a TODO stub
   view?: string;           // a debug view (depth, normal, id): view_main.frag's program
+  trace?: boolean;         // the build that records one pixel's path (app/pixel_trace.ts)
 }
 
 // The core's stage for REQUEST, after the files it reads are in its file
@@ -65,6 +66,7 @@ export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catal
     maxBlockBytes: Number(gl.getParameter(gl.MAX_UNIFORM_BLOCK_SIZE)),
     todoMarks: r.todoMarks ?? false,
     view: r.view ?? 'color',
+    trace: r.trace ?? false,
   }));
   const error = handle.error();
   if (error) {
@@ -75,7 +77,6 @@ export async function openRayStage(gl: WebGL2RenderingContext, core: Core, catal
 }
 
 export class StageRenderer implements TrackRenderer {
-  readonly notes: string[] = [];
   readonly todos: OpenTodo[];
   private textures = new Map<string, WebGLTexture>();
   private sphereBuffer: WebGLBuffer;
@@ -106,6 +107,13 @@ export class StageRenderer implements TrackRenderer {
 
   // Throws ShaderError (file:line) or Error (native's message: the scene,
   // the stage's limits, a missing file).
+  // The trace build's report of pixel (X, Y) from its SUMMARY and RECORDS.
+  traceReport(summary: Float32Array, records: Float32Array, x: number, y: number, width: number, height: number): string {
+    const r = this.core.traceReport(summary, records, x, y, width, height);
+    if (r.error || r.report === undefined) throw new Error(r.error ?? 'traceReport: no report');
+    return r.report;
+  }
+
   // A debug view's picture of FLOATS (RGBA, rows bottom-up), top-down
   // bytes, and what was mapped how; throws Error.
   viewPicture(floats: Float32Array, width: number, height: number): { rgba: Uint8Array; mapping: string } {
@@ -150,12 +158,18 @@ export class StageRenderer implements TrackRenderer {
     return r;
   }
 
-  render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void {
+  // COLUMN (the trace build, app/pixel_trace.ts): the picture's viewport
+  // placed at (column.x, column.y) of the target, and the record to keep.
+  render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number,
+    column?: { x: number; y: number; record: number }): void {
     const gl = this.gl, p = this.program;
-    gl.viewport(0, 0, width, height);
-    gl.clearColor(0, 0, 0, 1);  // as natively: a discarded fragment leaves black
-    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.viewport(column?.x ?? 0, column?.y ?? 0, width, height);
+    if (!column) {
+      gl.clearColor(0, 0, 0, 1);  // as natively: a discarded fragment leaves black
+      gl.clear(gl.COLOR_BUFFER_BIT);
+    }
     gl.useProgram(p.id);
+    if (column) gl.uniform1i(p.uniform('uTraceRecord'), column.record);
     // The eye moves with the scene into the shaders' frame; directions stay.
     const [x, y, z] = camera.pose.position;
     const placed = this.core.placeEye(x, y, z);

@@ -30,17 +30,19 @@ export interface LoadOptions {
   todoMarks?: boolean;
   // A ray tracer's debug view (depth, normal, id: app/debug_view.ts).
   view?: string;
+  // The ray tracer's build that records one pixel's path (app/pixel_trace.ts).
+  trace?: boolean;
 }
 
 // SCENENAME: a file under assets/scenes/ ("lite.json", "fur/torus.json").
 export async function loadStage(
   gl: WebGL2RenderingContext, catalog: Catalog, stage: StageJson, sources: Sources, sceneName: string, o: LoadOptions = {},
 ): Promise<LoadedStage> {
-  const { bvh, sceneText, demoLevers = false, todoMarks = false, view } = o;
+  const { bvh, sceneText, demoLevers = false, todoMarks = false, view, trace } = o;
   if (stage.track === 'raytrace') {
     const core = await loadCore();
     const renderer = await StageRenderer.create(gl, core, catalog, {
-      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution', todoMarks, view,
+      stage, sources, sceneName, sceneText, bvh, demoLevers: demoLevers && sources.kind === 'solution', todoMarks, view, trace,
     });
     const c = renderer.info.camera;
     return {

@@ -7,8 +7,6 @@ import type { OpenTodo } from '../core/core.js';
 
 export interface TrackRenderer {
   readonly todos: OpenTodo[];
-  // Notes for the page, e.g. what the web build draws differently.
-  readonly notes: string[];
   render(camera: Camera, timeSeconds: number, settings: RenderSettings, width: number, height: number): void;
   dispose(): void;
 }

@@ -12,7 +12,8 @@
 //     which follows [ and ];
 //  4. stage 08's scene menu offers every ray-tracing scene, the OBJ mesh
 //     scene too; its View menu draws the depth view (the overlay names it
-//     and its mapping), and hides on a fur stage;
+//     and its mapping), and hides on a fur stage; Trace a pixel and a click
+//     on the picture print that pixel's path;
 //  5. layout: at 1024x768 in a 1280x720 window the messages stay in view
 //     beside the picture; on a 390x844 phone the overlay covers little of it;
 //  6. a server started without --with-solutions: the page offers the labs
@@ -101,6 +102,15 @@ try {
     `View depth: the overlay names the view and its mapping: ${JSON.stringify(depthOverlay.split('\n').filter((l) => /depth/.test(l)))}`);
   await choose('view-mode', 'color');
   await settled();
+  // Trace a pixel: the button, then a click on the picture prints its path.
+  await page.click('#trace');
+  const canvasBox = await (await page.$('#view')).boundingBox();
+  await page.mouse.click(canvasBox.x + canvasBox.width / 2, canvasBox.y + canvasBox.height / 2);
+  await page.waitForFunction(() => /^(your shader's path|rays traced)/m.test(document.getElementById('messages').textContent) ||
+    /error/i.test(document.getElementById('messages').textContent), { timeout: 60000 });
+  const traced = await text('messages');
+  check(/^your shader's path at pixel 400,300 /.test(traced) && /^ray 1 \(main|^ray 1 \(trace/m.test(traced) && /^rays traced: \d+/m.test(traced),
+    `Trace a pixel, then a click on the middle of the picture: ${JSON.stringify(traced.split('\n').slice(0, 2))}`);
   await page.evaluate(() => window.raylab.switchTo({ stage: 'f1' }));
   await settled();
   check(await page.$eval('#view-mode-label', (l) => l.hidden), 'the View menu hides on a fur stage (no debug views there)');

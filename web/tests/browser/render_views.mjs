@@ -145,6 +145,30 @@ try {
     else console.log('ok   control: the depth view is told apart from the normal view');
   }
 
+  // 3c. One pixel's path from the stage's own shader (Trace a pixel): on the
+  // solution of the first ray-tracing stage with recursion, the rays its
+  // trace() follows are the reference tracer's (`raylab trace`), object by
+  // object and t by t; the lab as handed out (glass a mirror) takes another path.
+  const recursive = stages.find((s) => s.track === 'raytrace' && s.features.includes('recursion'));
+  if (recursive) {
+    const [px, py] = [400, 250];
+    // "hits sphere 1 at t=5.043" / "misses everything", per ray of the path.
+    const hits = (lines) => lines.map((l) => l.match(/hits [a-z ]+ \d+/)?.[0] ?? 'misses');
+    const ts = (lines) => lines.map((l) => Number(l.match(/ at t=([0-9.e+-]+)/)?.[1] ?? NaN));
+    const native = execFileSync(raylab, ['trace', '--stage', recursive.id, '--pixel', `${px},${py}`, '--size', '800x600'], { encoding: 'utf8' })
+      .split('\n').filter((l) => /^ray \d+ \(depth/.test(l));
+    for (const source of ['solution', 'lab']) {
+      const r = await page.evaluate((q) => window.raylab.tracePixel(q), { stage: recursive.id, source, width: 800, height: 600, x: px, y: py });
+      if (!r.ok) { fail(`${recursive.id} ${source}: tracing pixel ${px},${py}: ${r.error}`); continue; }
+      const mine = r.report.split('\n').filter((l) => /^ray \d+ \(trace,/.test(l));
+      const same = mine.length === native.length && hits(mine).every((h, i) => h === hits(native)[i]) &&
+        ts(mine).every((t, i) => Number.isNaN(t) ? Number.isNaN(ts(native)[i]) : Math.abs(t - ts(native)[i]) <= 1e-3 * Math.max(1, t));
+      const what = `${recursive.id} ${source}: pixel ${px},${py}'s path, ${mine.length} rays of trace() against the reference's ${native.length}`;
+      if (same === (source === 'solution')) console.log(`ok   ${what}: ${same ? 'the same objects and t' : 'told apart'}`);
+      else fail(`${what}:\n  page:      ${mine.slice(0, 6).join('\n             ')}\n  reference: ${native.slice(0, 6).join('\n             ')}`);
+    }
+  }
+
   // 4. A syntax error in a student's file: the page names the file and line.
   const first = catalog.stages.map((s) => s.info).find((s) => s.track === 'raytrace' && stages.includes(s)) ?? catalog.stages[0].info;
   const labDir = join(projectRoot, 'labs', first.id);

@@ -106,4 +106,14 @@ void ensureGlContext() {
     static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
 }
 
+ShaderSource assembledFrom(const std::string& file, const std::string& text) {
+    ShaderSource s;
+    s.text = std::string(kGlslVersionLine) + "\n" + text;
+    s.origin.push_back({"<raylab>", 1});
+    std::istringstream in(text);
+    int n = 1;
+    for (std::string line; std::getline(in, line);) s.origin.push_back({file, n++});
+    return s;
+}
+
 }  // namespace raylab::test

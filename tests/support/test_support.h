@@ -1,6 +1,8 @@
 #pragma once
 // Helpers for tests that run the `raylab` binary: a scratch folder and a
 // command runner that captures exit code, stdout and stderr.
+#include "shader_source.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -57,6 +59,10 @@ std::vector<std::string> filesUnder(const fs::path& dir);
 void replaceInFile(const fs::path& file, const std::string& from, const std::string& to);
 
 std::string readFile(const fs::path& file);
+
+// TEXT as if assembled from FILE: a generated `#version 330 core` line,
+// then FILE's lines, each at its own origin (the rewrite tests' input).
+ShaderSource assembledFrom(const std::string& file, const std::string& text);
 void writeFile(const fs::path& file, const std::string& text);
 
 // Names of the views reported as FAIL by `raylab check` output.

@@ -7,33 +7,26 @@
 #include "error.h"
 #include "geometry_emulation.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
 using namespace raylab;
+using raylab::test::assembledFrom;
 
 namespace {
 
-// TEXT as assembled from FILE: line 1 generated (#version), the rest FILE's.
-ShaderSource source(const std::string& file, const std::string& text) {
-    ShaderSource s;
-    s.text = std::string(kGlslVersionLine) + "\n" + text;
-    s.origin.push_back({"<raylab>", 1});
-    std::istringstream in(text);
-    int n = 1;
-    for (std::string line; std::getline(in, line);) s.origin.push_back({file, n++});
-    return s;
-}
-
-const ShaderSource kVertex = source("v.vert", "layout(location = 0) in vec3 aPosition;\n"
-                                              "out vec3 vPos;\n"
-                                              "flat out int vFlag;\n"
-                                              "void main() { vPos = aPosition; vFlag = 1; }\n");
+const ShaderSource kVertex =
+    assembledFrom("v.vert", "layout(location = 0) in vec3 aPosition;\n"
+                            "out vec3 vPos;\n"
+                            "flat out int vFlag;\n"
+                            "void main() { vPos = aPosition; vFlag = 1; }\n");
 
 std::string errorOf(const std::string& geometry) {
     try {
-        emulateGeometryShader(kVertex, source("g.geom", geometry));
+        emulateGeometryShader(kVertex, assembledFrom("g.geom", geometry));
     } catch (const Error& e) { return e.what(); }
     return "(no error)";
 }
@@ -55,7 +48,7 @@ const char* kFins =
 }  // namespace
 
 TEST(GeometryEmulation, ReadsTheLayoutsAndTheVertexShadersOutputs) {
-    const EmulatedGeometry e = emulateGeometryShader(kVertex, source("g.geom", kFins));
+    const EmulatedGeometry e = emulateGeometryShader(kVertex, assembledFrom("g.geom", kFins));
     EXPECT_EQ(e.inputName, "lines_adjacency");
     EXPECT_EQ(e.corners, 4);
     EXPECT_EQ(e.output, EmulatedOutput::Triangles);
@@ -68,7 +61,7 @@ TEST(GeometryEmulation, ReadsTheLayoutsAndTheVertexShadersOutputs) {
 }
 
 TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
-    const EmulatedGeometry e = emulateGeometryShader(kVertex, source("g.geom", kFins));
+    const EmulatedGeometry e = emulateGeometryShader(kVertex, assembledFrom("g.geom", kFins));
     const std::string& t = e.vertex.text;
     // In a void function the body stops once its emissions are kept; in
     // another one the call stays a call.
@@ -92,15 +85,16 @@ TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
 TEST(GeometryEmulation, ReadsMaxVerticesThroughMacrosAndSkipsInactiveCode) {
     const EmulatedGeometry e = emulateGeometryShader(
         kVertex,
-        source("g.geom", "#define SEGMENTS 7\n"
-                         "#define MAX_V (SEGMENTS)\n"
-                         "layout(triangles) in;\n"
-                         "layout(line_strip, max_vertices = MAX_V) out;\n"
-                         "in vec3 vPos[];\n"
-                         "#ifdef NOT_DEFINED\n"
-                         "out mat3 gNever;\n"
-                         "#endif\n"
-                         "void main() { gl_Position = vec4(vPos[0], 1.0); EmitVertex(); }\n"));
+        assembledFrom("g.geom",
+                      "#define SEGMENTS 7\n"
+                      "#define MAX_V (SEGMENTS)\n"
+                      "layout(triangles) in;\n"
+                      "layout(line_strip, max_vertices = MAX_V) out;\n"
+                      "in vec3 vPos[];\n"
+                      "#ifdef NOT_DEFINED\n"
+                      "out mat3 gNever;\n"
+                      "#endif\n"
+                      "void main() { gl_Position = vec4(vPos[0], 1.0); EmitVertex(); }\n"));
     EXPECT_EQ(e.maxVertices, 7);
     EXPECT_EQ(e.output, EmulatedOutput::Lines);
     EXPECT_EQ(e.slots, 6);

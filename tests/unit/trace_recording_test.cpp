@@ -5,23 +5,16 @@
 #include "error.h"
 #include "trace_recording.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
 using namespace raylab;
+using raylab::test::assembledFrom;
 
 namespace {
-
-ShaderSource source(const std::string& file, const std::string& text) {
-    ShaderSource s;
-    s.text = std::string(kGlslVersionLine) + "\n" + text;
-    s.origin.push_back({"<raylab>", 1});
-    std::istringstream in(text);
-    int n = 1;
-    for (std::string line; std::getline(in, line);) s.origin.push_back({file, n++});
-    return s;
-}
 
 const char* kProgram =
     "struct Ray { vec3 origin; vec3 dir; };\n"
@@ -49,7 +42,7 @@ const char* kProgram =
 
 std::string errorOf(const std::string& text) {
     try {
-        recordTrace(source("m.frag", text));
+        recordTrace(assembledFrom("m.frag", text));
     } catch (const Error& e) { return e.what(); }
     return "(no error)";
 }
@@ -57,7 +50,7 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(TraceRecording, RecordsEveryCallWithItsSite) {
-    const TraceRecording r = recordTrace(source("m.frag", kProgram));
+    const TraceRecording r = recordTrace(assembledFrom("m.frag", kProgram));
     ASSERT_EQ(r.sites.size(), 2u);
     EXPECT_EQ(r.sites[0].function, "lightVisible");
     EXPECT_EQ(r.sites[0].where.file, "m.frag");

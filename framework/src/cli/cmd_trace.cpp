@@ -1,10 +1,16 @@
 // raylab trace: one pixel's path through the scene, bounce by bounce, from
-// the CPU reference tracer (reference_tracer.h). Needs no OpenGL context.
+// the CPU reference tracer (reference_tracer.h), then the path the stage's
+// own shader (labs/, --lab DIR or --solution) takes there on the GPU, ray by
+// ray (gpu_trace.h): the two side by side show where a student's path
+// leaves the reference's.
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
 #include "error.h"
+#include "gl_context.h"
+#include "gpu_trace.h"
 #include "reference_tracer.h"
+#include "shader_program.h"
 #include "track_registry.h"
 
 #include <algorithm>
@@ -79,12 +85,32 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
     const glm::dvec3& c = sample.color;
     std::printf("colour: %s = %d, %d, %d of 255\n", vec(c).c_str(), byte(c.r), byte(c.g),
                 byte(c.b));
+
+    std::printf("\nyour shader's path (%s): a debug build of the program records each ray "
+                "findClosest() traces for this pixel, in order\n",
+                setup.sources.label.c_str());
+    std::fflush(stdout);
+    try {
+        auto context = createHeadlessContext(Backend::Auto);
+        std::fputs(traceShaderPath(stage, setup.sources, setup.scene, setup.camera, setup.time,
+                                   setup.settings, w, h, x, y)
+                       .c_str(),
+                   stdout);
+    } catch (const ShaderError& e) {
+        // The student's code does not compile: the reference's path alone.
+        std::printf("  not traced: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        // A scene the stage's shaders cannot draw (the reference tracer draws any).
+        std::printf("  not traced: %s\n", e.what());
+    }
     return 0;
 }
 
 Command traceCommand() {
     return {
-        "trace", "print one pixel's path bounce by bounce, from the CPU reference tracer (no GPU)",
+        "trace",
+        "print one pixel's path bounce by bounce: the CPU reference tracer's, then your shader's",
         [](CLI::App& cmd) {
             auto stage = std::make_shared<StageOptions>();
             auto pixel = std::make_shared<std::string>();

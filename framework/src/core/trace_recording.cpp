@@ -2,8 +2,11 @@
 
 #include "error.h"
 #include "glsl_scan.h"
+#include "shader_constants.h"
+#include "text_format.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace raylab {
 
@@ -152,6 +155,57 @@ TraceRecording recordTrace(const ShaderSource& fragment) {
          })
         emitGenerated(l);
     return out;
+}
+
+std::string formatTracedPath(const std::vector<TraceCallSite>& sites,
+                             const std::vector<float>& summary, const std::vector<float>& records,
+                             double scale, glm::dvec3 offset) {
+    if (summary.size() < 4 || records.size() % 16 != 0)
+        throw Error("a traced path: a summary of 4 floats and 16 per call");
+    auto number = [](double v) { return significant(v, 4); };
+    auto point = [&](const float* p) {
+        return "(" + number((p[0] - offset.x) / scale) + ", " + number((p[1] - offset.y) / scale) +
+               ", " + number((p[2] - offset.z) / scale) + ")";
+    };
+    auto direction = [&](const float* p) {
+        return "(" + number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) + ")";
+    };
+    std::string out;
+    const std::size_t calls = records.size() / 16;
+    for (std::size_t i = 0; i < calls; ++i) {
+        const float* r = &records[16 * i];  // origin site | dir id | t weight | stack depth hit
+        const int site = int(std::lround(r[3]));
+        std::string where = "?";
+        if (site >= 0 && std::size_t(site) < sites.size()) {
+            const TraceCallSite& c = sites[std::size_t(site)];
+            where = c.function + ", " + c.where.file + ":" + std::to_string(c.where.line);
+        }
+        out += "ray " + std::to_string(i + 1) + " (" + where;
+        if (r[13] >= 0.0f)
+            out += "; depth " + number(r[13]) + ", weight " + number(r[9]) + "," + number(r[10]) +
+                   "," + number(r[11]) + ", stack " + number(r[12]);
+        out += ") from " + point(r) + " along " + direction(r + 4) + ": ";
+        if (r[14] > 0.5f) {
+            const int id = int(std::lround(r[7]));
+            const int kind = id / shader::kObjectKindStride;
+            out += "hits " +
+                   std::string(kind >= 0 && kind < int(std::size(shader::kKindNames))
+                                   ? shader::kKindNames[kind]
+                                   : "object") +
+                   " " + std::to_string(id % shader::kObjectKindStride) +
+                   " at t=" + number(double(r[8]) / scale) + "\n";
+        } else {
+            out += "misses everything\n";
+        }
+    }
+    const int total = int(std::lround(summary[3]));
+    if (total > int(calls)) out += "(" + std::to_string(total - int(calls)) + " more not shown)\n";
+    auto byte = [](float c) {
+        return std::to_string(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+    };
+    return out + "rays traced: " + std::to_string(total) + "\ncolour: (" + number(summary[0]) +
+           ", " + number(summary[1]) + ", " + number(summary[2]) + ") = " + byte(summary[0]) +
+           ", " + byte(summary[1]) + ", " + byte(summary[2]) + " of 255\n";
 }
 
 }  // namespace raylab

@@ -18,6 +18,8 @@
 // Lines keep their origin: a compile error still names the student's line.
 #include "shader_source.h"
 
+#include <glm/glm.hpp>
+
 #include <string>
 #include <vector>
 
@@ -33,6 +35,14 @@ struct TraceRecording {
     ShaderSource fragment;
     std::vector<TraceCallSite> sites;  // by the site number a record holds
 };
+
+// The recorded rays, one line each, then how many and the pixel's colour,
+// in the words of `raylab trace`. SUMMARY: what uTraceRecord 0 wrote;
+// RECORDS: 16 floats per call (locations 0..3 above). SCALE and OFFSET: the
+// frame the shaders drew in (scene_transform.h), undone for people.
+std::string formatTracedPath(const std::vector<TraceCallSite>& sites,
+                             const std::vector<float>& summary, const std::vector<float>& records,
+                             double scale, glm::dvec3 offset);
 
 // FRAGMENT: a ray-tracing stage's assembled fragment shader. Throws Error
 // when it has no findClosest() definition or calls to record.

@@ -78,6 +78,7 @@ void StageRenderer::rebuild() {
     StagePrograms programs =
         assembleStagePrograms(stage_, sources_, scene_, variant_, fragmentEntry_);
     const ShaderSource& vertex = programs.vertex;
+    if (fragmentRewrite_) programs.fragment = fragmentRewrite_(programs.fragment);
     const ShaderSource& fragment = programs.fragment;
     auto program = std::make_unique<ShaderProgram>(vertex, fragment);
     program_ = std::move(program);
@@ -228,10 +229,31 @@ void StageRenderer::uploadStaticShapes() {
     setIntArray(p, "uTorusMaterial", torusMaterial);
 }
 
+void StageRenderer::setFragmentRewrite(std::function<ShaderSource(const ShaderSource&)> rewrite) {
+    fragmentRewrite_ = std::move(rewrite);
+    rebuild();
+}
+
 void StageRenderer::render(const Camera& camera, float timeSeconds,
                            const RenderSettings& settings) {
     target_->bind();
     target_->clear(0, 0, 0);
+    drawFrame(camera, timeSeconds, settings);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void StageRenderer::renderAt(GLuint framebuffer, int x, int y, int record, const Camera& camera,
+                             float timeSeconds, const RenderSettings& settings) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(x, y, target_->width(), target_->height());
+    program_->use();
+    glUniform1i(program_->uniform("uTraceRecord"), record);
+    drawFrame(camera, timeSeconds, settings);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void StageRenderer::drawFrame(const Camera& camera, float timeSeconds,
+                              const RenderSettings& settings) {
     const ShaderProgram& p = *program_;
     p.use();
     // The eye moves with the scene into the shaders' frame (in double, then
@@ -270,7 +292,6 @@ void StageRenderer::render(const Camera& camera, float timeSeconds,
         glUniformMatrix3fv(p.uniform("uTorusToLocal[0]"), GLsizei(toLocal.size()), GL_FALSE,
                            glm::value_ptr(toLocal[0]));
     canvas_.draw();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 }  // namespace raylab

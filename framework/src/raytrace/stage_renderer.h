@@ -22,6 +22,7 @@
 #include "sphere_blocks.h"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,14 @@ public:
     const ShaderVariant& variant() const { return variant_; }
 
     void rebuild() override;
+    // The program's fragment shader rewritten by REWRITE before it is
+    // compiled (the trace build, trace_recording.h); rebuilds.
+    void setFragmentRewrite(std::function<ShaderSource(const ShaderSource&)> rewrite);
+    // Draws the frame into FRAMEBUFFER with the picture's viewport placed at
+    // (X, Y), so that a chosen pixel of the picture lands on a chosen pixel
+    // of FRAMEBUFFER, with uTraceRecord = RECORD (gpu_trace.h).
+    void renderAt(GLuint framebuffer, int x, int y, int record, const Camera& camera,
+                  float timeSeconds, const RenderSettings& settings);
     const std::vector<std::filesystem::path>& sourceFiles() const override { return files_; }
     const std::vector<OpenTodo>& openTodos() const override { return todos_; }
 
@@ -58,6 +67,9 @@ private:
     // belong to a program, so this runs after every (re)build, not every frame.
     void uploadSceneConstants();
     void uploadStaticShapes();
+    // Everything but where the frame goes: the uniforms, textures and buffers, the draw.
+    void drawFrame(const Camera& camera, float timeSeconds, const RenderSettings& settings);
+    std::function<ShaderSource(const ShaderSource&)> fragmentRewrite_;
 
     const StageInfo& stage_;
     StageSources sources_;

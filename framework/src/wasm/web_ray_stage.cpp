@@ -167,62 +167,14 @@ Image WebRayStage::viewPicture(const std::vector<float>& bottomUp, int width, in
 std::string WebRayStage::traceReport(const std::vector<float>& summary,
                                      const std::vector<float>& records, int x, int y, int width,
                                      int height) const {
-    if (summary.size() < 4 || records.size() % 16 != 0)
-        throw Error("traceReport: a summary of 4 floats and 16 per call");
-    auto number = [](double v) { return significant(v, 4); };
-    // The shaders' frame back to the scene file's units.
-    auto point = [&](const float* p) {
-        return "(" + number((p[0] - frame_.offset.x) / frame_.scale) + ", " +
-               number((p[1] - frame_.offset.y) / frame_.scale) + ", " +
-               number((p[2] - frame_.offset.z) / frame_.scale) + ")";
-    };
-    auto direction = [&](const float* p) {
-        return "(" + number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) + ")";
-    };
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    std::string out = "your shader's path at pixel " + std::to_string(x) + "," + std::to_string(y) +
-                      " (0,0 top left): stage " + stage_->id + ", scene " + scene_.file + ", " +
-                      size + "; each ray findClosest() traced, in order:\n";
-    const std::size_t calls = records.size() / 16;
-    for (std::size_t i = 0; i < calls; ++i) {
-        const float* r = &records[16 * i];  // origin site | dir id | t weight | stack depth hit
-        const int site = int(std::lround(r[3]));
-        std::string where = "?";
-        if (site >= 0 && std::size_t(site) < traceSites_.size()) {
-            const TraceCallSite& c = traceSites_[std::size_t(site)];
-            where = c.function + ", " + c.where.file + ":" + std::to_string(c.where.line);
-        }
-        out += "ray " + std::to_string(i + 1) + " (" + where;
-        if (r[13] >= 0.0f)
-            out += "; depth " + number(r[13]) + ", weight " + number(r[9]) + "," + number(r[10]) +
-                   "," + number(r[11]) + ", stack " + number(r[12]);
-        out += ") from " + point(r) + " along " + direction(r + 4) + ": ";
-        if (r[14] > 0.5f) {
-            const int id = int(std::lround(r[7]));
-            const int kind = id / shader::kObjectKindStride;
-            out += "hits " +
-                   std::string(kind >= 0 && kind < int(std::size(shader::kKindNames))
-                                   ? shader::kKindNames[kind]
-                                   : "object") +
-                   " " + std::to_string(id % shader::kObjectKindStride) +
-                   " at t=" + number(double(r[8]) / frame_.scale) + "\n";
-        } else {
-            out += "misses everything\n";
-        }
-    }
-    const int total = int(std::lround(summary[3]));
-    if (std::size_t(total) > calls)
-        out += "(" + std::to_string(total - int(calls)) + " more calls not shown)\n";
-    auto byte = [](float c) {
-        return std::to_string(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
-    };
-    out += "rays traced: " + std::to_string(total) + "\ncolour: (" + number(summary[0]) + ", " +
-           number(summary[1]) + ", " + number(summary[2]) + ") = " + byte(summary[0]) + ", " +
-           byte(summary[1]) + ", " + byte(summary[2]) + " of 255\n";
-    out += "The reference's path beside yours is native's: raylab trace --stage " + stage_->id +
+    return "your shader's path at pixel " + std::to_string(x) + "," + std::to_string(y) +
+           " (0,0 top left): stage " + stage_->id + ", scene " + scene_.file + ", " + size +
+           "; each ray findClosest() traced, in order:\n" +
+           formatTracedPath(traceSites_, summary, records, frame_.scale, frame_.offset) +
+           "The reference's path beside yours is native's: raylab trace --stage " + stage_->id +
            " --pixel " + std::to_string(x) + "," + std::to_string(y) + " --size " + size +
            " (the reference tracer is every stage's answer in C++, so the page has none).\n";
-    return out;
 }
 
 }  // namespace raylab

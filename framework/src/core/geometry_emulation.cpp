@@ -1,6 +1,8 @@
 #include "geometry_emulation.h"
 
 #include "error.h"
+#include "glsl_declarations.h"
+#include "glsl_edits.h"
 #include "glsl_scan.h"
 
 #include <nlohmann/json.hpp>
@@ -12,94 +14,6 @@
 namespace raylab {
 
 namespace {
-
-// A global `in` or `out` variable.
-struct Varying {
-    std::string type, name;
-    bool array = false;
-    int line = 0;  // assembled line
-};
-
-// A statement at file scope: its tokens [begin, end), `;` or `}` included.
-struct Statement {
-    std::size_t begin = 0, end = 0;
-};
-
-std::vector<Statement> fileScopeStatements(const std::vector<GlslToken>& t) {
-    std::vector<Statement> out;
-    int depth = 0;
-    std::size_t begin = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const std::string& s = t[i].text;
-        if (s == "{") ++depth;
-        else if (s == "}" && --depth == 0) out.push_back({begin, i + 1}), begin = i + 1;
-        else if (s == ";" && depth == 0) out.push_back({begin, i + 1}), begin = i + 1;
-    }
-    return out;
-}
-
-const std::set<std::string> kQualifiers = {"flat",      "smooth", "noperspective", "centroid",
-                                           "invariant", "highp",  "mediump",       "lowp"};
-
-// The `layout( ... )` group at I, if any: returns the index after it and
-// appends its words to WORDS.
-std::size_t skipLayout(const std::vector<GlslToken>& t, std::size_t i, std::size_t end,
-                       std::vector<std::string>* words = nullptr) {
-    if (i >= end || t[i].text != "layout" || i + 1 >= end || t[i + 1].text != "(") return i;
-    std::size_t j = i + 2;
-    for (; j < end && t[j].text != ")"; ++j)
-        if (words) words->push_back(t[j].text);
-    return j + 1;
-}
-
-// Parses statement S as `[layout(...)] qualifiers STORAGE type name[, name];`.
-// Returns false where it is something else.
-bool parseVaryings(const std::vector<GlslToken>& t, const Statement& s, const std::string& storage,
-                   std::vector<Varying>& out, const ShaderSource& source) {
-    std::size_t i = skipLayout(t, s.begin, s.end);
-    bool hasStorage = false;
-    while (i < s.end && (kQualifiers.count(t[i].text) || t[i].text == storage)) {
-        hasStorage = hasStorage || t[i].text == storage;
-        ++i;
-    }
-    if (!hasStorage || i + 1 >= s.end || t[i].text == ";") return false;
-    const GlslToken& type = t[i++];
-    if (t[i].text == "{") {
-        const SourceLine w = source.where(type.line);
-        throw Error(w.file + ":" + std::to_string(w.line) + ": an interface block (" + type.text +
-                    " { ... }) cannot be passed between the page's emulated shader stages; "
-                    "declare its members one by one");
-    }
-    while (i < s.end) {
-        Varying v{type.text, t[i].text, false, t[i].line};
-        ++i;
-        if (i < s.end && t[i].text == "[") {
-            v.array = true;
-            while (i < s.end && t[i].text != "]") ++i;
-            ++i;
-        }
-        out.push_back(v);
-        if (i < s.end && t[i].text == ",") ++i;
-        else break;
-    }
-    return true;
-}
-
-// Components and base type of a type the emulation passes on.
-struct BasicType {
-    int components = 0;
-    char base = 0;  // 'f', 'i', 'u'; 0: not a scalar or vector of these
-};
-
-BasicType basicType(const std::string& type) {
-    static const std::map<std::string, BasicType> kTypes = {
-        {"float", {1, 'f'}}, {"vec2", {2, 'f'}},  {"vec3", {3, 'f'}},  {"vec4", {4, 'f'}},
-        {"int", {1, 'i'}},   {"ivec2", {2, 'i'}}, {"ivec3", {3, 'i'}}, {"ivec4", {4, 'i'}},
-        {"uint", {1, 'u'}},  {"uvec2", {2, 'u'}}, {"uvec3", {3, 'u'}}, {"uvec4", {4, 'u'}},
-    };
-    const auto it = kTypes.find(type);
-    return it == kTypes.end() ? BasicType{} : it->second;
-}
 
 std::string at(const ShaderSource& source, int line) {
     const SourceLine w = source.where(line);
@@ -117,21 +31,6 @@ std::string entryFile(const ShaderSource& source) {
     throw Error(at(gs, line) + what +
                 " is not available where geometry shaders are emulated (the page: WebGL 2 has "
                 "none); raylab run and check run it natively");
-}
-
-// An edit of the text: the characters [pos, pos + length) become TEXT.
-struct Edit {
-    std::size_t pos = 0, length = 0;
-    std::string text;
-};
-
-// TEXT for the span [from, to) of SOURCE, with as many newlines as the span
-// had, so that every later line keeps its number.
-std::string keepingLines(const std::string& source, std::size_t from, std::size_t to,
-                         const std::string& text) {
-    return text + std::string(std::size_t(std::count(source.begin() + long(from),
-                                                     source.begin() + long(to), '\n')),
-                              '\n');
 }
 
 // The GLSL expression of a value of TYPE read from the captured words
@@ -174,27 +73,26 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     const GlslScan gs = scanGlsl(text);
     const std::vector<GlslToken>& t = gs.tokens;
     EmulatedGeometry out;
-    std::vector<Edit> edits;
-    auto blank = [&](const Statement& s) {
+    std::vector<TextEdit> edits;
+    auto blank = [&](const GlslStatement& s) {
         const std::size_t from = t[s.begin].pos, to = t[s.end - 1].pos + 1;
         edits.push_back({from, to - from, keepingLines(text, from, to, "")});
     };
 
     // The vertex shader's outputs, by name.
-    std::map<std::string, Varying> written;
+    std::map<std::string, GlslVarying> written;
     {
         const GlslScan vs = scanGlsl(vertex.text);
-        std::vector<Varying> outs;
-        for (const Statement& s : fileScopeStatements(vs.tokens))
+        std::vector<GlslVarying> outs;
+        for (const GlslStatement& s : fileScopeStatements(vs.tokens))
             parseVaryings(vs.tokens, s, "out", outs, vertex);
-        for (const Varying& v : outs) written[v.name] = v;
+        for (const GlslVarying& v : outs) written[v.name] = v;
     }
 
-    // The layouts, the inputs and the outputs; main, the void functions.
-    std::vector<Varying> inputs, outputs;
-    std::set<std::size_t> voidBodies;  // token index of a void function's "{"
+    // The layouts, the inputs and the outputs.
+    std::vector<GlslVarying> inputs, outputs;
     int layoutLine = 0;
-    for (const Statement& s : fileScopeStatements(t)) {
+    for (const GlslStatement& s : fileScopeStatements(t)) {
         std::vector<std::string> words;
         const std::size_t afterLayout = skipLayout(t, s.begin, s.end, &words);
         if (afterLayout != s.begin && afterLayout + 2 == s.end &&
@@ -243,15 +141,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             edits.push_back({from, to - from, keepingLines(text, from, to, decl)});
             continue;
         }
-        if (parseVaryings(t, s, "out", outputs, geometry)) continue;  // now the vertex shader's
-        // A function definition: `type name ( ... ) { ... }`.
-        for (std::size_t k = s.begin; k + 1 < s.end; ++k) {
-            if (t[k].text != "{") continue;
-            std::size_t open = k;
-            while (open > s.begin && t[open].text != "(") --open;
-            if (open >= s.begin + 2 && t[open - 2].text == "void") voidBodies.insert(k);
-            break;
-        }
+        parseVaryings(t, s, "out", outputs, geometry);  // now the vertex shader's
     }
     if (!out.corners)
         throw Error(entryFile(geometry) + ": the geometry shader declares no input primitive "
@@ -259,13 +149,16 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     if (!out.verticesPerSlot || out.maxVertices <= 0)
         throw Error(at(geometry, layoutLine) + "the geometry shader declares no output "
                                                "(layout(triangle_strip, max_vertices = N) out;)");
-    for (const Varying& v : outputs)
+    for (const GlslVarying& v : outputs)
         if (v.array || !basicType(v.type).components)
             throw Error(at(geometry, v.line) + "the output " + v.name + " (" + v.type +
                         (v.array ? "[]" : "") +
                         ") cannot be emulated: use float, int or uint scalars and vectors");
 
     // The calls and built-ins, with where each function body is.
+    std::set<std::size_t> voidBodies;  // token index of a void function's "{"
+    for (const GlslFunction& f : glslFunctions(t))
+        if (f.returnType == "void") voidBodies.insert(f.open);
     bool readsPositions = false;
     int depth = 0;
     std::vector<bool> inVoid;  // per open brace: inside a void function
@@ -317,7 +210,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     // The record: each input, as the vertex shader wrote it; gl_Position last.
     std::string fill;  // the wrapper's copies from the attributes into the inputs
     std::vector<std::pair<std::string, std::string>> fields;  // type, name
-    for (const Varying& v : inputs) {
+    for (const GlslVarying& v : inputs) {
         const auto w = written.find(v.name);
         if (w == written.end())
             throw Error(at(geometry, v.line) + "the input " + v.name +
@@ -357,11 +250,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
                     std::to_string(4 * kMaxAttributes));
     out.slots = std::max(0, out.maxVertices - (out.verticesPerSlot - 1));
 
-    // The edits, last first, so that positions stay right.
-    std::sort(edits.begin(), edits.end(),
-              [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
-    std::string body = text;
-    for (const Edit& e : edits) body.replace(e.pos, e.length, e.text);
+    const std::vector<std::string> lines = splitLines(applyEdits(text, std::move(edits)));
 
     // Declarations the body needs before its own code, after #version (and
     // its #extension lines): generated lines, which errors name as such.
@@ -385,7 +274,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             "int raylab_firstStrip = -1, raylab_lastStrip = -2;\n"
             "vec4 raylab_keptPosition = vec4(0.0);\n";
     std::string keep, give;
-    for (const Varying& o : outputs) {
+    for (const GlslVarying& o : outputs) {
         tail += o.type + " raylab_kept_" + o.name + " = " + o.type + "(0);\n";
         keep += " raylab_kept_" + o.name + " = " + o.name + ";";
         give += "    " + o.name + " = raylab_kept_" + o.name + ";\n";
@@ -439,39 +328,18 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
 
     // Assemble with the origin: line 1, its #extension lines, the head, the
     // body's other lines, the tail.
-    std::vector<std::string> lines;
-    {
-        std::size_t start = 0;
-        while (start <= body.size()) {
-            const std::size_t end = body.find('\n', start);
-            if (end == std::string::npos) {
-                if (start < body.size()) lines.push_back(body.substr(start));
-                break;
-            }
-            lines.push_back(body.substr(start, end - start));
-            start = end + 1;
-        }
-    }
     std::size_t afterVersion = lines.empty() ? 0 : 1;
     while (afterVersion < lines.size() && lines[afterVersion].rfind("#extension", 0) == 0)
         ++afterVersion;
     ShaderSource& s = out.vertex;
     s.files = geometry.files;
-    auto emit = [&](const std::string& line, const SourceLine& from) {
-        s.text += line + "\n";
-        s.origin.push_back(from);
-    };
-    for (std::size_t i = 0; i < afterVersion; ++i) emit(lines[i], geometry.where(int(i) + 1));
+    for (std::size_t i = 0; i < afterVersion; ++i)
+        appendLine(s, lines[i], geometry.where(int(i) + 1));
     int generated = 1;
-    for (const std::string& h : head) emit(h, {"<raylab>", generated++});
+    for (const std::string& h : head) appendGenerated(s, h, &generated);
     for (std::size_t i = afterVersion; i < lines.size(); ++i)
-        emit(lines[i], geometry.where(int(i) + 1));
-    std::size_t start = 0;
-    while (start < tail.size()) {
-        const std::size_t end = tail.find('\n', start);
-        emit(tail.substr(start, end - start), {"<raylab>", generated++});
-        start = end + 1;
-    }
+        appendLine(s, lines[i], geometry.where(int(i) + 1));
+    appendGenerated(s, tail, &generated);
     return out;
 }
 

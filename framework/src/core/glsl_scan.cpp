@@ -103,6 +103,16 @@ private:
     bool ok_ = true;
 };
 
+// Past the /* ... */ comment at I (to the end of TEXT if it is not
+// closed), counting its newlines into LINE.
+std::size_t skipBlockComment(const std::string& text, std::size_t i, int& line) {
+    const std::size_t end = text.find("*/", i + 2);
+    const std::size_t stop = end == std::string::npos ? text.size() : end + 2;
+    for (; i < stop; ++i)
+        if (text[i] == '\n') ++line;
+    return stop;
+}
+
 std::string trim(const std::string& s) {
     std::size_t a = 0, b = s.size();
     while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
@@ -149,10 +159,7 @@ GlslScan scanGlsl(const std::string& text) {
             continue;
         }
         if (text.compare(i, 2, "/*") == 0) {
-            const std::size_t end = text.find("*/", i + 2);
-            const std::size_t stop = end == std::string::npos ? text.size() : end + 2;
-            for (; i < stop; ++i)
-                if (text[i] == '\n') ++line;
+            i = skipBlockComment(text, i, line);
             continue;
         }
         if (std::isspace(static_cast<unsigned char>(c))) {
@@ -174,10 +181,7 @@ GlslScan scanGlsl(const std::string& text) {
                     break;
                 }
                 if (text.compare(i, 2, "/*") == 0) {
-                    const std::size_t end = text.find("*/", i + 2);
-                    const std::size_t stop = end == std::string::npos ? text.size() : end + 2;
-                    for (; i < stop; ++i)
-                        if (text[i] == '\n') ++line;
+                    i = skipBlockComment(text, i, line);
                     directive += ' ';
                     continue;
                 }
@@ -241,7 +245,7 @@ std::vector<GlslFunction> glslFunctions(const std::vector<GlslToken>& t) {
                     else if (t[open].text == "(" && --nest == 0) break;
                 }
                 if (open >= 2 && t[open - 1].isWord() && t[open - 2].isWord())
-                    out.push_back({t[open - 2].text, t[open - 1].text, i, i});
+                    out.push_back({t[open - 2].text, t[open - 1].text, open - 1, i, i});
             }
         } else if (t[i].text == "}" && depth > 0 && --depth == 0 && !out.empty() &&
                    out.back().close == out.back().open) {

@@ -30,6 +30,7 @@ GlslScan scanGlsl(const std::string& text);
 // A function defined at file scope: `type name(...) { ... }`.
 struct GlslFunction {
     std::string returnType, name;
+    std::size_t nameToken = 0;        // token index of its name
     std::size_t open = 0, close = 0;  // token indices of its body's braces
 };
 std::vector<GlslFunction> glslFunctions(const std::vector<GlslToken>& tokens);

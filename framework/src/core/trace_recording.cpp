@@ -1,6 +1,8 @@
 #include "trace_recording.h"
 
 #include "error.h"
+#include "glsl_declarations.h"
+#include "glsl_edits.h"
 #include "glsl_scan.h"
 #include "shader_constants.h"
 #include "text_format.h"
@@ -11,11 +13,6 @@
 namespace raylab {
 
 namespace {
-
-struct Edit {
-    std::size_t pos = 0, length = 0;
-    std::string text;
-};
 
 bool hasSequence(const std::vector<GlslToken>& t, std::size_t from, std::size_t to,
                  std::initializer_list<const char*> words) {
@@ -58,7 +55,7 @@ TraceRecording recordTrace(const ShaderSource& fragment) {
     const GlslScan scan = scanGlsl(text);
     const std::vector<GlslToken>& t = scan.tokens;
     TraceRecording out;
-    std::vector<Edit> edits;
+    std::vector<TextEdit> edits;
     int findClosestEnd = 0;  // the line of its definition's closing brace
     bool hasMain = false;
     for (const GlslFunction& f : glslFunctions(t)) {
@@ -66,7 +63,10 @@ TraceRecording recordTrace(const ShaderSource& fragment) {
             findClosestEnd = t[f.close].line;
             continue;
         }
-        hasMain = hasMain || f.name == "main";
+        if (f.name == "main") {  // renamed: the stage's main runs inside the recorder's
+            edits.push_back({t[f.nameToken].pos, 4, "raylab_stageMain"});
+            hasMain = true;
+        }
         // The guided lab's path state, where this function keeps it.
         const bool keepsPath = hasSequence(t, f.open, f.close, {"current", ".", "weight"}) &&
                                hasSequence(t, f.open, f.close, {"current", ".", "depth"}) &&
@@ -92,47 +92,25 @@ TraceRecording recordTrace(const ShaderSource& fragment) {
     if (out.sites.empty())
         throw Error("the program calls findClosest() nowhere: no path to record");
     if (!hasMain) throw Error("the program has no main()");
-    // main() renamed: its name is the token before its parameter list.
-    for (const GlslFunction& f : glslFunctions(t))
-        if (f.name == "main")
-            for (std::size_t i = f.open; i > 0; --i)
-                if (t[i].text == "main") {
-                    edits.push_back({t[i].pos, 4, "raylab_stageMain"});
-                    break;
-                }
-    // The colour output main() writes: the first `out vec4 NAME` at file
-    // scope (not a function's `out vec4` parameter).
+    // The colour output main() writes: the first global `out vec4`.
     std::string colorOut;
-    int nest = 0;  // braces and parentheses
-    for (std::size_t i = 0; i + 2 < t.size() && colorOut.empty(); ++i) {
-        const std::string& w = t[i].text;
-        if (w == "{" || w == "(") ++nest;
-        else if (w == "}" || w == ")") --nest;
-        else if (nest == 0 && w == "out" && t[i + 1].text == "vec4") colorOut = t[i + 2].text;
+    for (const GlslStatement& st : fileScopeStatements(t)) {
+        std::vector<GlslVarying> outs;
+        if (parseVaryings(t, st, "out", outs, fragment) && outs[0].type == "vec4") {
+            colorOut = outs[0].name;
+            break;
+        }
     }
     if (colorOut.empty()) throw Error("the program declares no colour output (out vec4)");
-
-    std::sort(edits.begin(), edits.end(),
-              [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
-    std::string body = text;
-    for (const Edit& e : edits) body.replace(e.pos, e.length, e.text);
 
     ShaderSource& s = out.fragment;
     s.files = fragment.files;
     int generated = 1;
-    auto emitGenerated = [&](const std::string& line) {
-        s.text += line + "\n";
-        s.origin.push_back({"<raylab>", generated++});
-    };
-    std::size_t start = 0;
-    for (int line = 1; start < body.size(); ++line) {
-        std::size_t end = body.find('\n', start);
-        if (end == std::string::npos) end = body.size();
-        s.text += body.substr(start, end - start) + "\n";
-        s.origin.push_back(fragment.where(line));
-        if (line == findClosestEnd)
-            for (const char* l : kRecorder) emitGenerated(l);
-        start = end + 1;
+    const std::vector<std::string> lines = splitLines(applyEdits(text, std::move(edits)));
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        appendLine(s, lines[i], fragment.where(int(i) + 1));
+        if (int(i) + 1 == findClosestEnd)
+            for (const char* l : kRecorder) appendGenerated(s, l, &generated);
     }
     for (const std::string& l : {
              std::string("layout(location = 1) out vec4 raylab_traceRay;"),
@@ -153,7 +131,7 @@ TraceRecording recordTrace(const ShaderSource& fragment) {
              std::string("    raylab_traceState = raylab_trace3;"),
              std::string("}"),
          })
-        emitGenerated(l);
+        appendGenerated(s, l, &generated);
     return out;
 }
 

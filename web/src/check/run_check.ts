@@ -56,13 +56,11 @@ async function countResults(name: string, stage: StageJson, rendererFor: (scene:
     const loaded = await rendererFor(sceneOfView(stage, view));
     const r = loaded.renderer;
     const frame = frameOfView(loaded.camera, loaded.fovYDeg, view, stage);
-    const applies = r instanceof FurRenderer && frame.settings.fins && frame.settings.furTechnique === 0;
-    const fins = applies ? r.countFins(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT) : null;
-    if (fins === null || !(r instanceof FurRenderer)) {
-      results.push({ view: view.name, applies: false });
-      continue;
-    }
-    results.push({ view: view.name, applies: true, ...r.finCountVerdict(fins, frame.camera, frame.time) });
+    // As natively: fins drawn, with shells (not the fur shader).
+    const fins = r instanceof FurRenderer && frame.settings.fins && frame.settings.furTechnique === 0
+      ? r.countFins(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT) : null;
+    results.push(fins === null || !(r instanceof FurRenderer) ? { view: view.name, applies: false }
+      : { view: view.name, applies: true, ...r.finCountVerdict(fins, frame.camera, frame.time) });
   }
   return results;
 }

@@ -38,10 +38,16 @@ try {
     sel.value = v;
     sel.dispatchEvent(new Event('change'));
   }, id, value);
+  // The folder picked (TRIGGER opens the chooser) and loaded: the page says
+  // so, or that the last version that compiled stays. (Cleared first: the
+  // messages may already hold "Your files changed on disk", and a Check
+  // pressed while the load still runs is ignored.)
   const pick = async (trigger) => {
+    await page.$eval('#messages', (m) => { m.textContent = ''; });
     const [chooser] = await Promise.all([page.waitForFileChooser(), trigger()]);
     await chooser.accept([folder]);
-    await page.waitForFunction(() => /Your files/.test(document.getElementById('messages').textContent), { timeout: 120_000 });
+    await page.waitForFunction(() => /Your files|still showing the last version that compiled/.test(document.getElementById('messages').textContent),
+      { timeout: 120_000 });
   };
   const pressCheck = async () => {
     await page.waitForFunction(() => !document.getElementById('view').classList.contains('building'), { timeout: 120_000 });

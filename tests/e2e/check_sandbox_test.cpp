@@ -1,5 +1,5 @@
 // `raylab check` runs its work in a child process with grading's limits
-// (framework/src/cli/check_sandbox.h): a lab that crashes the shader compiler
+// (framework/src/classroom/check_sandbox.h): a lab that crashes the shader compiler
 // or never finishes gets a one-line cause, and a crash names the file.
 #include "test_support.h"
 

@@ -11,7 +11,7 @@
 #include "command.h"
 #include "commands.h"
 #include "error.h"
-#include "grade_shards.h"
+#include "grade_class.h"
 #include "known_survivors.h"
 #include "lab_files.h"
 #include "mutants.h"

@@ -2,6 +2,7 @@
 // The subcommands of `raylab`, one file each (cmd_*.cpp). Each returns the
 // process exit code: 0 success, 1 a check failed, 2 bad input or an error.
 #include "gl_context.h"
+#include "grade_options.h"
 #include "stage_setup.h"
 
 #include <string>
@@ -60,27 +61,6 @@ struct CheckOptions {
     std::string courseFile;         // the course's weights for the score (course_file.h)
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
-
-struct GradeOptions {
-    std::string submissions;  // one folder per student, each laid out like labs/
-    std::string outDir;
-    std::string stages;  // "01,02,04"; empty: every available stage
-    int jobs = 2;
-    double timeoutSeconds = 60.0;  // per stage of a submission
-    long memoryMb =
-        2048;  // per stage of a submission (address space); the pro scene needs well under 1 GB
-    unsigned seed = 0;  // of the seeded views; keep it secret to prevent tuning
-    std::string shard;  // "K/N": grade that share of the class only (grade_shards.h)
-    // The course's workflow (class_finish.h):
-    std::string course;     // --course FILE: weights over stage.json's, a late policy
-    std::string submitted;  // --submitted CSV|mtime: when each student submitted
-    std::string roster;     // --roster CSV: ids (summary.csv) and what an LMS needs
-    std::string lms;        // --lms canvas: also OUT/canvas.csv
-    std::string anonymise;  // --anonymise KEYFILE: pseudonyms (pseudonyms.h) in every report file
-    std::string only;       // --only NAME: regrade one student into OUT's report
-    std::string level = "guided";  // --level: of the labs handed out (lab_folder.h)
-};
-int cmdGrade(const GradeOptions& grade);
 
 // The child-process halves of `raylab grade` (not for direct use).
 int cmdGradeReference(const std::string& stage, const std::string& outDir, unsigned seed);

@@ -1,11 +1,8 @@
-// gradeClass (grade_shards.h): every stage of every submission graded in a
-// child process of its own (cmd_grade_item.cpp) with a timeout and a memory
-// limit, --jobs at a time, with a progress line; one bad submission never
-// stops the run or touches another's score. `raylab grade` (cmd_grade.cpp)
-// turns the result into the class's reports.
+#include "grade_class.h"
+
 #include "atomic_file.h"
 #include "child_process.h"
-#include "commands.h"
+#include "class_file.h"
 #include "course_file.h"
 #include "error.h"
 #include "grade_shards.h"

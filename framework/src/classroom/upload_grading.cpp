@@ -1,9 +1,8 @@
 #include "upload_grading.h"
 #include "lab_folder.h"
 
-#include "commands.h"
 #include "error.h"
-#include "grade_shards.h"
+#include "grade_class.h"
 #include "stage_list.h"
 
 namespace raylab {

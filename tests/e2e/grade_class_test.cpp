@@ -156,7 +156,7 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
                 lost.size());
 
     // The broken submissions are explained in the report.
-    const std::string html = readFile(dir / "out" / "report.html");
+    const std::string html = readFile(dir / "out" / "report.html") + studentPages(dir / "out");
     EXPECT_NE(html.find("fin.geom:"), std::string::npos)
         << "the broken geometry shader's file and line";
     EXPECT_NE(html.find("intersect_sphere.glsl:"), std::string::npos)
@@ -166,4 +166,9 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     EXPECT_NE(html.find("is not allowed"), std::string::npos);
     for (const char* file : {"summary.csv", "junit.xml", "report.html"})
         EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
+    // The class page stays small: pictures live on the students' own pages.
+    const std::uintmax_t index = fs::file_size(dir / "out" / "report.html");
+    EXPECT_LT(index, 1u << 20);
+    EXPECT_EQ(readFile(dir / "out" / "report.html").find("<img"), std::string::npos);
+    std::printf("[ figure   ] report.html for %zu students: %ju bytes\n", std::size_t(30), index);
 }

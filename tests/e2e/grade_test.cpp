@@ -355,7 +355,7 @@ TEST(Grade, AMistakeInAnEarlierStageCostsInItsOwnStageOnly) {
             << later << ": " << message;
         EXPECT_NE(message.find("graded with the earlier stages solved"), std::string::npos);
     }
-    EXPECT_NE(readFile(dir / "out" / "report.html").find("01-raycast/find_closest.glsl"),
+    EXPECT_NE(readFile(dir / "out/students/ann/report.html").find("01-raycast/find_closest.glsl"),
               std::string::npos);
 
     writeFile(dir / "own.json", R"({"earlier_stages": "own"})");

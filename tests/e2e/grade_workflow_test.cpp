@@ -39,6 +39,13 @@ std::string grade(const fs::path& dir, const std::string& args) {
     return r.all();
 }
 
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
+    return n;
+}
+
 std::string row(const std::string& csv, const std::string& student) {
     const std::size_t at = csv.find("\n" + student + ",");
     if (at == std::string::npos) return "";
@@ -56,19 +63,33 @@ TEST(GradeWorkflow, RosterLatePolicyCanvasAndTheClassSummary) {
                                   "bob,s2,\"Builder, Bob\",102,bob2,A\n"
                                   "dave,s4,\"Bowman, Dave\",104,dave4,B\n");
     writeFile(dir / "course.json", R"({"late": {"deadline": "2026-12-01T12:00:00Z",
-        "penalty_per_day": 10, "max_penalty": 30}})");
+        "penalty_per_day": 10, "max_penalty": 30},
+        "extensions": [{"student": "alice", "stages": "02", "days": 1, "reason": "ill"}],
+        "excused": [{"student": "dave", "stages": "02", "reason": "exchange week"}],
+        "lms": {"canvas_assignments": {"02": 87568490}}})");
     writeFile(dir / "times.csv", "student,submitted,stage\n"
                                  "alice,2026-12-01T11:00:00Z,\n"
+                                 "alice,2026-12-02T09:00:00Z,02\n"
                                  "bob,2026-12-01T11:00:00Z,\n"
                                  "bob,2026-12-03T09:00:00Z,02\n"
                                  "carol,2026-12-30T09:00:00Z,\n");
     grade(dir.path(), "--out graded --roster roster.csv --course course.json --submitted "
-                      "times.csv --lms canvas");
-    // A regrade of one student finishes the class as the run did.
-    grade(dir.path(), "--out graded --only carol");
+                      "times.csv --lms canvas,moodle,blackboard,brightspace");
+    // A regrade of one student finishes the class as the run did, and is logged.
+    grade(dir.path(), "--out graded --only carol --reason \"re-uploaded\"");
+    const std::string log = readFile(dir / "graded/regrades.csv");
+    EXPECT_EQ(log.rfind("when,student,reason,stage,before,after\r\n", 0), 0u) << log;
+    EXPECT_NE(log.find(",carol,re-uploaded,,,\r\n"), std::string::npos)
+        << "the same files: nothing changed\n"
+        << log;
+    EXPECT_TRUE(fs::exists(dir / "graded/history/carol/1/01-raycast/result.json"))
+        << "the earlier result is kept";
+    EXPECT_NE(readFile(dir / "graded/students/carol/report.html").find("re-uploaded"),
+              std::string::npos);
     const std::string csv = readFile(dir / "graded/summary.csv");
     EXPECT_EQ(csv.rfind("student,id,01-raycast,02-shading,total,max,notes\r\n", 0), 0u) << csv;
-    EXPECT_EQ(row(csv, "alice"), "alice,s1,100,100,200,200,") << csv;
+    // alice's 02 came a day late, within her extension.
+    EXPECT_EQ(row(csv, "alice").rfind("alice,s1,100,100,200,200,", 0), 0u) << csv;
     // bob: 02 two days late (a part of a day counts), 20% of what it earned.
     const std::string bob = row(csv, "bob");
     EXPECT_NE(bob.find("02-shading: submitted 2026-12-03 09:00 UTC, 2 days late: -20%"),
@@ -76,16 +97,33 @@ TEST(GradeWorkflow, RosterLatePolicyCanvasAndTheClassSummary) {
         << bob;
     // carol: 29 days late, capped at 30%; 02 not submitted is an empty cell, not 0.
     EXPECT_EQ(row(csv, "carol").rfind("carol,,70,,70,200,", 0), 0u) << csv;
-    EXPECT_EQ(row(csv, "dave").rfind("dave,s4,,,0,200,no submission folder", 0), 0u) << csv;
+    EXPECT_EQ(row(csv, "dave").rfind("dave,s4,,EX,0,100,", 0), 0u) << "02 excused\n" << csv;
 
     const std::string canvas = readFile(dir / "graded/canvas.csv");
     EXPECT_EQ(canvas.rfind("Student,ID,SIS User ID,SIS Login ID,Section,RayLab 01-raycast,RayLab "
-                           "02-shading\r\nPoints Possible,,,,,100,100\r\n",
+                           "02-shading (87568490)\r\nPoints Possible,,,,,100,100\r\n",
                            0),
               0u)
         << canvas;
     EXPECT_NE(canvas.find("\"Liddell, Alice\",101,s1,alice1,A,100,100\r\n"), std::string::npos);
-    EXPECT_NE(canvas.find("\"Bowman, Dave\",104,s4,dave4,B,,\r\n"), std::string::npos);
+    EXPECT_NE(canvas.find("\"Bowman, Dave\",104,s4,dave4,B,,EX\r\n"), std::string::npos);
+    // The other LMSs, each from the same roster.
+    EXPECT_NE(readFile(dir / "graded/moodle.csv").find("Alice,Liddell,s1,,alice1,100,100\r\n"),
+              std::string::npos);
+    EXPECT_NE(readFile(dir / "graded/blackboard.csv")
+                  .find("\"Liddell\",\"Alice\",\"alice1\",\"s1\",\"100\",\"100\"\r\n"),
+              std::string::npos);
+    EXPECT_NE(readFile(dir / "graded/brightspace.csv").find("#s1,#alice1,100,100,#\r\n"),
+              std::string::npos);
+    // A report per section, with its students only.
+    const std::string a = readFile(dir / "graded/sections/A/report.html");
+    EXPECT_NE(a.find(">bob</a>"), std::string::npos);
+    EXPECT_EQ(a.find("Bowman"), std::string::npos);
+    EXPECT_EQ(a.find(">dave<"), std::string::npos) << "dave is in section B";
+    EXPECT_TRUE(fs::exists(dir / "graded/sections/A/students/bob/02-shading/result.json"));
+    EXPECT_FALSE(fs::exists(dir / "graded/sections/A/students/carol")) << "carol is in no section";
+    EXPECT_NE(readFile(dir / "graded/report.html").find("href=\"sections/B/report.html\""),
+              std::string::npos);
     EXPECT_EQ(canvas.find("carol"), std::string::npos) << "no id Canvas could match";
 
     // The class summary: the checks that fail most, bob's catalogued mistake.
@@ -169,7 +207,7 @@ TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
         }
     }
     EXPECT_GT(files, 20);
-    EXPECT_NE(readFile(dir / "tas/report.html").find("01-raycast/intersect_sphere.glsl:"),
+    EXPECT_NE(studentPages(dir / "tas").find("01-raycast/intersect_sphere.glsl:"),
               std::string::npos)
         << "the compile error still names the file";
     EXPECT_NE(readFile(dir / "tas/summary.csv").find("student-"), std::string::npos);
@@ -185,9 +223,20 @@ TEST(GradeWorkflow, AnonymisedReportsNameNoStudent) {
     EXPECT_EQ(readFile(dir / "tas/summary.csv"), readFile(dir / "tas2/summary.csv"));
     grade(dir.path(), "--out tas3 --anonymise other-key.json");
     EXPECT_NE(readFile(dir / "tas/summary.csv"), readFile(dir / "tas3/summary.csv"));
+    // Sections survive anonymising: the pseudonyms carry them, no id does.
+    writeFile(dir / "roster.csv", "student,id,section\nalice,s1,A\nbob,s2,A\ncarol,s3,B\n");
+    grade(dir.path(), "--out tas4 --anonymise key.json --roster roster.csv");
+    for (const std::string& f : filesUnder(dir / "tas4")) {
+        const std::string text = readFile(dir / "tas4" / f);
+        for (const char* name : {"alice", "carol", "s1,", "s2,"})
+            EXPECT_EQ(text.find(name), std::string::npos) << name << " in " << f;
+    }
+    EXPECT_EQ(count(readFile(dir / "tas4/sections/A/summary.csv"), "student-"), 2u);
+    EXPECT_EQ(count(readFile(dir / "tas4/sections/B/summary.csv"), "student-"), 1u);
     // The control: without --anonymise the names are there, the message's too.
     grade(dir.path(), "--out named");
-    EXPECT_NE(readFile(dir / "named/report.html").find("carol/01-raycast/intersect_sphere.glsl:"),
+    EXPECT_NE(readFile(dir / "named/students/carol/report.html")
+                  .find("carol/01-raycast/intersect_sphere.glsl:"),
               std::string::npos);
 }
 
@@ -205,12 +254,14 @@ TEST(GradeWorkflow, BadCourseInputIsOneLineAndWritesNothing) {
         {"--lms canvas", "--lms canvas needs --roster"},
         {"--course bad-course.json", "late.deadline: 'soon' is not a time"},
         {"--roster bad-roster.csv", "no 'student' column"},
-        {"--anonymise k.json --roster bad-roster.csv", "--anonymise cannot go with --roster"},
+        {"--anonymise k.json --lms canvas --roster bad-roster.csv",
+         "--anonymise cannot go with --lms"},
         {"--anonymise out/k.json", "keep the key file outside out"},
         {"--anonymise bad-course.json", "not a key file"},
         {"--course late.json", "has a late policy: say when each student submitted"},
         {"--submitted nowhere.csv --course bad-course.json", "not a time"},
-        {"--lms moodle --roster bad-roster.csv", "--lms"},
+        {"--lms moodle,sakai", "'sakai' is not an LMS"},
+        {"--reason typo", "--reason says why a student is regraded"},
     };
     for (const auto& c : cases) {
         CommandResult r = runCommand("cd " + quote(dir.path()) + " && " + quote(raylabExe()) +

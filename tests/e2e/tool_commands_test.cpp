@@ -165,6 +165,31 @@ TEST(PrairieLearn, GradesSolvedUntouchedBrokenAndEmptySubmissions) {
     int heatMaps = 0;
     for (const auto& t : untouched["tests"]) heatMaps += t.contains("images") ? 1 : 0;
     EXPECT_GT(heatMaps, 0) << "failed views carry their difference heat map";
+    // The seeded views count, as one test without details until the due date;
+    // --seeded-views shown (the control) lists each with its own test.
+    auto seededTests = [](const nlohmann::json& j) {
+        int n = 0;
+        for (const auto& t : j["tests"])
+            n += t["name"].get<std::string>().find("seeded-") != std::string::npos;
+        return n;
+    };
+    int folded = 0;
+    for (const auto& t : untouched["tests"])
+        if (t["name"].get<std::string>().find("further views") != std::string::npos) {
+            ++folded;
+            EXPECT_FALSE(t.contains("images"));
+            EXPECT_NE(t["message"].get<std::string>().find("after the due date"),
+                      std::string::npos);
+        }
+    EXPECT_EQ(folded, 1);
+    EXPECT_EQ(seededTests(untouched), 0);
+    nlohmann::json shown = gradeForPrairieLearn(
+        dir, "shown",
+        [&](const fs::path& s) { copyShaders(sourceDir() / "labs" / "01-raycast", s); },
+        " --seeded-views shown");
+    EXPECT_GT(seededTests(shown), 0);
+    EXPECT_DOUBLE_EQ(shown["score"].get<double>(), untouched["score"].get<double>())
+        << "hiding changes what is shown, not the score";
 
     nlohmann::json broken = gradeForPrairieLearn(dir, "broken", [&](const fs::path& s) {
         copyShaders(solution, s);

@@ -116,4 +116,13 @@ ShaderSource assembledFrom(const std::string& file, const std::string& text) {
     return s;
 }
 
+std::string studentPages(const fs::path& out) {
+    std::string pages;
+    std::error_code ec;
+    for (fs::directory_iterator it(out / "students", ec), end; !ec && it != end; it.increment(ec))
+        if (fs::is_regular_file(it->path() / "report.html"))
+            pages += readFile(it->path() / "report.html");
+    return pages;
+}
+
 }  // namespace raylab::test

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers for tests that run the `raylab` binary: a scratch folder and a
 // command runner that captures exit code, stdout and stderr.
+#include "error.h"
 #include "shader_source.h"
 
 #include <filesystem>
@@ -54,6 +55,19 @@ void writeSolvedLabs(const fs::path& dir);
 
 // Every regular file under DIR, as paths relative to it, sorted.
 std::vector<std::string> filesUnder(const fs::path& dir);
+
+// Every student's page of the grading report in OUT (students/*/report.html),
+// one after the other: where the messages and pictures are.
+std::string studentPages(const fs::path& out);
+
+// The message of the raylab::Error F throws, or "(no error)".
+template <typename F>
+std::string errorOf(F f) {
+    try {
+        f();
+    } catch (const raylab::Error& e) { return e.what(); }
+    return "(no error)";
+}
 
 // Replaces the first occurrence of FROM by TO in FILE; fails the test if FROM is absent.
 void replaceInFile(const fs::path& file, const std::string& from, const std::string& to);

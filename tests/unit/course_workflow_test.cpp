@@ -1,12 +1,11 @@
 // The course's data behind grading and handouts: stage lists, the grading
 // weights and credit curves, course files with their late policy, the CSV an
-// instructor gives, what a handout puts where, pseudonyms.
+// instructor gives, what a handout puts where.
 #include "class_finish.h"
 #include "course_file.h"
 #include "csv_text.h"
 #include "error.h"
 #include "handout.h"
-#include "pseudonyms.h"
 #include "stage_list.h"
 #include "test_support.h"
 
@@ -17,20 +16,13 @@
 #include <numeric>
 
 using namespace raylab;
+using raylab::test::errorOf;
 using raylab::test::ScratchDir;
 using raylab::test::writeFile;
 
 namespace {
 
 std::vector<std::string> ids(const std::string& list) { return parseStageIds(list); }
-
-template <typename F>
-std::string errorOf(F f) {
-    try {
-        f();
-    } catch (const Error& e) { return e.what(); }
-    return "(no error)";
-}
 
 }  // namespace
 
@@ -255,23 +247,4 @@ TEST(Handout, TheGuideSaysWhereEveryFileComesFrom) {
     const std::vector<HandoutStage> solved = planHandout(parseStageList("03"), Carry::Solved);
     EXPECT_NE(handoutGuide(guide, solved[0]).find("Everything from labs 01 and 02 is provided"),
               std::string::npos);
-}
-
-TEST(Pseudonyms, KeyedStableWithTheKeyFileAndUnlikeEachOther) {
-    ScratchDir dir;
-    PseudonymKey key(dir / "key.json");
-    const std::string alice = key.pseudonym("alice");
-    EXPECT_EQ(alice.rfind("student-", 0), 0u);
-    EXPECT_EQ(alice.size(), std::string("student-").size() + 8);
-    EXPECT_EQ(alice.find("alice"), std::string::npos);
-    EXPECT_NE(alice, key.pseudonym("alicf"));
-    EXPECT_EQ(key.nameOf(alice), "alice");
-    key.save();
-    PseudonymKey again(dir / "key.json");
-    EXPECT_EQ(again.pseudonym("alice"), alice) << "the same key file, the same pseudonym";
-    EXPECT_EQ(again.nameOf(alice), "alice");
-    PseudonymKey other(dir / "other.json");
-    EXPECT_NE(other.pseudonym("alice"), alice) << "another key, another pseudonym";
-    writeFile(dir / "bad.json", "{}");
-    EXPECT_THROW(PseudonymKey(dir / "bad.json"), Error);
 }

@@ -116,7 +116,7 @@ void expectEscapedMarkup(const std::string& text) {
             bool known = entity == "amp" || entity == "lt" || entity == "gt" || entity == "quot" ||
                          entity == "#39" || entity == "#10" || entity == "#13" || entity == "#9" ||
                          entity == "ndash" || entity == "ge" || entity == "#10003" ||
-                         entity == "#10007" || entity == "#8593";
+                         entity == "#10007" || entity == "#8593" || entity == "rarr";
             EXPECT_TRUE(known) << "raw '&' at " << text.substr(i, 40);
         } else {
             unsigned char c = static_cast<unsigned char>(text[i]);
@@ -233,14 +233,14 @@ TEST(GradeReport, SummaryCsvHasIdsLeavesNotSubmittedEmptyAndNotesLateness) {
 TEST(GradeReport, CanvasCsvHasCanvasColumnsPointsPossibleAndOnlyMatchableStudents) {
     ClassResult r = sampleClass();
     r.students[0].roster = {"s0042", "Doe, Jo", "1234", "jdoe", "Mon 10:00"};
-    const std::string csv = canvasCsv(r, "RayLab ");
+    const std::string csv = canvasCsv(r, GradebookColumns{});
     EXPECT_EQ(csv, "Student,ID,SIS User ID,SIS Login ID,Section,RayLab 01-raycast,RayLab "
                    "04-recursion\r\n"
                    "Points Possible,,,,,100,100\r\n"
                    "\"Doe, Jo\",1234,s0042,jdoe,Mon 10:00,70,0\r\n")
         << "the second student has no id Canvas can match: left out";
     r.students[0].roster = {};
-    EXPECT_THROW(canvasCsv(r, "RayLab "), Error);
+    EXPECT_THROW(canvasCsv(r, GradebookColumns{}), Error);
 }
 
 TEST(GradeReport, HtmlOpensWithTheClassSummary) {
@@ -252,10 +252,10 @@ TEST(GradeReport, HtmlOpensWithTheClassSummary) {
                           {"bounce", "reflect"},
                           1});
     r.mistakes.push_back({"01-raycast", "far-root", "takes the far root", true, {"front"}, 0});
-    const std::string html = htmlReport(r);
+    const std::string html = htmlClassPage(r);
     const std::size_t summary = html.find("Checks that fail most");
     ASSERT_NE(summary, std::string::npos);
-    EXPECT_LT(summary, html.find("class=\"summary\"><thead><tr><th>Student"))
+    EXPECT_LT(summary, html.find("class=\"summary sortable\">"))
         << "the class summary comes before the class table";
     EXPECT_NE(html.find("<td>04-recursion</td><td>reflect</td><td class=\"muted\">image</td>"
                         "<td class=\"num\">1 of 1</td>"),
@@ -313,34 +313,30 @@ TEST(GradeReport, JunitXmlCountsFailuresAndErrors) {
     expectEscapedMarkup(xml);
 }
 
-TEST(GradeReport, HtmlReportEscapesStudentTextAndShowsImages) {
-    std::string html = htmlReport(sampleClass());
+TEST(GradeReport, TheClassPageEscapesStudentTextAndLinksEachStudentsPage) {
+    const std::string html = htmlClassPage(sampleClass());
     EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
     EXPECT_NE(html.find("&lt;script&gt;x&lt;/script&gt;"), std::string::npos);
-    EXPECT_EQ(lower(html).find("<script"), std::string::npos);
+    EXPECT_EQ(count(lower(html), "<script"), 1u) << "the sorting script only";
     EXPECT_NE(html.find("Doe, &quot;Jo&quot;"), std::string::npos);
-    // The compile log, escaped, lines kept, in a <pre>.
-    EXPECT_NE(html.find("<pre class=\"log\">04-recursion/trace.glsl:12: error: &#39;depth&#39; : "
-                        "undeclared identifier\n"
-                        "04-recursion/trace.glsl:13: error: &#39;&lt;&#39; : wrong operand types "
-                        "(vec3 &amp; float)\n"),
-              std::string::npos);
-    // Image check: the three pictures where available, "no image" where not.
-    EXPECT_NE(html.find("<img src=\"students/0/01-raycast/front.png\""), std::string::npos);
-    EXPECT_NE(html.find("<img src=\"reference/01-raycast/front.png\""), std::string::npos);
-    EXPECT_NE(html.find("<img src=\"students/0/01-raycast/front-diff.png\""), std::string::npos);
-    EXPECT_NE(html.find("<img src=\"reference/01-raycast/side.png\""), std::string::npos);
-    EXPECT_EQ(count(html, "<img "), 4u);
-    EXPECT_EQ(count(html, ">no image<"), 5u);  // side: student image and diff; reflect: all three
+    // No pictures on the class page: it must stay small for hundreds.
+    EXPECT_EQ(count(html, "<img "), 0u);
     // Header facts, and no date: the report must be reproducible.
     EXPECT_NE(html.find("seed <b>1234</b>"), std::string::npos);
     EXPECT_NE(html.find("Mesa 22.3.6 on llvmpipe"), std::string::npos);
     EXPECT_NE(html.find("42.5 s"), std::string::npos);
-    // Class table cells link to the student's stage sections.
-    EXPECT_NE(html.find("href=\"#s0-1\">compile error</a>"), std::string::npos);
-    EXPECT_NE(html.find("href=\"#s1-1\" title=\"83.33 / 100\">83.33</a>"), std::string::npos);
-    EXPECT_NE(html.find("id=\"s0-1\""), std::string::npos);
-    EXPECT_NE(html.find("id=\"s1-1\""), std::string::npos);
+    // Each row links to the student's page and its stages, names encoded.
+    EXPECT_NE(html.find("<a href=\"students/Doe%2C%20%22Jo%22/report.html\">Doe, "
+                        "&quot;Jo&quot;</a>"),
+              std::string::npos)
+        << html;
+    EXPECT_NE(html.find("href=\"students/Doe%2C%20%22Jo%22/report.html#stage-04-recursion\">"
+                        "compile error</a>"),
+              std::string::npos);
+    EXPECT_NE(html.find("title=\"83.33 / 100\">83.33</a>"), std::string::npos);
+    // Sortable by keyboard: a button in every column head, numbers by value.
+    EXPECT_EQ(count(html, "<th scope=\"col\""), count(html, "<button type=\"button\">"));
+    EXPECT_NE(html.find("data-v=\"83.33\""), std::string::npos);
     // Self-contained.
     EXPECT_EQ(html.find("http://"), std::string::npos);
     EXPECT_EQ(html.find("https://"), std::string::npos);
@@ -348,11 +344,63 @@ TEST(GradeReport, HtmlReportEscapesStudentTextAndShowsImages) {
     expectEscapedMarkup(html);
 }
 
+TEST(GradeReport, AStudentsPageShowsTheirPicturesWithAltTextThatSaysWhose) {
+    const ClassResult r = sampleClass();
+    const std::string html = htmlStudentPage(r, r.students[0]);
+    EXPECT_EQ(lower(html).find("<script"), std::string::npos);
+    // The compile log, escaped, lines kept, in a <pre>.
+    EXPECT_NE(html.find("<pre class=\"log\">04-recursion/trace.glsl:12: error: &#39;depth&#39; : "
+                        "undeclared identifier\n"
+                        "04-recursion/trace.glsl:13: error: &#39;&lt;&#39; : wrong operand types "
+                        "(vec3 &amp; float)\n"),
+              std::string::npos);
+    // Image check: the three pictures where available (from two folders up),
+    // lazily, "no image" where not.
+    EXPECT_NE(html.find("<img src=\"../../students/0/01-raycast/front.png\" alt=\"Doe, "
+                        "&quot;Jo&quot;&#39;s picture of 01-raycast, view front\" width=\"180\" "
+                        "height=\"135\" loading=\"lazy\">"),
+              std::string::npos)
+        << html;
+    EXPECT_NE(html.find("<img src=\"../../reference/01-raycast/front.png\" alt=\"the reference "
+                        "picture of 01-raycast, view front\""),
+              std::string::npos);
+    EXPECT_NE(html.find("<img src=\"../../students/0/01-raycast/front-diff.png\" alt=\"where "
+                        "Doe, &quot;Jo&quot;&#39;s picture of 01-raycast, view front differs"),
+              std::string::npos);
+    EXPECT_NE(html.find("<img src=\"../../reference/01-raycast/side.png\""), std::string::npos);
+    EXPECT_EQ(count(html, "<img "), 4u);
+    EXPECT_EQ(count(html, ">no image<"), 2u);  // side: the student's picture and the difference
+    EXPECT_NE(html.find("id=\"stage-04-recursion\""), std::string::npos);
+    EXPECT_NE(html.find("href=\"../../report.html\""), std::string::npos) << "back to the class";
+    expectEscapedMarkup(html);
+}
+
+TEST(GradeReport, AStudentsPageShowsTheRegradesAndAnExcusedStage) {
+    ClassResult r = sampleClass();
+    StudentResult& st = r.students[1];
+    st.stages[1].excused = true;
+    st.stages[1].excuseNote = "exchange week";
+    st.regrades.push_back(
+        {"2026-12-07 09:14 UTC", "late upload <fixed>", {{"04-recursion", "0", "83.33"}}});
+    EXPECT_DOUBLE_EQ(st.score(), 0) << "an excused stage counts for nothing";
+    EXPECT_DOUBLE_EQ(st.maxScore(), 100);
+    const std::string html = htmlStudentPage(r, st);
+    EXPECT_NE(html.find("excused: exchange week (counts for nothing)"), std::string::npos);
+    EXPECT_NE(html.find("<td>2026-12-07 09:14 UTC</td><td>late upload &lt;fixed&gt;</td><td>"
+                        "04-recursion</td><td>0 &rarr; 83.33</td>"),
+              std::string::npos)
+        << html;
+    EXPECT_NE(htmlClassPage(r).find(">excused</a>"), std::string::npos);
+    EXPECT_EQ(regradeCsv(r), "when,student,reason,stage,before,after\r\n"
+                             "2026-12-07 09:14 UTC,<script>x</script>,late upload <fixed>,"
+                             "04-recursion,0,83.33\r\n");
+}
+
 TEST(GradeReport, HtmlImagePathsCannotEscapeTheirAttribute) {
     ClassResult r = sampleClass();
     r.students[0].stages[0].checks[0].studentImage = "students/a\"b #1/front.png";
-    std::string html = htmlReport(r);
-    EXPECT_NE(html.find("<img src=\"students/a%22b%20%231/front.png\""), std::string::npos);
+    std::string html = htmlStudentPage(r, r.students[0]);
+    EXPECT_NE(html.find("<img src=\"../../students/a%22b%20%231/front.png\""), std::string::npos);
 }
 
 TEST(GradeReport, SameInputGivesByteIdenticalOutput) {
@@ -372,7 +420,10 @@ TEST(GradeReport, SameInputGivesByteIdenticalOutput) {
         EXPECT_EQ(one, readFile(dir / "two" / file)) << file;
     }
     EXPECT_EQ(entries(dir / "one"),
-              (std::set<std::string>{"report.html", "summary.csv", "junit.xml", "results.json"}));
+              (std::set<std::string>{"report.html", "summary.csv", "junit.xml", "results.json",
+                                     "students"}));
+    EXPECT_EQ(readFile(dir / "one/students/<script>x</script>/report.html"),
+              readFile(dir / "two/students/<script>x</script>/report.html"));
 }
 
 TEST(AtomicFile, ReplacesAnExistingFileAndLeavesNoTemporaryFile) {
@@ -407,4 +458,62 @@ TEST(AtomicFile, FailedRenameRemovesTheTemporaryFile) {
     EXPECT_THROW(writeTextFileAtomic(dir / "taken", "text"), Error);
     EXPECT_EQ(entries(dir.path()), std::set<std::string>{"taken"});
     EXPECT_TRUE(fs::is_directory(dir / "taken" / "inside"));
+}
+
+// The four LMS imports, each against its documented columns (grade_report.h
+// says where each LMS documents them).
+namespace {
+
+ClassResult rosterClass() {
+    ClassResult r = sampleClass();
+    r.students[0].roster = {"00246", "Doe, Jo", "1234", "jdoe", "A", "jo@example.edu"};
+    r.students[1].roster = {"", "", "", "", "B", ""};  // no id any LMS can match
+    r.students[0].stages[1].excused = true;
+    return r;
+}
+
+}  // namespace
+
+TEST(GradeReport, CanvasCsvNamesTheAssignmentIdsTheCourseFileGivesAndExcuses) {
+    GradebookColumns c;
+    c.ids = {{"01-raycast", "87568490"}};
+    EXPECT_EQ(canvasCsv(rosterClass(), c),
+              "Student,ID,SIS User ID,SIS Login ID,Section,RayLab 01-raycast (87568490),RayLab "
+              "04-recursion\r\n"
+              "Points Possible,,,,,100,100\r\n"
+              "\"Doe, Jo\",1234,00246,jdoe,A,70,EX\r\n");
+}
+
+TEST(GradeReport, MoodleCsvHasItsIdentityColumnsAndAColumnPerStage) {
+    EXPECT_EQ(moodleCsv(rosterClass(), GradebookColumns{}),
+              "First name,Last name,ID number,Email address,Username,RayLab 01-raycast,RayLab "
+              "04-recursion\r\n"
+              "Jo,Doe,00246,jo@example.edu,jdoe,70,\r\n");
+    ClassResult none = rosterClass();
+    none.students[0].roster = {};
+    EXPECT_THROW(moodleCsv(none, GradebookColumns{}), Error);
+}
+
+TEST(GradeReport, BlackboardCsvQuotesEveryFieldAndNamesColumnIds) {
+    GradebookColumns c;
+    c.prefix = "Lab ";
+    c.ids = {{"04-recursion", "1234"}};
+    EXPECT_EQ(blackboardCsv(rosterClass(), c),
+              "\"Last Name\",\"First Name\",\"Username\",\"Student ID\",\"Lab 01-raycast\","
+              "\"Lab 04-recursion [Total Pts: 100 Score] |1234\"\r\n"
+              "\"Doe\",\"Jo\",\"jdoe\",\"00246\",\"70\",\"\"\r\n");
+    ClassResult none = rosterClass();
+    none.students[0].roster.loginId.clear();
+    EXPECT_THROW(blackboardCsv(none, c), Error) << "the Grade Center matches by username only";
+}
+
+TEST(GradeReport, BrightspaceCsvHasPointsGradeColumnsAndTheEndOfLineIndicator) {
+    EXPECT_EQ(brightspaceCsv(rosterClass(), GradebookColumns{}),
+              "OrgDefinedId,Username,RayLab 01-raycast Points Grade,RayLab 04-recursion Points "
+              "Grade,End-of-Line Indicator\r\n"
+              "#00246,#jdoe,70,,#\r\n");
+    ClassResult none = rosterClass();
+    none.students[0].roster.id.clear();
+    none.students[0].roster.loginId.clear();
+    EXPECT_THROW(brightspaceCsv(none, GradebookColumns{}), Error);
 }

@@ -30,7 +30,14 @@ json classResultJson(const ClassResult& result) {
     for (const StudentResult& st : result.students) {
         json stages = json::array();
         for (const StageResult& r : st.stages) stages.push_back(json::parse(stageResultToJson(r)));
-        doc["students"].push_back({{"name", st.name}, {"stages", stages}});
+        json regrades = json::array();
+        for (const Regrade& g : st.regrades) {
+            json changes = json::array();
+            for (const RegradeChange& c : g.changes)
+                changes.push_back({{"stage", c.stage}, {"before", c.before}, {"after", c.after}});
+            regrades.push_back({{"when", g.when}, {"reason", g.reason}, {"changes", changes}});
+        }
+        doc["students"].push_back({{"name", st.name}, {"stages", stages}, {"regrades", regrades}});
     }
     return doc;
 }
@@ -46,6 +53,14 @@ ClassResult classResultFrom(const json& doc) {
     for (const json& st : doc.at("students")) {
         StudentResult student;
         student.name = st.at("name").get<std::string>();
+        for (const json& g : st.value("regrades", json::array())) {
+            Regrade regrade{g.at("when").get<std::string>(), g.at("reason").get<std::string>(), {}};
+            for (const json& c : g.at("changes"))
+                regrade.changes.push_back({c.at("stage").get<std::string>(),
+                                           c.at("before").get<std::string>(),
+                                           c.at("after").get<std::string>()});
+            student.regrades.push_back(std::move(regrade));
+        }
         for (const json& r : st.at("stages"))
             student.stages.push_back(stageResultFromJson(r.dump()));
         result.students.push_back(std::move(student));

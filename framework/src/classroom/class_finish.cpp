@@ -12,8 +12,9 @@
 
 namespace raylab {
 
-void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const SubmissionTimes& times,
-                     const std::map<std::string, std::string>& folderOf) {
+void applyCourseRules(ClassResult& result, const CourseSettings& course,
+                      const SubmissionTimes* times,
+                      const std::map<std::string, std::string>& folderOf) {
     std::vector<std::string> untimed;  // said on the console: a misspelt name escapes the policy
     for (StudentResult& st : result.students) {
         auto folder = folderOf.find(st.name);
@@ -21,16 +22,32 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
         for (StageResult& s : st.stages) {
             s.latePenalty = 0;
             s.lateNote.clear();
-            if (s.status == "not submitted" || !policy.deadlineOf(s.stage)) continue;
-            const std::optional<std::int64_t> when = times.of(name, s.stage);
+            s.excused = false;
+            s.excuseNote.clear();
+            if (const StudentException* e = course.excuseOf(name, s.stage)) {
+                s.excused = true;
+                s.excuseNote = e->reason.empty() ? "excused by the course file" : e->reason;
+                continue;
+            }
+            const std::optional<std::int64_t> due = course.deadlineFor(name, s.stage);
+            if (s.status == "not submitted" || !course.late || !due || !times) continue;
+            const StudentException* extension = course.extensionOf(name, s.stage);
+            const std::string extended =
+                extension ? "extended to " + formatUtc(*due) +
+                                (extension->reason.empty() ? "" : " (" + extension->reason + ")")
+                          : "";
+            const std::optional<std::int64_t> when = times->of(name, s.stage);
             if (!when) {
-                s.lateNote = "no submission time in " + times.source() + ": taken as on time";
+                s.lateNote = "no submission time in " + times->source() + ": taken as on time";
                 untimed.push_back(st.name + " " + s.stage);
                 continue;
             }
-            const int days = policy.daysLate(s.stage, *when);
-            if (days == 0) continue;
-            const double percent = policy.penaltyPercent(s.stage, *when);
+            const int days = course.late->daysLate(due, *when);
+            if (days == 0) {
+                s.lateNote = extended.empty() ? "" : "on time, " + extended;
+                continue;
+            }
+            const double percent = course.late->penaltyForDays(days);
             const double raw = s.score;
             s.latePenalty = std::round(raw * percent) / 100.0;
             s.score = std::round((raw - s.latePenalty) * 100.0) / 100.0;
@@ -38,7 +55,7 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
             std::snprintf(note, sizeof note, "submitted %s, %d day%s late: -%g%%, %g instead of %g",
                           formatUtc(*when).c_str(), days, days == 1 ? "" : "s", percent, s.score,
                           raw);
-            s.lateNote = note;
+            s.lateNote = note + (extended.empty() ? "" : " (" + extended + ")");
         }
     }
     if (!untimed.empty())
@@ -46,7 +63,7 @@ void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const Submis
                      "raylab grade: %zu graded stage%s no submission time in %s (taken as on "
                      "time): %s\n",
                      untimed.size(), untimed.size() == 1 ? " has" : "s have",
-                     times.source().c_str(), firstFew(untimed).c_str());
+                     times->source().c_str(), firstFew(untimed).c_str());
 }
 
 std::vector<std::string> attachRoster(ClassResult& result,

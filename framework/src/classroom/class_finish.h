@@ -13,15 +13,22 @@
 
 namespace raylab {
 
-// Takes each late stage's penalty from its score (StageResult::latePenalty,
-// lateNote). NAMEOF maps a result's name back to the folder the times are
-// kept under (the same unless the names are pseudonyms). Stages not graded
-// or without a time are left alone; a graded stage without a time is noted.
-void applyLatePolicy(ClassResult& result, const LatePolicy& policy, const SubmissionTimes& times,
-                     const std::map<std::string, std::string>& folderOf);
+// The course file's rules for each student's stages: an excused stage
+// counts for nothing (StageResult::excused); a late one loses the late
+// policy's share of its score (latePenalty, lateNote), its deadline moved by
+// the student's extension. TIMES (null: no late policy to apply) says when
+// each submitted. NAMEOF maps a result's name back to the folder the course
+// file and the times know (the same unless the names are pseudonyms).
+// Stages not submitted or without a deadline are never late; a graded stage
+// without a time is noted and taken as on time.
+void applyCourseRules(ClassResult& result, const CourseSettings& course,
+                      const SubmissionTimes* times,
+                      const std::map<std::string, std::string>& folderOf);
 
 // Every student's roster entry; roster students without a folder are added
-// as not submitted. Returns the folders the roster does not list.
+// as not submitted. Returns the folders the roster does not list. ROSTER is
+// keyed by the results' names (pseudonyms in an anonymised run, whose
+// entries then hold the section only).
 std::vector<std::string> attachRoster(ClassResult& result,
                                       const std::map<std::string, RosterEntry>& roster);
 

@@ -8,11 +8,13 @@
 #include "grade_class.h"
 #include "grade_shards.h"
 #include "lab_folder.h"
+#include "lms_exports.h"
 #include "pseudonyms.h"
 #include "submission_times.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 namespace raylab {
 
@@ -22,13 +24,15 @@ namespace {
 
 // The options only a whole class's reports use, checked before any work.
 void checkReportOptions(const GradeOptions& g) {
-    if (!g.lms.empty() && g.lms != "canvas")
-        throw Error("--lms must be canvas (the one LMS import written so far), not '" + g.lms +
-                    "'");
+    parseLmsList(g.lms);  // an unknown LMS stops here
+    if (!g.reason.empty() && g.only.empty())
+        throw Error("--reason says why a student is regraded: it goes with --only NAME");
     if (!g.lms.empty() && g.roster.empty())
-        throw Error("--lms canvas needs --roster FILE (Canvas matches students by their ids)");
-    if (!g.anonymise.empty() && (!g.roster.empty() || !g.lms.empty()))
-        throw Error("--anonymise cannot go with --roster or --lms: their ids name the students");
+        throw Error("--lms " + g.lms +
+                    " needs --roster FILE (an LMS matches students by their ids)");
+    if (!g.anonymise.empty() && !g.lms.empty())
+        throw Error("--anonymise cannot go with --lms: an LMS import names the students by their "
+                    "ids");
     if (!g.anonymise.empty()) {
         // The key must not reach the TAs with the report.
         std::error_code ec;
@@ -52,10 +56,40 @@ void checkReportOptions(const GradeOptions& g) {
                     " has a late policy: say when each student submitted, --submitted CSV "
                     "(student,submitted[,stage]) or --submitted mtime (the stage folders' "
                     "modification times, when they were kept)");
-    if (!g.roster.empty()) readRoster(g.roster);
+    if (!g.roster.empty()) checkRosterServes(parseLmsList(g.lms), readRoster(g.roster));
     if (!g.course.empty()) readCourseFile(g.course);
     if (!g.submitted.empty() && g.submitted != "mtime")
         SubmissionTimes::read(g.submitted, g.submissions);
+}
+
+// What one student's stage shows in a regrade's log: the score as graded
+// (before a late policy), or why there is none.
+std::string outcome(const StageResult* s) {
+    if (!s) return "no result";
+    if (s->status != "graded") return s->status;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", s->score);
+    std::string t = text;
+    t.erase(t.find_last_not_of('0') + 1);
+    if (t.back() == '.') t.pop_back();
+    return t;
+}
+
+// BEFORE's regrades (null: the student was not in the report) and this one.
+std::vector<Regrade> regradeOf(const StudentResult* before, const StudentResult& after,
+                               const std::string& reason) {
+    std::vector<Regrade> history = before ? before->regrades : std::vector<Regrade>{};
+    Regrade g{formatUtc(std::int64_t(std::time(nullptr))), reason, {}};
+    for (const StageResult& s : after.stages) {
+        const StageResult* old = nullptr;
+        if (before)
+            for (const StageResult& o : before->stages)
+                if (o.stage == s.stage) old = &o;
+        const std::string was = before ? outcome(old) : "not in the report";
+        if (was != outcome(&s)) g.changes.push_back({s.stage, was, outcome(&s)});
+    }
+    history.push_back(std::move(g));
+    return history;
 }
 
 }  // namespace
@@ -127,11 +161,13 @@ std::optional<double> gradeAndReport(const GradeOptions& options) {
     }
     const double thisRun = result.seconds;
     if (earlier) {
-        // The one student's new results in place of the old, or added.
-        const StudentResult fresh = result.students.front();
+        // The one student's new results in place of the old, or added, and
+        // the regrade in their history.
+        StudentResult fresh = result.students.front();
         ClassResult merged = *earlier;
         auto it = std::find_if(merged.students.begin(), merged.students.end(),
                                [&](const StudentResult& s) { return s.name == fresh.name; });
+        fresh.regrades = regradeOf(it == merged.students.end() ? nullptr : &*it, fresh, g.reason);
         if (it == merged.students.end()) merged.students.push_back(fresh);
         else *it = fresh;
         std::sort(merged.students.begin(), merged.students.end(),

@@ -1,16 +1,20 @@
 #include "class_reports.h"
 
+#include "atomic_file.h"
 #include "class_finish.h"
 #include "class_roster.h"
+#include "class_sections.h"
 #include "course_file.h"
 #include "error.h"
 #include "grade_report.h"
 #include "grade_stage.h"
+#include "lms_exports.h"
 #include "pseudonyms.h"
 #include "submission_times.h"
 
 #include <cstdio>
 #include <map>
+#include <optional>
 
 namespace raylab {
 
@@ -25,7 +29,8 @@ void printSummary(const ClassResult& result) {
     for (const StudentResult& st : result.students) {
         std::printf("%-24.24s", st.name.c_str());
         for (const StageResult& r : st.stages) {
-            if (r.status == "graded") std::printf(" %6.1f", r.score);
+            if (r.excused) std::printf(" %6s", "EX");
+            else if (r.status == "graded") std::printf(" %6.1f", r.score);
             else if (r.status == "not submitted") std::printf(" %6s", "-");
             else
                 std::printf(" %6s", r.status == "compile error" ? "CE"
@@ -35,7 +40,15 @@ void printSummary(const ClassResult& result) {
         std::printf(" %8.1f\n", st.score());
     }
     std::printf("(scores out of 100 per stage; - not submitted, CE compile error, TIME timed out, "
-                "ERR crashed or other error)\n");
+                "ERR crashed or other error, EX excused)\n");
+}
+
+// OUT/regrades.csv when a student was regraded (--only), else none.
+void writeRegradeLog(const ClassResult& result, const fs::path& file) {
+    for (const StudentResult& st : result.students)
+        if (!st.regrades.empty()) return writeTextFileAtomic(file, regradeCsv(result));
+    std::error_code ec;
+    fs::remove(file, ec);
 }
 
 // The class reports in OUT and the summary table on stdout.
@@ -50,56 +63,74 @@ void writeClassReports(const ClassResult& result, const fs::path& out) {
     }
     writeSummaryCsv(result, out / "summary.csv");
     writeJunitXml(result, out / "junit.xml");
-    writeHtmlReport(result, out);
+    writeRegradeLog(result, out / "regrades.csv");
+    ClassPageOptions page;
+    page.sections = writeSectionReports(result, out);
+    writeHtmlReport(result, out, page);
     printSummary(result);
 }
 
 }  // namespace
 
 void finishAndReport(ClassResult result, const GradeOptions& g, const fs::path& out) {
-    if (!g.course.empty()) {
-        const CourseSettings course = readCourseFile(g.course);
-        if (course.late) {
-            if (g.submitted.empty())
-                throw Error("--course " + g.course +
-                            " has a late policy: give --submitted (a CSV, or mtime)");
-            const SubmissionTimes times = SubmissionTimes::read(g.submitted, g.submissions);
-            std::map<std::string, std::string> folderOf;  // result name -> the times' name
-            if (result.anonymised) {
-                if (g.anonymise.empty())
-                    throw Error("the names are pseudonyms: a late policy needs --anonymise KEYFILE "
-                                "to find each student's submission time");
-                folderOf = PseudonymKey(g.anonymise).known();
-            }
-            applyLatePolicy(result, *course.late, times, folderOf);
+    const CourseSettings course = g.course.empty() ? CourseSettings{} : readCourseFile(g.course);
+    // Pseudonyms: the course file, the times and the roster know the folders.
+    std::optional<PseudonymKey> key;
+    std::map<std::string, std::string> folderOf;  // result name -> folder name
+    if (result.anonymised) {
+        const bool needsNames = course.late || !course.extensions.empty() ||
+                                !course.excused.empty() || !g.roster.empty();
+        if (g.anonymise.empty() && needsNames)
+            throw Error("the names are pseudonyms: the course file's rules and the roster need "
+                        "--anonymise KEYFILE to find each student");
+        if (!g.anonymise.empty()) {
+            key.emplace(g.anonymise);
+            folderOf = key->known();
         }
     }
     if (!g.roster.empty()) {
-        const std::vector<std::string> unlisted = attachRoster(result, readRoster(g.roster));
+        std::map<std::string, RosterEntry> roster = readRoster(g.roster);
+        if (key) {
+            // An anonymised run keeps the sections only, under the pseudonyms.
+            std::map<std::string, RosterEntry> sections;
+            for (const auto& [name, entry] : roster) {
+                RosterEntry only;
+                only.section = entry.section;
+                sections[key->pseudonym(name)] = only;
+            }
+            key->save();
+            roster = std::move(sections);
+        }
+        const std::vector<std::string> unlisted = attachRoster(result, roster);
         if (!unlisted.empty())
             std::fprintf(stderr,
                          "raylab grade: %zu student folder%s not in the roster (%s): no id in "
                          "summary.csv%s\n",
                          unlisted.size(), unlisted.size() == 1 ? " is" : "s are",
                          firstFew(unlisted).c_str(),
-                         g.lms.empty() ? "" : ", left out of canvas.csv");
-        std::string missing;
+                         g.lms.empty() ? "" : ", left out of the LMS exports");
+        std::vector<std::string> missing;
         for (const StudentResult& st : result.students)
-            if (!st.hasFolder) missing += (missing.empty() ? "" : ", ") + st.name;
+            if (!st.hasFolder) missing.push_back(st.name);
         if (!missing.empty())
             std::fprintf(stderr,
-                         "raylab grade: in the roster without a submission folder (not "
+                         "raylab grade: %zu in the roster without a submission folder (not "
                          "submitted; a typo?): %s\n",
-                         missing.c_str());
+                         missing.size(), firstFew(missing, 10).c_str());
     }
+    std::optional<SubmissionTimes> times;
+    if (course.late) {
+        if (g.submitted.empty())
+            throw Error("--course " + g.course +
+                        " has a late policy: give --submitted (a CSV, or mtime)");
+        times = SubmissionTimes::read(g.submitted, g.submissions);
+    }
+    // After the roster: its students without a folder may be excused too.
+    if (key) folderOf = key->known();
+    applyCourseRules(result, course, times ? &*times : nullptr, folderOf);
     matchMistakes(result);
     writeClassReports(result, out);
-    std::error_code ec;
-    if (g.lms.empty()) fs::remove(out / "canvas.csv", ec);  // never one of an earlier run
-    if (g.lms == "canvas") {
-        writeCanvasCsv(result, out / "canvas.csv", "RayLab ");
-        std::printf("canvas.csv: import it in Canvas under Grades > Import\n");
-    }
+    writeLmsExports(result, parseLmsList(g.lms), course.lms, out);
 }
 
 }  // namespace raylab

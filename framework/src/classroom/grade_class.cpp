@@ -7,6 +7,7 @@
 #include "error.h"
 #include "grade_shards.h"
 #include "grade_stage.h"
+#include "lms_exports.h"
 #include "paths.h"
 #include "pseudonyms.h"
 #include "stage_list.h"
@@ -194,7 +195,31 @@ private:
     bool tty_;
 };
 
+// A regrade (--only) keeps the student's earlier results, pictures and logs:
+// OUT/history/<name>/<n>/, n counting the regrades.
+void keepEarlierResults(const fs::path& out, const std::string& name) {
+    std::error_code ec;
+    const fs::path folder = studentFolder(out, name);
+    if (!fs::exists(folder, ec)) return;
+    int n = 1;
+    while (fs::exists(out / "history" / name / std::to_string(n), ec)) ++n;
+    const fs::path kept = out / "history" / name / std::to_string(n);
+    fs::create_directories(kept.parent_path(), ec);
+    fs::rename(folder, kept, ec);
+    if (ec)
+        throw Error("--only " + name + ": cannot keep the earlier results in " + kept.string() +
+                    " (" + ec.message() + ")");
+}
+
 }  // namespace
+
+std::vector<std::string> classOutputs() {
+    std::vector<std::string> files{"students",  "reference",   "history",
+                                   "sections",  "report.html", "summary.csv",
+                                   "junit.xml", "class.json",  "regrades.csv"};
+    for (const std::string& lms : kLmsNames) files.push_back(lms + ".csv");
+    return files;
+}
 
 std::vector<const StageInfo*> stagesToGrade(const std::string& list) {
     if (list.empty()) {
@@ -255,14 +280,13 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     // that student's results and keeps the rest, the references included.
     bool referencesReady = false;
     if (!g.only.empty()) {
-        fs::remove_all(studentFolder(out, shown.front()), ec);
+        keepEarlierResults(out, shown.front());
         referencesReady = true;
         for (const StageInfo* s : stages)
             referencesReady = referencesReady && fs::is_directory(out / "reference" / s->id, ec);
     } else {
-        for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml",
-                                "shard.json", "class.json", "canvas.csv"})
-            fs::remove_all(out / own, ec);
+        for (const std::string& own : classOutputs()) fs::remove_all(out / own, ec);
+        fs::remove_all(out / "shard.json", ec);
     }
     fs::create_directories(out / "reference", ec);
     if (ec) throw Error("--out '" + g.outDir + "': cannot create the folder");
@@ -371,31 +395,37 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
                     haveResult = true;
                 } catch (const Error&) {}
             }
-            if (!g.anonymise.empty())
-                scrubNames(itemDir / "log.txt", students[item.student], shown[item.student],
-                           submissions);
+            // No student-facing text names the grading machine's folders
+            // (or, anonymised, the student).
+            const std::string& name = students[item.student];
+            scrubNames(itemDir / "log.txt", name, shown[item.student], submissions);
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
-            if (!g.anonymise.empty()) {
-                r.message = withoutName(r.message, students[item.student], shown[item.student],
-                                        submissions);
-                for (CheckResult& c : r.checks)
-                    c.output = withoutName(c.output, students[item.student], shown[item.student],
-                                           submissions);
-                if (haveResult) writeTextFileAtomic(itemDir / "result.json", stageResultToJson(r));
-            }
+            auto clean = [&](const std::string& text) {
+                return g.anonymise.empty()
+                           ? withoutMachinePath(text, name, submissions)
+                           : withoutName(text, name, shown[item.student], submissions);
+            };
+            const std::string before = stageResultToJson(r);
+            r.message = clean(r.message);
+            for (CheckResult& c : r.checks) c.output = clean(c.output);
+            if (haveResult && stageResultToJson(r) != before)
+                writeTextFileAtomic(itemDir / "result.json", stageResultToJson(r));
             finish(item, r);
         };
         return runPool(items.size(), jobs, startItem, itemDone, interrupted);
     };
     std::deque<Item> timedOut;
     bool completed = runItems(queue, g.jobs, [&](const Item& item, StageResult r) {
-        if (r.status == "timed out") timedOut.push_back(item);
+        // With --jobs 1 the item ran alone already: a rerun would cost the
+        // timeout again for the same verdict.
+        if (r.status == "timed out" && g.jobs > 1) timedOut.push_back(item);
         else progress.done(students[item.student], r);
         graded[{item.student, item.stage->id}] = std::move(r);
     });
     // A wall-clock limit depends on the load: an item that timed out while
     // others ran beside it gets a second run on its own before it scores 0.
+    // (Gradescope and PrairieLearn grade with --jobs 1: no second run.)
     if (completed && !timedOut.empty()) {
         std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n",
                      timedOut.size(), timedOut.size() == 1 ? "" : "s",

@@ -19,6 +19,10 @@ namespace raylab {
 // (upload_grading.h) write their own results.
 std::optional<ClassResult> gradeClass(const GradeOptions& g);
 
+// What a whole run writes in OUT (and clears first: no stale result of an
+// earlier run may be mixed into this one), shard.json aside.
+std::vector<std::string> classOutputs();
+
 // The stages --stages names ("01-03,f1"); every stage when LIST is empty.
 std::vector<const StageInfo*> stagesToGrade(const std::string& list);
 

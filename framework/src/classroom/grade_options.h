@@ -21,9 +21,10 @@ struct GradeOptions {
     std::string course;     // --course FILE: weights over stage.json's, a late policy
     std::string submitted;  // --submitted CSV|mtime: when each student submitted
     std::string roster;     // --roster CSV: ids (summary.csv) and what an LMS needs
-    std::string lms;        // --lms canvas: also OUT/canvas.csv
+    std::string lms;  // --lms canvas,moodle,blackboard,brightspace: OUT/<lms>.csv (lms_exports.h)
     std::string anonymise;  // --anonymise KEYFILE: pseudonyms (pseudonyms.h) in every report file
     std::string only;       // --only NAME: regrade one student into OUT's report
+    std::string reason;     // --reason TEXT: why (the regrade's log)
     std::string level = "guided";  // --level: of the labs handed out (lab_folder.h)
 };
 

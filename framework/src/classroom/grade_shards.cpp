@@ -4,6 +4,7 @@
 #include "class_reports.h"
 #include "course_file.h"
 #include "error.h"
+#include "grade_class.h"
 #include "grade_stage.h"
 #include "paths.h"
 
@@ -102,9 +103,7 @@ void mergeShards(const std::vector<std::string>& args, const GradeOptions& optio
 
     // The files: the reference pictures once, every student's folder from its share.
     std::error_code ec;
-    for (const char* own : {"students", "reference", "report.html", "summary.csv", "junit.xml",
-                            "class.json", "canvas.csv"})
-        fs::remove_all(out / own, ec);
+    for (const std::string& own : classOutputs()) fs::remove_all(out / own, ec);
     fs::create_directories(out, ec);
     if (ec) throw Error("--merge " + out.string() + ": cannot create the folder");
     try {

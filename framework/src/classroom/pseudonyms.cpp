@@ -81,26 +81,42 @@ void PseudonymKey::save() const {
     fs::permissions(file_, fs::perms::owner_read | fs::perms::owner_write, ec);
 }
 
-// TEXT with the student's folder (as given, absolute, canonical) and name
-// replaced by the pseudonym: compiler messages name the student's files.
-std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
-                        const fs::path& submissions) {
-    std::error_code ec;
-    const fs::path folder = submissions / name;
-    std::vector<std::string> forms = {fs::weakly_canonical(folder, ec).string(),
-                                      fs::absolute(folder, ec).string(), folder.string(),
-                                      displayPath(folder)};
-    // The bare name too, where it is long enough not to hit ordinary words.
-    if (name.size() >= 4) forms.push_back(name);
+namespace {
+
+// TEXT with each of FORMS replaced by REPLACEMENT, on after each replacement
+// (the replacement may hold a form: "stud" in "student-...").
+std::string replaceAll(std::string text, const std::vector<std::string>& forms,
+                       const std::string& replacement) {
     for (const std::string& form : forms) {
         if (form.empty()) continue;
-        // On after each replacement: the pseudonym may hold the name
-        // ("stud" in "student-...").
         for (std::size_t at = text.find(form); at != std::string::npos;
-             at = text.find(form, at + pseudonym.size()))
-            text.replace(at, form.size(), pseudonym);
+             at = text.find(form, at + replacement.size()))
+            text.replace(at, form.size(), replacement);
     }
     return text;
+}
+
+// The ways a message may write FOLDER: as given, absolute, canonical, as
+// shown from the working folder.
+std::vector<std::string> folderForms(const fs::path& folder) {
+    std::error_code ec;
+    return {fs::weakly_canonical(folder, ec).string(), fs::absolute(folder, ec).string(),
+            folder.string(), displayPath(folder)};
+}
+
+}  // namespace
+
+std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
+                        const fs::path& submissions) {
+    std::vector<std::string> forms = folderForms(submissions / name);
+    // The bare name too, where it is long enough not to hit ordinary words.
+    if (name.size() >= 4) forms.push_back(name);
+    return replaceAll(std::move(text), forms, pseudonym);
+}
+
+std::string withoutMachinePath(std::string text, const std::string& name,
+                               const fs::path& submissions) {
+    return replaceAll(std::move(text), folderForms(submissions / name), name);
 }
 
 void scrubNames(const fs::path& log, const std::string& name, const std::string& pseudonym,
@@ -108,7 +124,8 @@ void scrubNames(const fs::path& log, const std::string& name, const std::string&
     std::error_code ec;
     if (!fs::is_regular_file(log, ec)) return;
     const std::string text = readTextFile(log);
-    const std::string clean = withoutName(text, name, pseudonym, submissions);
+    const std::string clean = name == pseudonym ? withoutMachinePath(text, name, submissions)
+                                                : withoutName(text, name, pseudonym, submissions);
     if (clean != text) writeTextFileAtomic(log, clean);
 }
 

@@ -37,7 +37,15 @@ private:
 std::string withoutName(std::string text, const std::string& name, const std::string& pseudonym,
                         const std::filesystem::path& submissions);
 
-// The same for the text file LOG, rewritten whole when anything changed.
+// TEXT with the student's folder under SUBMISSIONS (as given, absolute,
+// canonical) written as NAME/ alone: what a student sees never shows the
+// grading machine's folders ("alice/01-raycast/shade.glsl:12", not
+// "/scratch/job-4411/class/alice/01-raycast/shade.glsl:12").
+std::string withoutMachinePath(std::string text, const std::string& name,
+                               const std::filesystem::path& submissions);
+
+// withoutName (or withoutMachinePath when PSEUDONYM is NAME) for the text
+// file LOG, rewritten whole when anything changed.
 void scrubNames(const std::filesystem::path& log, const std::string& name,
                 const std::string& pseudonym, const std::filesystem::path& submissions);
 

@@ -42,7 +42,8 @@ Command gradeCommand() {
                            "write shard.json for --merge");
             cmd.add_option("--merge", *merge,
                            "OUT SHARD_DIR...: put the shares of a --shard run together into one "
-                           "report in OUT (with --course, --roster, --submitted CSV, --lms only)")
+                           "report in OUT (with --course, --roster, --submitted CSV, --lms, "
+                           "--anonymise only)")
                 ->expected(2, 100000);
             cmd.add_option("--course", g->course,
                            "a course file: weights over stage.json's, a late policy "
@@ -53,9 +54,11 @@ Command gradeCommand() {
                            "default)");
             cmd.add_option("--roster", g->roster,
                            "a CSV with a student column (the folder names) and id, name, "
-                           "canvas_id, login_id, section: ids in summary.csv, and for --lms");
-            cmd.add_option("--lms", g->lms, "also write OUT/canvas.csv, Canvas's gradebook import")
-                ->check(CLI::IsMember({"canvas"}));
+                           "canvas_id, login_id, section, email: ids in summary.csv, a report per "
+                           "section, and what --lms needs");
+            cmd.add_option("--lms", g->lms,
+                           "also write the gradebook import of these LMSs, OUT/<lms>.csv: canvas, "
+                           "moodle, blackboard, brightspace (a list: canvas,moodle)");
             cmd.add_option("--anonymise,--anonymize", g->anonymise,
                            "KEYFILE: pseudonyms instead of folder names in every report file, "
                            "for TAs; KEYFILE (made when missing; keep it outside --out) holds the "
@@ -67,7 +70,10 @@ Command gradeCommand() {
                 ->capture_default_str();
             cmd.add_option("--only", g->only,
                            "regrade this one student into the existing report in --out (the "
-                           "report is rewritten; nothing else changes)");
+                           "report is rewritten; the earlier results are kept in "
+                           "OUT/history/NAME/ and the regrade logged in OUT/regrades.csv)");
+            cmd.add_option("--reason", g->reason,
+                           "with --only: why the student is regraded (the regrade's log)");
             return std::function<int()>([=] {
                 if (!merge->empty()) {
                     if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty() ||

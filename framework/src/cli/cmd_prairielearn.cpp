@@ -54,6 +54,7 @@ struct PlOptions {
     double timeoutSeconds = 60.0;
     long memoryMb = 2048;
     std::string level = "guided";
+    std::string seededViews = "hidden";  // "shown": each seeded view as its own test
 };
 
 int cmdPrairieLearn(const PlOptions& o) {
@@ -104,7 +105,19 @@ int cmdPrairieLearn(const PlOptions& o) {
                                  {"message", shown(s.message.empty() ? s.status : s.message)}});
             continue;
         }
+        // PrairieLearn shows every test of results.json at once (its tests
+        // have no visibility of their own, unlike Gradescope's). Hidden
+        // seeded views are one test: their points count (the score is the
+        // grade), but not which view failed, how, or its picture.
+        double seededPoints = 0, seededMax = 0;
+        int seededCount = 0;
         for (const CheckResult& c : s.checks) {
+            if (c.seeded && o.seededViews == "hidden") {
+                seededPoints += c.score;
+                seededMax += c.maxScore;
+                ++seededCount;
+                continue;
+            }
             Json t{{"name", s.stage + " / " + c.name},
                    {"description", c.kind == "image" ? "a camera view against the solution"
                                                      : "a function against a reference"},
@@ -126,6 +139,16 @@ int cmdPrairieLearn(const PlOptions& o) {
             }
             tests.push_back(t);
         }
+        if (seededCount > 0)
+            tests.push_back(
+                Json{{"name", s.stage + " / " + std::to_string(seededCount) + " further views"},
+                     {"description", "camera views moved a little from the check views"},
+                     {"points", seededPoints},
+                     {"max_points", seededMax},
+                     {"message", "Which of these views differ, and how, is shown after the due "
+                                 "date: the views are drawn from the course's secret seed, so "
+                                 "that a lab passes them by being right, not by matching a "
+                                 "picture."}});
     }
     const double max = st.maxScore();
     return write(Json{{"gradable", true},
@@ -157,6 +180,12 @@ Command prairieLearnCommand() {
                 cmd.add_option("--level", o->level,
                                "the level of the labs handed out: guided or open (raylab "
                                "handout --level)")
+                    ->capture_default_str();
+                cmd.add_option("--seeded-views", o->seededViews,
+                               "hidden: the seeded views count but are one test without "
+                               "details (PrairieLearn shows every test at once); shown: each "
+                               "its own test, e.g. for a regrade after the due date")
+                    ->check(CLI::IsMember({"hidden", "shown"}))
                     ->capture_default_str();
                 return std::function<int()>([=] { return cmdPrairieLearn(*o); });
             }};

@@ -5,6 +5,9 @@
 #include "error.h"
 #include "json_reader.h"
 #include "paths.h"
+#include "stage_list.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <ctime>
@@ -20,14 +23,56 @@ std::optional<std::int64_t> LatePolicy::deadlineOf(const std::string& stage) con
 }
 
 int LatePolicy::daysLate(const std::string& stage, std::int64_t submitted) const {
-    const std::optional<std::int64_t> due = deadlineOf(stage);
+    return daysLate(deadlineOf(stage), submitted);
+}
+
+int LatePolicy::daysLate(std::optional<std::int64_t> due, std::int64_t submitted) const {
     if (!due) return 0;
     const double late = double(submitted - *due) - graceMinutes * 60.0;
     return late > 0.0 ? int(std::ceil(late / 86400.0)) : 0;
 }
 
 double LatePolicy::penaltyPercent(const std::string& stage, std::int64_t submitted) const {
-    return std::min(maxPenalty, penaltyPerDay * double(daysLate(stage, submitted)));
+    return penaltyForDays(daysLate(stage, submitted));
+}
+
+double LatePolicy::penaltyForDays(int days) const {
+    return std::min(maxPenalty, penaltyPerDay * double(days));
+}
+
+bool StudentException::covers(const std::string& who, const std::string& stage) const {
+    return who == student &&
+           (stages.empty() || std::find(stages.begin(), stages.end(), stage) != stages.end());
+}
+
+namespace {
+
+const StudentException* firstCovering(const std::vector<StudentException>& list,
+                                      const std::string& student, const std::string& stage) {
+    for (const StudentException& e : list)
+        if (e.covers(student, stage)) return &e;
+    return nullptr;
+}
+
+}  // namespace
+
+const StudentException* CourseSettings::extensionOf(const std::string& student,
+                                                    const std::string& stage) const {
+    return firstCovering(extensions, student, stage);
+}
+
+const StudentException* CourseSettings::excuseOf(const std::string& student,
+                                                 const std::string& stage) const {
+    return firstCovering(excused, student, stage);
+}
+
+std::optional<std::int64_t> CourseSettings::deadlineFor(const std::string& student,
+                                                        const std::string& stage) const {
+    if (!late) return std::nullopt;
+    std::optional<std::int64_t> due = late->deadlineOf(stage);
+    const StudentException* e = extensionOf(student, stage);
+    if (!due || !e) return due;
+    return e->until ? std::max(*due, *e->until) : *due + e->extraSeconds;
 }
 
 const StageGrading& CourseSettings::gradingOf(const StageInfo& stage) const {
@@ -103,12 +148,90 @@ std::string formatUtc(std::int64_t seconds) {
     return buf;
 }
 
+namespace {
+
+// "extensions" (WITHTIME: each moves a deadline) or "excused".
+std::vector<StudentException> readExceptions(const JsonReader& r, const json& doc, const char* key,
+                                             bool withTime) {
+    std::vector<StudentException> list;
+    if (!doc.contains(key)) return list;
+    const json& items = doc[key];
+    if (!items.is_array()) r.fail(key, "expected a list of {\"student\": ..., ...}");
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
+        const json& item = items[i];
+        if (!item.is_object()) r.fail(where, "expected an object");
+        if (withTime) r.allowOnly(item, where, {"student", "stages", "days", "until", "reason"});
+        else r.allowOnly(item, where, {"student", "stages", "reason"});
+        StudentException e;
+        if (!item.contains("student"))
+            r.fail(where, "no \"student\" (the submission folder's name)");
+        e.student = r.string(item["student"], where + ".student");
+        if (e.student.empty()) r.fail(where + ".student", "empty");
+        if (item.contains("stages")) {
+            try {
+                e.stages = parseStageIds(r.string(item["stages"], where + ".stages"));
+            } catch (const Error& err) { r.fail(where + ".stages", err.what()); }
+        }
+        if (item.contains("reason")) e.reason = r.string(item["reason"], where + ".reason");
+        if (withTime) {
+            if (item.contains("days") == item.contains("until"))
+                r.fail(where, "give \"days\" (a number of days later) or \"until\" (a time), "
+                              "one of them");
+            if (item.contains("days")) {
+                const json& d = item["days"];
+                if (!d.is_number() || d.get<double>() <= 0.0 || d.get<double>() > 365.0)
+                    r.fail(where + ".days", "expected a number of days from 0 to 365");
+                e.extraSeconds = std::int64_t(std::llround(d.get<double>() * 86400.0));
+            } else {
+                e.until = parseIsoTime(r.string(item["until"], where + ".until"),
+                                       r.file + ": " + where + ".until");
+            }
+        }
+        list.push_back(std::move(e));
+    }
+    return list;
+}
+
+LmsColumns readLmsColumns(const JsonReader& r, const json& lms) {
+    if (!lms.is_object()) r.fail("lms", "expected an object");
+    r.allowOnly(lms, "lms", {"column_prefix", "canvas_assignments", "blackboard_columns"});
+    LmsColumns c;
+    if (lms.contains("column_prefix"))
+        c.prefix = r.string(lms["column_prefix"], "lms.column_prefix");
+    auto ids = [&](const char* key, std::map<std::string, std::string>& into) {
+        if (!lms.contains(key)) return;
+        const json& m = lms[key];
+        const std::string where = std::string("lms.") + key;
+        if (!m.is_object()) r.fail(where, "expected an object of stage ids");
+        for (auto it = m.begin(); it != m.end(); ++it) {
+            if (it.key() == "comment") continue;
+            std::string id;
+            try {
+                id = findStage(it.key()).id;
+            } catch (const Error& e) { r.fail(where + "." + it.key(), e.what()); }
+            const json& v = it.value();
+            std::string text = v.is_number_unsigned() ? std::to_string(v.get<std::uint64_t>())
+                               : v.is_string()        ? v.get<std::string>()
+                                                      : "";
+            if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+                r.fail(where + "." + it.key(), "expected the LMS's numeric id (12345)");
+            into[id] = text;
+        }
+    };
+    ids("canvas_assignments", c.canvasAssignments);
+    ids("blackboard_columns", c.blackboardColumns);
+    return c;
+}
+
+}  // namespace
+
 CourseSettings readCourseFile(const fs::path& file) {
     const std::string shown = displayPath(file);
     const JsonReader r{shown};
     const json doc = parseJsonFile(file, shown);
     if (!doc.is_object()) r.fail("(top level)", "expected an object");
-    r.allowOnly(doc, "", {"earlier_stages", "stages", "late"});
+    r.allowOnly(doc, "", {"earlier_stages", "stages", "late", "extensions", "excused", "lms"});
     CourseSettings c;
     c.file = file;
     if (doc.contains("earlier_stages")) {
@@ -176,6 +299,11 @@ CourseSettings readCourseFile(const fs::path& file) {
             r.fail("late", "a late policy needs a deadline (\"deadline\" or \"deadlines\")");
         c.late = p;
     }
+    c.extensions = readExceptions(r, doc, "extensions", true);
+    c.excused = readExceptions(r, doc, "excused", false);
+    if (!c.extensions.empty() && !c.late)
+        r.fail("extensions", "extensions move deadlines: the course file has no late policy");
+    if (doc.contains("lms")) c.lms = readLmsColumns(r, doc["lms"]);
     return c;
 }
 

@@ -15,8 +15,27 @@
 //       "grace_minutes": 15,
 //       "penalty_per_day": 10,
 //       "max_penalty": 50
+//     },
+//     "extensions": [
+//       {"student": "bob", "stages": "03", "days": 2, "reason": "ill, note of 12 Dec"},
+//       {"student": "carol", "until": "2026-12-20T12:00:00Z"}
+//     ],
+//     "excused": [{"student": "dave", "stages": "02", "reason": "exchange week"}],
+//     "lms": {
+//       "column_prefix": "RayLab ",
+//       "canvas_assignments": {"01-raycast": 87568490},
+//       "blackboard_columns": {"01-raycast": 1234}
 //     }
 //   }
+//
+// "extensions" move one student's deadlines (for "stages", default every
+// stage): "days" later, or "until" a time; the late policy then counts from
+// there. "excused" stages count for nothing, neither score nor points (an
+// LMS that knows "excused" is told so). "student" is the submission
+// folder's name, as in the roster. "lms" names the gradebook columns the
+// exports write (`raylab grade --lms`): Canvas matches a column to its
+// assignment by the assignment's id, Blackboard by the column's id; without
+// one, each LMS makes a new column named by the prefix and the stage id.
 //
 // "earlier_stages" says where a stage's grading takes the earlier stages it
 // builds on from (stage_sources.h): "solved" (the default: the course's
@@ -40,6 +59,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -52,8 +72,28 @@ struct LatePolicy {
     std::optional<std::int64_t> deadlineOf(const std::string& stage) const;
     // Whole days (or parts) past the deadline; 0 when on time or no deadline.
     int daysLate(const std::string& stage, std::int64_t submitted) const;
-    // The percent of the earned score taken.
+    int daysLate(std::optional<std::int64_t> due, std::int64_t submitted) const;
+    // The percent of the earned score taken for DAYS late.
     double penaltyPercent(const std::string& stage, std::int64_t submitted) const;
+    double penaltyForDays(int days) const;
+};
+
+// One student's extension or excused stages (the course file's
+// "extensions" and "excused").
+struct StudentException {
+    std::string student;              // the submission folder's name
+    std::vector<std::string> stages;  // stage ids; empty: every stage
+    std::int64_t extraSeconds = 0;    // "days" later
+    std::optional<std::int64_t> until;
+    std::string reason;
+    bool covers(const std::string& student, const std::string& stage) const;
+};
+
+// The gradebook columns of the LMS exports.
+struct LmsColumns {
+    std::string prefix = "RayLab ";
+    std::map<std::string, std::string> canvasAssignments;  // stage id -> Canvas assignment id
+    std::map<std::string, std::string> blackboardColumns;  // stage id -> Grade Center column id
 };
 
 struct CourseSettings {
@@ -61,6 +101,13 @@ struct CourseSettings {
     std::map<std::string, StageGrading> grading;  // stage id -> the course's
     std::optional<LatePolicy> late;
     EarlierStages earlierStages = EarlierStages::Solved;
+    std::vector<StudentException> extensions, excused;
+    LmsColumns lms;
+    // STUDENT's deadline for STAGE: the late policy's, moved by an extension.
+    std::optional<std::int64_t> deadlineFor(const std::string& student,
+                                            const std::string& stage) const;
+    const StudentException* extensionOf(const std::string& student, const std::string& stage) const;
+    const StudentException* excuseOf(const std::string& student, const std::string& stage) const;
     // The stage's grading: the course's where it sets one, else stage.json's.
     const StageGrading& gradingOf(const StageInfo& stage) const;
 };

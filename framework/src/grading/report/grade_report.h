@@ -4,14 +4,17 @@
 //   - Gradescope autograder results.json, one per student;
 //   - a class summary CSV (RFC 4180) for spreadsheets;
 //   - JUnit XML for CI dashboards;
-//   - one self-contained HTML page with every student, stage and check.
+//   - HTML pages: the class's, and one per student with every stage and check.
 // All output is deterministic (no dates, no hash-order): the same results give
 // byte-identical files. Scores are rounded to 2 decimals. Every writer goes
 // through writeTextFileAtomic, so a result file is either complete or absent.
 #include "grade_result.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace raylab {
 
@@ -53,16 +56,36 @@ bool isGradescopeVisibility(const std::string& value);
 std::string summaryCsv(const ClassResult& result);
 void writeSummaryCsv(const ClassResult& result, const std::filesystem::path& file);
 
-// Canvas's gradebook import (Grades > Import): Student, ID, SIS User ID,
-// SIS Login ID, Section, then one column per stage named "PREFIX<stage id>"
-// (Canvas makes a new assignment of each name it does not know), a "Points
-// Possible" row, then one row per roster student with an id Canvas can match
-// (ID, SIS User ID or SIS Login ID). Scores after late penalties; a stage not
-// submitted is left empty, which Canvas leaves as it is. Throws Error when
-// no student has an id.
-std::string canvasCsv(const ClassResult& result, const std::string& prefix);
-void writeCanvasCsv(const ClassResult& result, const std::filesystem::path& file,
-                    const std::string& prefix);
+// The LMS gradebook imports, one row per roster student the LMS can match,
+// scores after late penalties, a stage not submitted left empty (each LMS
+// then leaves that grade as it is). Each throws Error when no student has an
+// id that LMS matches by. COLUMNS: each stage's column is PREFIX<stage id>;
+// IDS gives the LMS's own id of a stage's column where the course file has it.
+struct GradebookColumns {
+    std::string prefix = "RayLab ";
+    std::map<std::string, std::string> ids;  // stage id -> the LMS's column id
+};
+// Canvas (Grades > Import): Student, ID, SIS User ID, SIS Login ID, Section,
+// a column per stage ("RayLab 01-raycast (87568490)" with its assignment's
+// id), a "Points Possible" row; "EX" for an excused stage.
+std::string canvasCsv(const ClassResult& result, const GradebookColumns& columns);
+// Moodle (Grades > Import > CSV file): First name, Last name, ID number,
+// Email address, Username (map one of them to the user), a column per stage.
+std::string moodleCsv(const ClassResult& result, const GradebookColumns& columns);
+// Blackboard Learn (Grade Center > Work Offline > Upload): "Last Name",
+// "First Name", "Username", "Student ID", a column per stage ("RayLab
+// 01-raycast [Total Pts: 100 Score] |1234" with its column's id), every
+// field quoted; matched by username.
+std::string blackboardCsv(const ClassResult& result, const GradebookColumns& columns);
+// Brightspace (Grades > Enter Grades > Import): OrgDefinedId, Username
+// ("#"-prefixed), "RayLab 01-raycast Points Grade" per stage, End-of-Line
+// Indicator ("#").
+std::string brightspaceCsv(const ClassResult& result, const GradebookColumns& columns);
+
+// regrades.csv: when,student,reason,stage,before,after - a row per stage a
+// regrade changed (one with empty stage columns when it changed nothing),
+// students in ClassResult order, each student's regrades oldest first.
+std::string regradeCsv(const ClassResult& result);
 
 // <testsuites> with one <testsuite name=STUDENT> per student and one
 // <testcase classname="STUDENT.STAGE" name=CHECK> per check (<failure> when
@@ -72,9 +95,26 @@ void writeCanvasCsv(const ClassResult& result, const std::filesystem::path& file
 std::string junitXml(const ClassResult& result);
 void writeJunitXml(const ClassResult& result, const std::filesystem::path& file);
 
-// OUTDIR/report.html: one page, inline CSS, no script, no external resources.
-// Image paths of the checks are relative to OUTDIR and used as they are.
-std::string htmlReport(const ClassResult& result);
-void writeHtmlReport(const ClassResult& result, const std::filesystem::path& outDir);
+// The HTML report, in pages that scale to a class of hundreds:
+//  - the class's page (OUTDIR/report.html): the class at a glance (the
+//    checks that fail most, the catalogued mistakes the failures look like,
+//    each listed once), then one row per student (section, each stage's
+//    score or status, the total), sortable by any column, every row linking
+//    to the student's page; no pictures, so that it stays small;
+//  - a page per student (OUTDIR/students/<name>/report.html): every stage
+//    with its checks, its pictures beside the reference's (loaded lazily,
+//    the alt text saying whose picture of which stage and view), compiler
+//    messages, late and excused notes, the regrades.
+// Inline CSS, no external resources; the only script sorts the class table.
+// Image paths of the checks are relative to OUTDIR.
+struct ClassPageOptions {
+    std::string title = "RayLab grading report";
+    // Links to the sections' own reports: (section, path relative to OUTDIR).
+    std::vector<std::pair<std::string, std::string>> sections;
+};
+std::string htmlClassPage(const ClassResult& result, const ClassPageOptions& options = {});
+std::string htmlStudentPage(const ClassResult& result, const StudentResult& student);
+void writeHtmlReport(const ClassResult& result, const std::filesystem::path& outDir,
+                     const ClassPageOptions& options = {});
 
 }  // namespace raylab

@@ -45,6 +45,10 @@ struct StageResult {
     // -20%"); 0 and empty when on time or without a policy.
     double latePenalty = 0;
     std::string lateNote;
+    // Excused by the course file (course_file.h, "excused"): neither its
+    // score nor its points count, whatever was graded; excuseNote says why.
+    bool excused = false;
+    std::string excuseNote;
     double rawScore() const { return score + latePenalty; }
 };
 
@@ -54,16 +58,30 @@ struct RosterEntry {
     std::string id;        // the student's id (SIS User ID in Canvas)
     std::string fullName;  // as the LMS shows it ("Last, First")
     std::string canvasId;  // Canvas's own user id ("ID")
-    std::string loginId;   // SIS Login ID
+    std::string loginId;   // SIS Login ID; the username in Moodle, Blackboard and Brightspace
     std::string section;
+    std::string email;  // Moodle can match students by it
+};
+
+// One regrade of a student (`raylab grade --only NAME`): when, why (as the
+// instructor gave it), and each stage whose result changed.
+struct RegradeChange {
+    std::string stage;
+    std::string before, after;  // "70", "compile error"
+};
+struct Regrade {
+    std::string when;    // "2026-12-07 09:14 UTC"
+    std::string reason;  // --reason; may be empty
+    std::vector<RegradeChange> changes;
 };
 
 struct StudentResult {
     std::string name;  // the submission folder's name (a pseudonym with --anonymise)
     std::vector<StageResult> stages;
-    RosterEntry roster;     // empty without a roster (or with --anonymise)
-    bool hasFolder = true;  // false: in the roster, but no submission folder
-    double score() const;
+    RosterEntry roster;             // empty without a roster (or with --anonymise)
+    bool hasFolder = true;          // false: in the roster, but no submission folder
+    std::vector<Regrade> regrades;  // oldest first
+    double score() const;           // excused stages left out
     double maxScore() const;
 };
 

@@ -1,6 +1,7 @@
 #include "report_text.h"
 
 #include "csv_text.h"
+#include "error.h"
 #include "text_format.h"
 
 #include <cmath>
@@ -174,6 +175,33 @@ const StageResult* findStage(const StudentResult& student, const std::string& id
 // ---------------------------------------------------------------- CSV
 
 // A CSV text field (csv_text.h) of cleaned text.
+std::string gradebookCell(const StudentResult& student, const std::string& id,
+                          const std::string& excused) {
+    const StageResult* s = findStage(student, id);
+    if (!s) return "";
+    if (s->excused) return excused;
+    return s->status == "not submitted" ? "" : num(s->score);
+}
+
+std::string gradebookRows(const ClassResult& result,
+                          const std::function<bool(const RosterEntry&)>& matchable,
+                          const std::function<std::string(const StudentResult&)>& row,
+                          const std::string& noMatch) {
+    std::string rows;
+    for (const StudentResult& st : result.students)
+        if (matchable(st.roster)) rows += row(st) + "\r\n";
+    if (rows.empty()) throw Error(noMatch);
+    return rows;
+}
+
+std::pair<std::string, std::string> lastAndFirst(const std::string& fullName) {
+    const std::size_t comma = fullName.find(',');
+    if (comma == std::string::npos) return {fullName, ""};
+    std::string first = fullName.substr(comma + 1);
+    first.erase(0, first.find_first_not_of(' '));
+    return {fullName.substr(0, comma), first};
+}
+
 std::string csvField(const std::string& raw) { return csvText(cleanText(raw)); }
 
 }  // namespace raylab::report

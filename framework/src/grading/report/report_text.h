@@ -4,8 +4,10 @@
 // html_report.cpp). Not for use outside the reports.
 #include "grade_result.h"
 
+#include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace raylab::report {
 
@@ -43,6 +45,24 @@ std::string statusWord(const StageResult& s);
 
 // The student's result for stage ID, or null.
 const StageResult* findStage(const StudentResult& student, const std::string& id);
+
+// An LMS gradebook's cell for stage ID: the score after any late penalty;
+// EXCUSED for an excused stage; empty when not submitted or not graded at all
+// (an LMS leaves an empty cell's grade as it is).
+std::string gradebookCell(const StudentResult& student, const std::string& id,
+                          const std::string& excused = "");
+
+// An LMS import's rows: ROW(student) for each student MATCHABLE says that
+// LMS can match (by the roster's ids), in ClassResult order. Throws
+// Error(NOMATCH) when there is none.
+std::string gradebookRows(const ClassResult& result,
+                          const std::function<bool(const RosterEntry&)>& matchable,
+                          const std::function<std::string(const StudentResult&)>& row,
+                          const std::string& noMatch);
+
+// "Last, First" (the roster's name, as LMSs write it) -> {last, first};
+// a name without a comma is all last name.
+std::pair<std::string, std::string> lastAndFirst(const std::string& fullName);
 
 // A CSV text field (csv_text.h) of cleaned text.
 std::string csvField(const std::string& raw);

@@ -33,8 +33,10 @@ std::string summaryCsv(const ClassResult& r) {
                 continue;
             }
             // Not submitted is no score at all (an LMS tells it from a 0).
-            if (s->status != "not submitted") out += num(s->score);
-            if (!isGraded(*s) && st.hasFolder) note(id + ": " + statusWord(*s));
+            if (s->excused) out += "EX";
+            else if (s->status != "not submitted") out += num(s->score);
+            if (s->excused) note(id + ": excused (" + s->excuseNote + ")");
+            else if (!isGraded(*s) && st.hasFolder) note(id + ": " + statusWord(*s));
             if (!s->lateNote.empty()) note(id + ": " + s->lateNote);
         }
         out += "," + num(st.score()) + "," + num(st.maxScore()) + "," + csvField(notes) + eol;

@@ -2,12 +2,14 @@
 // grading anything: the course file's extensions and excused stages under
 // the late policy, the LMS list, pseudonyms and the paths a student may see,
 // a report per section with its own files, the regrade's record in
-// class.json. `raylab grade` runs them end to end in tests/e2e.
+// class.json, the cost estimate from a sample. `raylab grade` runs them end
+// to end in tests/e2e.
 #include "class_file.h"
 #include "class_finish.h"
 #include "class_sections.h"
 #include "course_file.h"
 #include "error.h"
+#include "grade_estimate.h"
 #include "lms_exports.h"
 #include "pseudonyms.h"
 #include "submission_times.h"
@@ -157,6 +159,33 @@ TEST(Sections, EachSectionGetsItsOwnReportAndItsStudentsFilesOnly) {
     EXPECT_FALSE(fs::exists(dir / "sections"));
     EXPECT_EQ(sectionFolderName(".."), "_..");
     EXPECT_EQ(sectionFolderName("A/B"), "A_B");
+}
+
+TEST(Estimate, FromASampleToTheClassThisMachineSlurmAndGradescope) {
+    // A sample of 3 x 2 stages: five items of 2-4 s, one not submitted, one
+    // endless loop (left out of the average: it costs the timeout once).
+    const std::vector<ItemCost> items = {{2, 300, false}, {3, 310, false}, {4, 420, false},
+                                         {3, 280, false}, {3, 300, false}, {60, 900, true}};
+    const ClassEstimate e = estimateFrom(items, 1, 20.0, 200, 2, 3, 2);
+    EXPECT_DOUBLE_EQ(e.itemSeconds, 3.0);
+    EXPECT_DOUBLE_EQ(e.itemMaxSeconds, 4.0);
+    EXPECT_DOUBLE_EQ(e.peakMb, 420) << "the endless loop's memory is not a typical stage's";
+    EXPECT_NEAR(e.submittedShare, 6.0 / 7.0, 1e-12);
+    EXPECT_DOUBLE_EQ(e.fixedSeconds, 20.0 - 15.0 / 2.0);
+    // 400 items, 6/7 of them submitted, 3 s each, 2 at a time, plus the references.
+    EXPECT_NEAR(e.classSeconds(), 12.5 + 400.0 * 6.0 / 7.0 * 3.0 / 2.0, 1e-9);
+    EXPECT_NEAR(e.taskSeconds(4, 2), 12.5 + 50.0 * 2.0 * 6.0 / 7.0 * 3.0 / 2.0, 1e-9);
+    EXPECT_LT(e.taskSeconds(8, 2), e.taskSeconds(4, 2));
+    EXPECT_GT(e.uploadSeconds(), 2.0 * 2.0 * 3.0 * 6.0 / 7.0) << "half a CPU";
+    GradeOptions g;
+    const std::string text = describeEstimate(e, g);
+    EXPECT_NE(text.find("3 of 200 students x 2 stages"), std::string::npos) << text;
+    EXPECT_NE(text.find("420 MB at most"), std::string::npos) << text;
+    EXPECT_NE(text.find("16 tasks"), std::string::npos) << text;
+    // The sample spreads over the class, ends included.
+    const std::vector<std::string> names = {"a", "b", "c", "d", "e", "f", "g"};
+    EXPECT_EQ(sampleStudents(names, 3), (std::vector<std::string>{"a", "d", "g"}));
+    EXPECT_EQ(sampleStudents(names, 9), names);
 }
 
 TEST(ClassFile, KeepsEachStudentsRegrades) {

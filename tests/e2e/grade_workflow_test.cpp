@@ -271,3 +271,27 @@ TEST(GradeWorkflow, BadCourseInputIsOneLineAndWritesNothing) {
         EXPECT_FALSE(fs::exists(dir / "out")) << c.args;
     }
 }
+
+TEST(GradeWorkflow, EstimateGradesASampleAndSaysWhatTheClassWillCost) {
+    ScratchDir dir, solved;
+    writeSolvedLabs(solved.path());
+    writeClass(solved.path(), dir / "class");
+    const std::string raylab = "cd " + quote(dir.path()) + " && " + quote(raylabExe()) + " grade ";
+    CommandResult r = runCommand(raylab + "--submissions class --stages 01 --estimate --sample 2");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("2 of 3 students x 1 stage graded as a sample"), std::string::npos)
+        << r.out;
+    for (const char* says : {"a student-stage:", "MB at most per stage", "on this machine with",
+                             "2 tasks", "--mem-per-cpu", "per upload"})
+        EXPECT_NE(r.out.find(says), std::string::npos) << says << "\n" << r.out;
+    EXPECT_EQ(filesUnder(dir / "class").size(),
+              filesUnder(solved.path() / "01-raycast").size() * 3 +
+                  filesUnder(solved.path() / "02-shading").size() * 2)
+        << "the class is as it was";
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++entries;
+    EXPECT_EQ(entries, 1u) << "nothing but the class: the sample is graded elsewhere";
+    CommandResult refused = runCommand(raylab + "--submissions class --estimate --out graded");
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.err.find("--estimate writes no report"), std::string::npos) << refused.err;
+}

@@ -37,8 +37,8 @@ struct Item {
     const StageInfo* stage;
 };
 
-// The student folders, sorted. Symbolic links are skipped (a link could lead
-// anywhere, also to the solution) and said so.
+}  // namespace
+
 std::vector<std::string> studentFolders(const fs::path& submissions) {
     std::error_code ec;
     if (!fs::is_directory(submissions, ec))
@@ -61,6 +61,8 @@ std::vector<std::string> studentFolders(const fs::path& submissions) {
     std::sort(names.begin(), names.end());
     return names;
 }
+
+namespace {
 
 // --out must not be --submissions or lie inside it (grading deletes and
 // rewrites its own folders in --out), nor the other way round.
@@ -401,6 +403,7 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
             scrubNames(itemDir / "log.txt", name, shown[item.student], submissions);
             if (!haveResult) r = failedItem(*item.stage, o, itemDir / "log.txt", g);
             r.seconds = o.seconds;
+            r.peakMb = o.peakMb;
             auto clean = [&](const std::string& text) {
                 return g.anonymise.empty()
                            ? withoutMachinePath(text, name, submissions)

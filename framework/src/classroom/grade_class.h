@@ -7,6 +7,7 @@
 #include "grade_result.h"
 #include "stage_catalog.h"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,11 @@ namespace raylab {
 // The reports are written by class_reports.h; the single-submission graders
 // (upload_grading.h) write their own results.
 std::optional<ClassResult> gradeClass(const GradeOptions& g);
+
+// The student folders in SUBMISSIONS, sorted. Symbolic links are skipped (a
+// link could lead anywhere, also to the solution) and said so. Throws Error
+// when there is no such folder or no student in it.
+std::vector<std::string> studentFolders(const std::filesystem::path& submissions);
 
 // What a whole run writes in OUT (and clears first: no stale result of an
 // earlier run may be mixed into this one), shard.json aside.

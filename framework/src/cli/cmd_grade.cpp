@@ -5,6 +5,7 @@
 #include "class_grading.h"
 #include "command.h"
 #include "error.h"
+#include "grade_estimate.h"
 #include "grade_shards.h"
 
 #include <cstdio>
@@ -21,6 +22,8 @@ Command gradeCommand() {
         [](CLI::App& cmd) {
             auto g = std::make_shared<GradeOptions>();
             auto merge = std::make_shared<std::vector<std::string>>();
+            auto estimate = std::make_shared<bool>(false);
+            auto sample = std::make_shared<std::size_t>(3);
             cmd.add_option("--submissions", g->submissions,
                            "folder with one subfolder per student");
             cmd.add_option(
@@ -74,6 +77,12 @@ Command gradeCommand() {
                            "OUT/history/NAME/ and the regrade logged in OUT/regrades.csv)");
             cmd.add_option("--reason", g->reason,
                            "with --only: why the student is regraded (the regrade's log)");
+            cmd.add_flag("--estimate", *estimate,
+                         "grade a sample of the class (--sample) in a scratch folder and say "
+                         "what the whole class will cost: time on this machine, per Slurm "
+                         "task, per Gradescope upload, and memory");
+            cmd.add_option("--sample", *sample, "with --estimate: how many students to grade")
+                ->capture_default_str();
             return std::function<int()>([=] {
                 if (!merge->empty()) {
                     if (!g->submissions.empty() || !g->outDir.empty() || !g->shard.empty() ||
@@ -90,6 +99,12 @@ Command gradeCommand() {
                     return 0;
                 }
                 if (g->submissions.empty()) throw Error("--submissions is required");
+                if (*estimate) {
+                    if (!g->outDir.empty() || !g->only.empty() || !g->shard.empty())
+                        throw Error("--estimate writes no report: it takes no --out, --only or "
+                                    "--shard");
+                    return estimateClass(*g, *sample) ? 0 : 130;
+                }
                 if (g->outDir.empty()) throw Error("--out is required");
                 const std::optional<double> seconds = gradeAndReport(*g);
                 if (!seconds) return 130;  // interrupted: no report

@@ -80,4 +80,19 @@ std::string shortestExact(double v) {
 #endif
 }
 
+std::string durationText(double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0) seconds = 0;
+    char buf[64];
+    if (seconds < 60) {
+        std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+    } else if (seconds < 3600) {
+        const long s = std::lround(seconds);
+        std::snprintf(buf, sizeof buf, "%ld min %02ld s", s / 60, s % 60);
+    } else {
+        const long m = std::lround(seconds / 60);
+        std::snprintf(buf, sizeof buf, "%ld h %02ld min", m / 60, m % 60);
+    }
+    return buf;
+}
+
 }  // namespace raylab

@@ -14,6 +14,9 @@ std::string fixedPoint(double v, int decimals);
 // At most DECIMALS digits after the point, without trailing zeros: "87.5", "100".
 std::string trimmedFixed(double v, int decimals);
 
+// A wall time: "4.2 s", "3 min 07 s", "1 h 02 min" (0 for NaN or negative).
+std::string durationText(double seconds);
+
 // The shortest text that reads back as exactly V ("0.1", "1e-07").
 std::string shortestExact(double v);
 // The same text without std::to_chars (the WebAssembly core's libc++ lacks

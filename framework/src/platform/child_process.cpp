@@ -73,6 +73,12 @@ Child::Child(const std::vector<std::string>& argv, const std::filesystem::path& 
     setpgid(pid_, pid_);  // also from here: no race with the child's own call
 }
 
+void Child::reap(int& status) {
+    struct rusage usage {};
+    wait4(pid_, &status, 0, &usage);
+    outcome_.peakMb = double(usage.ru_maxrss) / 1024.0;  // Linux counts kilobytes
+}
+
 bool Child::poll() {
     if (done_) return true;
     // See whether it ended without reaping it yet: while the leader is not
@@ -82,7 +88,7 @@ bool Child::poll() {
     if (waitid(P_PID, id_t(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_) {
         kill(-pid_, SIGKILL);
         int status = 0;
-        waitpid(pid_, &status, 0);
+        reap(status);
         done_ = true;
         outcome_.seconds = now() - startSeconds_;
         if (WIFEXITED(status)) outcome_.exitCode = WEXITSTATUS(status);
@@ -93,7 +99,7 @@ bool Child::poll() {
         outcome_.timedOut = true;
         kill(-pid_, SIGKILL);
         int status = 0;
-        waitpid(pid_, &status, 0);
+        reap(status);
         outcome_.signal = SIGKILL;
         outcome_.seconds = now() - startSeconds_;
         done_ = true;

@@ -19,6 +19,7 @@ struct ChildOutcome {
     int exitCode = -1;   // when it exited
     int signal = 0;      // when a signal ended it (SIGKILL after a timeout too)
     double seconds = 0;  // wall time
+    double peakMb = 0;   // the most memory it held at once (resident set), its children's included
     std::string describe()
         const;  // "exit code 2", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
 };
@@ -43,6 +44,7 @@ public:
     Child& operator=(const Child&) = delete;
 
 private:
+    void reap(int& status);  // waits for the ended child; its peak memory into outcome_
     int pid_ = -1;
     bool done_ = false;
     double startSeconds_ = 0;

@@ -39,6 +39,9 @@ struct StageResult {
     double score = 0;
     double maxScore = 100;
     double seconds = 0;  // wall time of the child process
+    // The most memory the child held (MB): for `raylab grade --estimate`,
+    // measured in this run only, not kept in result.json.
+    double peakMb = 0;
     std::vector<CheckResult> checks;
     // A course's late policy (course_file.h): the points it took (score is
     // what is left) and why ("submitted 2026-12-12 09:10 UTC, 2 days late:

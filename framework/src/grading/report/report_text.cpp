@@ -24,20 +24,7 @@ std::string num(double v) { return trimmedFixed(round2(v), 2); }
 double fraction(double score, double maxScore) { return maxScore > 0 ? score / maxScore : 1.0; }
 
 // "4.2 s", "3 min 07 s", "1 h 02 min".
-std::string duration(double seconds) {
-    if (!std::isfinite(seconds) || seconds < 0) seconds = 0;
-    char buf[64];
-    if (seconds < 60) {
-        std::snprintf(buf, sizeof buf, "%.1f s", seconds);
-    } else if (seconds < 3600) {
-        long s = std::lround(seconds);
-        std::snprintf(buf, sizeof buf, "%ld min %02ld s", s / 60, s % 60);
-    } else {
-        long m = std::lround(seconds / 60);
-        std::snprintf(buf, sizeof buf, "%ld h %02ld min", m / 60, m % 60);
-    }
-    return buf;
-}
+std::string duration(double seconds) { return durationText(seconds); }
 
 // ---------------------------------------------------------------- text
 

@@ -4,7 +4,8 @@
 # runner), browser (the pages in Debian's Chromium against the native renders,
 # then the page driven through its own controls, then its editor with the
 # work kept in the browser, then a students' bundle
-# served statically, then a submission downloaded from the page and graded), parity (the page's Check
+# served statically, then a submission downloaded from the page and graded,
+# then a grading report read as an instructor reads it), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake in
 # Chromium, a different third of them in Firefox and in WebKit; ctest labels
 # web and web-parity). RAYLAB_BROWSER=firefox: in Firefox ESR instead
@@ -42,6 +43,9 @@ case "$step" in
   browser)
     node web/tests/browser/render_views.mjs --raylab "$raylab" --out "$out"
     node web/tests/browser/page_ui.mjs
+    # The grading report as an instructor reads it: the class table sorted
+    # by keyboard, a student's page with its pictures and their alt text.
+    node web/tests/browser/grade_report.mjs --raylab "$raylab" --labgen "$labgen"
     # The editor in the page, the work kept in the browser, driven by keys
     # and clicks only (no test API, as in a students' bundle).
     node web/tests/browser/editor.mjs --raylab "$raylab" --labgen "$labgen"

@@ -330,10 +330,14 @@ TEST(GradeReport, TheClassPageEscapesStudentTextAndLinksEachStudentsPage) {
                         "&quot;Jo&quot;</a>"),
               std::string::npos)
         << html;
-    EXPECT_NE(html.find("href=\"students/Doe%2C%20%22Jo%22/report.html#stage-04-recursion\">"
+    EXPECT_NE(html.find("href=\"students/Doe%2C%20%22Jo%22/report.html#04-recursion\">"
                         "compile error</a>"),
               std::string::npos);
-    EXPECT_NE(html.find("title=\"83.33 / 100\">83.33</a>"), std::string::npos);
+    EXPECT_NE(
+        html.find(
+            "data-v=\"83.33\"><a class=\"warn\" "
+            "href=\"students/%3Cscript%3Ex%3C/script%3E/report.html#04-recursion\">83.33</a>"),
+        std::string::npos);
     // Sortable by keyboard: a button in every column head, numbers by value.
     EXPECT_EQ(count(html, "<th scope=\"col\""), count(html, "<button type=\"button\">"));
     EXPECT_NE(html.find("data-v=\"83.33\""), std::string::npos);
@@ -342,6 +346,33 @@ TEST(GradeReport, TheClassPageEscapesStudentTextAndLinksEachStudentsPage) {
     EXPECT_EQ(html.find("https://"), std::string::npos);
     EXPECT_EQ(html.find("<link"), std::string::npos);
     expectEscapedMarkup(html);
+}
+
+TEST(GradeReport, TheClassPageOfTwoHundredStudentsStaysSmall) {
+    // 200 students x 12 stages, every stage graded with 8 checks: the class
+    // page has a row per student and no pictures.
+    ClassResult r = sampleClass();
+    r.stages.clear();
+    for (int k = 1; k <= 12; ++k) r.stages.push_back("stage-" + std::to_string(k));
+    r.students.clear();
+    for (int i = 0; i < 200; ++i) {
+        StudentResult st;
+        st.name = "student-" + std::to_string(10000000 + i);
+        st.roster.section = "Section " + std::to_string(i % 8);
+        for (const std::string& id : r.stages) {
+            std::vector<CheckResult> checks;
+            for (int c = 0; c < 8; ++c) {
+                CheckResult k = check("view-" + std::to_string(c), "image", 5, 10, "2.1% differ");
+                k.studentImage = "students/" + st.name + "/" + id + "/view.png";
+                checks.push_back(k);
+            }
+            st.stages.push_back(stage(id, "graded", 62.5, checks));
+        }
+        r.students.push_back(st);
+    }
+    const std::size_t bytes = htmlClassPage(r).size();
+    EXPECT_LT(bytes, 400u * 1024u) << "a few hundred kilobytes at most";
+    std::printf("[ figure   ] the class page of 200 students x 12 stages: %zu KB\n", bytes / 1024);
 }
 
 TEST(GradeReport, AStudentsPageShowsTheirPicturesWithAltTextThatSaysWhose) {
@@ -370,7 +401,7 @@ TEST(GradeReport, AStudentsPageShowsTheirPicturesWithAltTextThatSaysWhose) {
     EXPECT_NE(html.find("<img src=\"../../reference/01-raycast/side.png\""), std::string::npos);
     EXPECT_EQ(count(html, "<img "), 4u);
     EXPECT_EQ(count(html, ">no image<"), 2u);  // side: the student's picture and the difference
-    EXPECT_NE(html.find("id=\"stage-04-recursion\""), std::string::npos);
+    EXPECT_NE(html.find("id=\"04-recursion\""), std::string::npos);
     EXPECT_NE(html.find("href=\"../../report.html\""), std::string::npos) << "back to the class";
     expectEscapedMarkup(html);
 }

@@ -93,7 +93,6 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
             else if (s->latePenalty > 0)
                 title = num(s->rawScore()) +
                         " before the late penalty: " + escapeMarkup(s->lateNote, true);
-            else if (isGraded(*s)) title = num(s->score) + " / " + num(s->maxScore);
             const char* cls = s->excused                     ? "status none"
                               : isGraded(*s)                 ? tone(s->score, s->maxScore)
                               : s->status == "not submitted" ? "status none"
@@ -101,7 +100,7 @@ void htmlSummaryTable(std::string& h, const ClassResult& r) {
             const std::string text =
                 escapeMarkup(stageCellText(*s)) +
                 (s->latePenalty > 0 ? "<span class=\"late\"> late</span>" : "");
-            h += "<td class=\"cell num\" data-v=\"" + value + "\">";
+            h += "<td class=\"c\" data-v=\"" + value + "\">";
             if (link.empty())
                 h += "<span class=\"pill " + std::string(cls) + "\">" + text + "</span>";
             else

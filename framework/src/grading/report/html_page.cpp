@@ -32,14 +32,14 @@ thead th{background:var(--soft);font-weight:600;font-size:12px;color:var(--muted
 .summary td.num,.summary th.num{text-align:center;white-space:nowrap}
 .summary td.name{font-weight:600;max-width:260px;overflow-wrap:anywhere}
 .summary tfoot td{background:var(--soft);color:var(--muted);font-weight:600;border-top:1px solid var(--border)}
-td.cell{padding:3px}
-td.cell a{display:block;padding:4px 8px;border-radius:5px;color:inherit;font-weight:600}
-td.cell a:hover{text-decoration:none;filter:brightness(.95)}
+td.c{padding:3px;text-align:center;white-space:nowrap}
+td.c a{display:block;padding:4px 8px;border-radius:5px;color:inherit;font-weight:600}
+td.c a:hover{text-decoration:none;filter:brightness(.95)}
 .ok{background:var(--ok-bg);color:var(--ok)}
 .warn{background:var(--warn-bg);color:var(--warn)}
 .bad{background:var(--bad-bg);color:var(--bad)}
 .none{background:var(--none-bg);color:var(--none)}
-td.cell a.status{font-weight:500;font-size:12px}
+td.c a.status{font-weight:500;font-size:12px}
 .bar{display:inline-block;width:64px;height:6px;border-radius:3px;background:var(--none-bg);vertical-align:middle;margin-right:8px;overflow:hidden}
 .bar i{display:block;height:100%}
 .bar i.ok{background:#2da44e}.bar i.warn{background:#d4a72c}.bar i.bad{background:#cf222e}
@@ -123,7 +123,7 @@ std::string studentPage(const std::string& name) {
     return "students/" + urlPath(name) + "/report.html";
 }
 
-std::string stageAnchor(const std::string& stage) { return "stage-" + urlPath(stage); }
+std::string stageAnchor(const std::string& stage) { return urlPath(stage); }
 
 std::string stageCellText(const StageResult& s) {
     if (s.excused) return "excused";

@@ -23,7 +23,7 @@ std::string bar(double score, double maxScore);
 // A student's page, relative to the folder holding students/:
 // "students/<name>/report.html", the name percent-encoded.
 std::string studentPage(const std::string& name);
-// The id of a stage's part of a student's page: "stage-01-raycast".
+// The id of a stage's part of a student's page: "01-raycast".
 std::string stageAnchor(const std::string& stage);
 
 // What the class table shows for a stage: the score, or why there is none.

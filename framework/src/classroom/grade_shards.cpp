@@ -2,10 +2,12 @@
 
 #include "class_file.h"
 #include "class_reports.h"
+#include "class_roster.h"
 #include "course_file.h"
 #include "error.h"
 #include "grade_class.h"
 #include "grade_stage.h"
+#include "lms_exports.h"
 #include "paths.h"
 
 #include <algorithm>
@@ -52,6 +54,10 @@ void mergeShards(const std::vector<std::string>& args, const GradeOptions& optio
     if (!options.course.empty() && readCourseFile(options.course).late && options.submitted.empty())
         throw Error("--merge --course " + options.course +
                     " has a late policy: give --submitted CSV (student,submitted[,stage])");
+    const std::vector<std::string> lmss = parseLmsList(options.lms);
+    if (!lmss.empty() && options.roster.empty())
+        throw Error("--merge --lms " + options.lms + " needs --roster FILE");
+    if (!options.roster.empty()) checkRosterServes(lmss, readRoster(options.roster));
     std::vector<ShardFile> shards;
     for (std::size_t i = 1; i < args.size(); ++i) shards.push_back(readShardFile(args[i]));
 

@@ -2,9 +2,9 @@
 // The class's reports, after the course's workflow: the late policy (with
 // the submission times), the roster, the catalogued mistakes the failures
 // repeat; then <student>/results.json, summary.csv, junit.xml, report.html
-// (canvas.csv with --lms canvas) in OUT and the summary table on stdout. A
-// whole run, a --merge of shares and a --only regrade all finish here, so
-// they finish the same way.
+// (with --lms an <lms>.csv each, with sections sections/) in OUT and the
+// summary table on stdout. A whole run, a --merge of shares and a --only
+// regrade all finish here, so they finish the same way.
 #include "grade_options.h"
 #include "grade_result.h"
 

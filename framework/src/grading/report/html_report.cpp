@@ -11,6 +11,10 @@ namespace fs = std::filesystem;
 
 void writeHtmlReport(const ClassResult& result, const fs::path& outDir,
                      const ClassPageOptions& options) {
+    // The report goes into a results folder that grading made; a missing one
+    // is a wrong path, and creating it would leave students/ there unasked.
+    if (!fs::is_directory(outDir))
+        throw Error(outDir.string() + ": cannot write the report there (no such folder)");
     for (const StudentResult& st : result.students) {
         if (!st.hasFolder) continue;  // only in the roster: nothing graded, no page
         const fs::path folder = outDir / "students" / st.name;

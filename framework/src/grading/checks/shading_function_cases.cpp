@@ -231,7 +231,11 @@ FunctionSpec applyColorModeSpec() {
 // a0: the ray's origin, a0.w the sphere count (1 or 2); a1: its unit
 // direction; a2, a3: spheres 0 and 1 (centre, radius). The slot just past
 // the count always holds a live sphere on the ray, nearer than any counted
-// one: a loop that runs one step too far (i <= uSphereCount) finds it.
+// one: a loop that runs one step too far (i <= uSphereCount) finds it. The
+// harness writes its slots at constant indices: Mesa's softpipe stores a
+// write at a run-time index at one pixel's index for its whole 2x2 quad
+// (docs/bench/README.md, "On Mesa's softpipe"), and wrote this decoy over
+// sphere 1 of the neighbouring case.
 FunctionCase closestCase(std::string label, dvec3 origin, dvec3 dir, int count, dvec4 sphere0,
                          dvec4 sphere1 = dvec4(0.0)) {
     return makeCase(std::move(label), dvec4(origin, count), dvec4(glm::normalize(dir), 0.0),
@@ -248,10 +252,11 @@ FunctionSpec findClosestSpec() {
     s.helpers = RAYLAB_HARNESS_GLSL(
         "vec4 checkFindClosest(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
         "{\n"
-        "    uSphereCount = int(a0.w);\n"
+        "    uSphereCount = int(a0.w);  // 1 or 2\n"
+        "    vec4 decoy = vec4(a0.xyz + 0.5 * a1.xyz, 0.2);  // just past the count: not counted\n"
         "    uSpheres[0] = a2;\n"
-        "    uSpheres[1] = a3;\n"
-        "    uSpheres[uSphereCount] = vec4(a0.xyz + 0.5 * a1.xyz, 0.2);  // not counted\n"
+        "    uSpheres[1] = uSphereCount > 1 ? a3 : decoy;\n"
+        "    uSpheres[2] = decoy;\n"
         "    Hit hit;\n"
         "    bool found = findClosest(Ray(a0.xyz, a1.xyz), hit);\n"
         "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"

@@ -1,5 +1,6 @@
 // Stage 01 specifics (the checks every stage gets are in stage_checks_test.cpp):
 //  - the untouched lab names each open TODO with file and line;
+//  - raylab check --checks runs the checks it names;
 //  - the C++ camera and the GPU agree on the ray through a pixel.
 #include "camera.h"
 #include "image.h"
@@ -19,6 +20,24 @@ TEST(Stage01, UntouchedLabFailsEveryViewAndNamesItsTodosWithFileAndLine) {
         << r.err;
     EXPECT_NE(r.err.find("labs/01-raycast/find_closest.glsl:10: TODO(01.b)"), std::string::npos)
         << r.err;
+}
+
+// --checks: only the checks it names run (a view, a function check), and a
+// name the stage has no check of is a one-line error that lists its checks.
+TEST(Stage01, ChecksOptionRunsOnlyTheNamedChecks) {
+    CommandResult r =
+        runRaylab("check --stage 01 --lab --size 80x60 --checks front,intersectSphere");
+    EXPECT_EQ(r.exitCode, 1) << r.all();
+    EXPECT_EQ(failedViews(r.out), (std::vector<std::string>{"intersectSphere", "front"}))
+        << r.all();
+    EXPECT_NE(r.out.find("0 passed, 2 failed"), std::string::npos) << r.out;
+    CommandResult bad = runRaylab("check --stage 01 --solution --checks front,frnt");
+    EXPECT_EQ(bad.exitCode, 2) << bad.all();
+    EXPECT_NE(bad.err.find("--checks: stage 01-raycast has no check 'frnt' (its checks: front, "
+                           "close-overlap, hidden, inside, among, moving, intersectSphere, "
+                           "findClosest)"),
+              std::string::npos)
+        << bad.err;
 }
 
 TEST(Stage01, KnownMistakesCoverTheGuidesList) {

@@ -23,10 +23,10 @@ namespace {
 // a failing picture equal to the handed-out lab's earns nothing, and a view
 // the handed-out lab draws right reaches none of the stage's code. Drawn only
 // when a view fails (with every view passing, neither rule changes a point).
-void markHandedOutViews(const StageInfo& stage, const std::string& scene, int w, int h,
-                        const SceneTransform& transform, const std::vector<Image>& mine,
-                        const std::vector<Image>& expected, const std::vector<bool>& viewPassed,
-                        std::vector<CheckCredit>& credits) {
+void markHandedOutViews(const StageInfo& stage, const std::vector<CheckView>& views,
+                        const std::string& scene, int w, int h, const SceneTransform& transform,
+                        const std::vector<Image>& mine, const std::vector<Image>& expected,
+                        const std::vector<bool>& viewPassed, std::vector<CheckCredit>& credits) {
     const std::size_t firstView = credits.size() - mine.size();
     if (std::all_of(viewPassed.begin(), viewPassed.end(), [](bool p) { return p; })) return;
     try {
@@ -34,9 +34,46 @@ void markHandedOutViews(const StageInfo& stage, const std::string& scene, int w,
                                 transform);
         for (std::size_t i = 0; i < mine.size(); ++i)
             creditHandedOutView(credits[firstView + i], viewPassed[i], mine[i], expected[i],
-                                handedOut.render(stage.checkViews[i]));
+                                handedOut.render(views[i]));
     } catch (const Error&) {  // no handed-out lab to compare with: grading counts every view
     }
+}
+
+// The checks a run does, of each kind (raylab check --checks).
+struct SelectedChecks {
+    std::vector<CheckView> views;
+    std::vector<const FunctionSpec*> functions;
+    std::vector<std::string> counts;
+};
+
+// The stage's checks that ONLY names (all when it is empty); throws Error for
+// a name the stage has no check of.
+SelectedChecks selectChecks(const StageInfo& stage, const std::vector<std::string>& only) {
+    auto wanted = [&](const std::string& name) {
+        return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+    };
+    SelectedChecks s;
+    std::vector<std::string> names;
+    for (const CheckView& v : stage.checkViews) {
+        names.push_back(v.name);
+        if (wanted(v.name)) s.views.push_back(v);
+    }
+    for (const FunctionSpec* f : functionSpecsFor(stage)) {
+        names.push_back(f->name);
+        if (wanted(f->name)) s.functions.push_back(f);
+    }
+    for (const std::string& c : stage.countChecks) {
+        names.push_back(c);
+        if (wanted(c)) s.counts.push_back(c);
+    }
+    for (const std::string& name : only)
+        if (std::find(names.begin(), names.end(), name) == names.end()) {
+            std::string list;
+            for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+            throw Error("--checks: stage " + stage.id + " has no check '" + name +
+                        "' (its checks: " + list + ")");
+        }
+    return s;
 }
 
 }  // namespace
@@ -47,6 +84,7 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     const CourseSettings course =
         check.courseFile.empty() ? CourseSettings{} : readCourseFile(check.courseFile);
     const StageGrading& grading = course.gradingOf(stage);
+    const SelectedChecks selected = selectChecks(stage, check.only);  // a bad name: said here
     // The work runs in a child, as grading runs it: a crash or an endless
     // compile becomes a one-line cause (check_sandbox.h).
     if (!insideCheckSandbox())
@@ -91,16 +129,16 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     int passed = 0, failed = 0;
     // Function checks first: a failing one names the one input, the
     // expected and the actual value, the cheapest hint there is.
-    const auto functions = functionSpecsFor(stage);
+    const auto& functions = selected.functions;
     if (!functions.empty()) std::fputs(formatFunctionsHeading().c_str(), stdout);
     std::vector<std::string> failedFunctions;
     std::vector<const FunctionSpec*> failedSpecs;
     // The grader's points for these checks: the check views, then the
     // function and count checks (stage_grading.h, stage_score.h).
     std::vector<std::string> viewWeights, otherNames;
-    for (const CheckView& v : stage.checkViews) viewWeights.push_back(v.name);
+    for (const CheckView& v : selected.views) viewWeights.push_back(v.name);
     for (const FunctionSpec* f : functions) otherNames.push_back(f->name);
-    for (const std::string& c : stage.countChecks) otherNames.push_back(c);
+    for (const std::string& c : selected.counts) otherNames.push_back(c);
     const std::vector<double> points = checkPoints(grading, viewWeights, otherNames);
     std::vector<CheckCredit> credits;
     for (const FunctionSpec* spec : functions) {
@@ -113,13 +151,13 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
             failedFunctions.push_back(f.name);
             failedSpecs.push_back(spec);
         }
-        credits.push_back({false, points[stage.checkViews.size() + credits.size()],
-                           wrongShare(f.passed, f.total)});
+        credits.push_back(
+            {false, points[selected.views.size() + credits.size()], wrongShare(f.passed, f.total)});
     }
     std::fputs(formatViewsHeading().c_str(), stdout);
     std::vector<Image> mineOf, expectedOf;  // for the score's handed-out comparison
     std::vector<bool> viewPassed;
-    for (const CheckView& view : stage.checkViews) {
+    for (const CheckView& view : selected.views) {
         long nonFinite = 0, todoPixels = 0;
         Image mine = students.render(view, &nonFinite, &todoPixels);
         Image expected;
@@ -139,10 +177,10 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
         mineOf.push_back(std::move(mine));
         expectedOf.push_back(std::move(expected));
     }
-    markHandedOutViews(stage, options.scene, w, h, setup.transform, mineOf, expectedOf, viewPassed,
-                       credits);
+    markHandedOutViews(stage, selected.views, options.scene, w, h, setup.transform, mineOf,
+                       expectedOf, viewPassed, credits);
 
-    for (const std::string& name : stage.countChecks) {
+    for (const std::string& name : selected.counts) {
         // Counted from the check views' cameras: a number the GPU produced
         // against the same number worked out on the CPU.
         CountOutcome c = runCountCheck(students, name, stage.checkViews);
@@ -171,6 +209,10 @@ Command checkCommand() {
                 ->check(CLI::PositiveNumber);
             cmd.add_option("--course", check->courseFile,
                            "score with a course file's weights (raylab grade --course)");
+            cmd.add_option("--checks", check->only,
+                           "comma-separated: run only these checks, by the names the report "
+                           "prints (views, function and count checks; default: all)")
+                ->delimiter(',');
             cmd.add_option("--memory-mb", check->memoryMb,
                            "limit the check's address space, as grading does (default: none)")
                 ->check(CLI::NonNegativeNumber);

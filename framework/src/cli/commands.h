@@ -59,6 +59,7 @@ struct CheckOptions {
     double timeoutSeconds = 600.0;  // the whole check, in its child process (check_sandbox.h)
     long memoryMb = 0;              // its address space; 0: no limit
     std::string courseFile;         // the course's weights for the score (course_file.h)
+    std::vector<std::string> only;  // --checks: these checks by name; empty: all
 };
 int cmdCheck(const StageOptions& stage, const CheckOptions& check);
 

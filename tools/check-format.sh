@@ -13,7 +13,7 @@ esac
 cd "$(dirname "$0")/.."
 cf=${CLANG_FORMAT:-clang-format}
 if ! command -v "$cf" >/dev/null 2>&1; then
-  echo "FAIL: '$cf' not found: apt-get install clang-format (bash install.sh installs it)" >&2
+  echo "FAIL: '$cf' not found: apt-get install clang-format (bash install.sh --test installs it)" >&2
   exit 1
 fi
 if ! git rev-parse --is-inside-work-tree >/dev/null 2>&1; then

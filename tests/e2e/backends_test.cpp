@@ -72,7 +72,7 @@ TEST(Backends, EglAndOsMesaAgreeOnTheFurTrack) {
 // VIEW in a real window (under Xvfb) against the same view rendered headless.
 void expectWindowEqualsHeadless(const std::string& view) {
     if (runCommand("command -v xvfb-run").exitCode != 0)
-        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
+        GTEST_SKIP() << "xvfb-run is not installed (install.sh --test installs it)";
     ScratchDir dir;
     raylab::Image headless = render(dir, "egl", view);
     fs::path shot = dir / "window.png";
@@ -103,7 +103,7 @@ int framesIn(const std::string& out, const std::string& label) {
 // target on llvmpipe, so the walk must be reduced.
 TEST(Backends, WindowDrawsFewerPixelsWhileTheCameraMoves) {
     if (runCommand("command -v xvfb-run").exitCode != 0)
-        GTEST_SKIP() << "xvfb-run is not installed (install.sh installs it)";
+        GTEST_SKIP() << "xvfb-run is not installed (install.sh --test installs it)";
     ScratchDir dir;
     const fs::path shot = dir / "moving.png";
     const std::string run = "xvfb-run -a -s '-screen 0 1024x768x24' " + quote(RAYLAB_EXE) +

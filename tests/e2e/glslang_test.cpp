@@ -23,7 +23,7 @@ CommandResult validate(const ScratchDir& dir, const ShaderSource& source, const 
 
 TEST(Glslang, EveryStageShaderIsValidGlsl330Core) {
     ASSERT_EQ(runCommand("command -v glslangValidator").exitCode, 0)
-        << "install glslang-tools (install.sh does)";
+        << "install glslang-tools (install.sh --test does)";
     ScratchDir dir;
     int checked = 0;
     for (const StageInfo& stage : allStages()) {

@@ -201,7 +201,8 @@ Pixels drawFrame(raylab::Overlay& overlay, const std::string& title, const Rows&
 TEST(Overlay, DrawsItsPanelOverARealWindow) {
     // No skip: without Xvfb this test cannot check the overlay at all.
     ASSERT_EQ(runCommand("command -v Xvfb").exitCode, 0)
-        << "Xvfb is not installed: the overlay test needs a real X window (install.sh installs the "
+        << "Xvfb is not installed: the overlay test needs a real X window (install.sh --test "
+           "installs the "
            "xvfb package)";
     XvfbServer xvfb;
     ASSERT_TRUE(xvfb.ok()) << xvfb.error();

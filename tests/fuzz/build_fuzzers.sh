@@ -8,7 +8,7 @@ src=$1 bin=$2
 cxx=${RAYLAB_FUZZ_CXX:-clang++}
 if ! command -v "$cxx" >/dev/null 2>&1; then
   echo "FAIL: '$cxx' not found. The fuzz tests need clang with libFuzzer:" >&2
-  echo "      apt-get install clang libclang-rt-14-dev   (bash install.sh installs them)" >&2
+  echo "      apt-get install clang libclang-rt-14-dev   (bash install.sh --test installs them)" >&2
   exit 1
 fi
 cmake -S "$src" -B "$bin" -DCMAKE_CXX_COMPILER="$(command -v "$cxx")" -DCMAKE_BUILD_TYPE=RelWithDebInfo

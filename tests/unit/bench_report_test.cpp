@@ -98,7 +98,8 @@ private:
     std::optional<std::string> old_;
 };
 
-const std::string kGnuplotMissing = "gnuplot not found: install gnuplot-nox (install.sh does)";
+const std::string kGnuplotMissing =
+    "gnuplot not found: install gnuplot-nox (bash install.sh --test does)";
 
 }  // namespace
 

@@ -26,13 +26,13 @@ case "$step" in
   browser|parity|editor)
     if [ "${RAYLAB_BROWSER:-}" = webkit ]; then
       command -v WebKitWebDriver >/dev/null ||
-        { echo "web tests: WebKitWebDriver is missing: run 'bash install.sh' (webkit2gtk-driver)" >&2; exit 1; }
+        { echo "web tests: WebKitWebDriver is missing: run 'bash install.sh --test' (webkit2gtk-driver)" >&2; exit 1; }
     elif [ "${RAYLAB_BROWSER:-}" = firefox ]; then
       [ -x /usr/bin/firefox-esr ] || [ -n "${RAYLAB_FIREFOX:-}" ] ||
-        { echo "web tests: /usr/bin/firefox-esr is missing: run 'bash install.sh'" >&2; exit 1; }
+        { echo "web tests: /usr/bin/firefox-esr is missing: run 'bash install.sh --test'" >&2; exit 1; }
     else
       [ -x /usr/bin/chromium ] || [ -n "${RAYLAB_CHROMIUM:-}" ] ||
-        { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh'" >&2; exit 1; }
+        { echo "web tests: /usr/bin/chromium is missing: run 'bash install.sh --test'" >&2; exit 1; }
     fi ;;
 esac
 case "$step" in

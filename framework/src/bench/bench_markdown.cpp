@@ -80,7 +80,11 @@ std::string benchMarkdown(const std::vector<BenchRow>& rows, const std::string& 
         "**Pareto** rows: no other setting of the same scene is both faster and more accurate.\n";
 
     const std::vector<std::size_t> front = paretoFront(rows);
-    for (auto [scene, indices] : byScene(rows)) {
+    for (auto& entry : byScene(rows)) {
+        // (Named, not a structured binding: clang 14, which builds the
+        // sanitizer build, lets no lambda capture one.)
+        const std::string& scene = entry.first;
+        std::vector<std::size_t>& indices = entry.second;
         sortByFrameTime(indices, rows);
         // The scene's Embree rows: a row's time as a multiple of the one that
         // cast its rays (the same lever; the baseline's rays have none).

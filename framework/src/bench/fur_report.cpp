@@ -5,6 +5,7 @@
 #include "csv_text.h"
 #include "error.h"
 #include "gnuplot.h"
+#include "measured_cells.h"
 #include "paths.h"
 #include "text_format.h"
 
@@ -20,10 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string csvNumber(double x) { return std::isfinite(x) ? shortestExact(x) : ""; }
-
 // The series in the order they first appear, and the triangle counts.
-std::vector<std::string> seriesOf(const std::vector<FurRow>& rows) {
+std::vector<std::string> furSeries(const std::vector<FurRow>& rows) {
     std::vector<std::string> names;
     for (const FurRow& r : rows)
         if (std::find(names.begin(), names.end(), furSeriesName(r)) == names.end())
@@ -37,13 +36,12 @@ std::set<long> trianglesOf(const std::vector<FurRow>& rows) {
     return t;
 }
 
-const FurRow* find(const std::vector<FurRow>& rows, const std::string& series, long triangles) {
+const FurRow* findFurRow(const std::vector<FurRow>& rows, const std::string& series,
+                         long triangles) {
     for (const FurRow& r : rows)
         if (r.triangles == triangles && furSeriesName(r) == series) return &r;
     return nullptr;
 }
-
-std::string ms(double v) { return std::isfinite(v) ? significant(v, 3) : "-"; }
 
 std::string mib(std::size_t bytes) { return significant(double(bytes) / (1024.0 * 1024.0), 3); }
 
@@ -71,9 +69,9 @@ std::string furCsv(const std::vector<FurRow>& rows) {
     for (const FurRow& r : rows)
         out += csvText(r.technique) + "," + csvText(r.mesh) + "," + std::to_string(r.triangles) +
                "," + std::to_string(r.shells) + "," + (r.fins ? "1" : "0") + "," +
-               csvNumber(r.frameMs) + "," + std::to_string(r.bufferBytes) + "," +
-               std::to_string(r.rssBytes) + "," + csvNumber(r.rmse) + "," +
-               csvNumber(r.badPxShare) + eol;
+               measuredCsv(r.frameMs) + "," + std::to_string(r.bufferBytes) + "," +
+               std::to_string(r.rssBytes) + "," + measuredCsv(r.rmse) + "," +
+               measuredCsv(r.badPxShare) + eol;
     return out;
 }
 
@@ -85,7 +83,7 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
     if (!notes.empty()) md += notes + "\n\n";
     if (!plotFile.empty()) md += "![frame time against triangles](" + plotFile + ")\n\n";
 
-    const std::vector<std::string> series = seriesOf(rows);
+    const std::vector<std::string> series = furSeries(rows);
     const std::set<long> triangles = trianglesOf(rows);
     md += "## Frame time (ms, median) by triangle count\n\n| triangles |";
     for (const std::string& s : series) md += " " + s + " |";
@@ -95,8 +93,8 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
     for (long t : triangles) {
         md += "| " + std::to_string(t) + " |";
         for (const std::string& s : series) {
-            const FurRow* r = find(rows, s, t);
-            md += " " + (r ? ms(r->frameMs) : std::string("-")) + " |";
+            const FurRow* r = findFurRow(rows, s, t);
+            md += " " + (r ? measuredMs(r->frameMs) : std::string("-")) + " |";
         }
         md += "\n";
     }
@@ -110,11 +108,12 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
               " (ms) | fur shader (ms) | fur shader / shells+fins |\n"
               "| ---: | ---: | ---: | ---: |\n";
         for (long t : triangles) {
-            const FurRow* a = find(rows, base, t);
-            const FurRow* b = find(rows, "fur shader", t);
+            const FurRow* a = findFurRow(rows, base, t);
+            const FurRow* b = findFurRow(rows, "fur shader", t);
             if (!a || !b) continue;
-            md += "| " + std::to_string(t) + " | " + ms(a->frameMs) + " | " + ms(b->frameMs) +
-                  " | " + significant(b->frameMs / a->frameMs, 3) + "x |\n";
+            md += "| " + std::to_string(t) + " | " + measuredMs(a->frameMs) + " | " +
+                  measuredMs(b->frameMs) + " | " + significant(b->frameMs / a->frameMs, 3) +
+                  "x |\n";
         }
     }
 
@@ -123,7 +122,7 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
           "---: |\n";
     for (long t : triangles)
         for (const std::string& s : series) {
-            const FurRow* r = find(rows, s, t);
+            const FurRow* r = findFurRow(rows, s, t);
             if (!r) continue;
             md += "| " + std::to_string(t) + " | " + s + " | " +
                   (std::isfinite(r->rmse) ? significant(r->rmse * 255.0, 3) : "-") + " | " +
@@ -135,7 +134,7 @@ std::string furMarkdown(const std::vector<FurRow>& rows, const std::string& titl
           "resident (MiB) |\n| ---: | --- | ---: | ---: |\n";
     for (long t : triangles)
         for (const std::string& s : series) {
-            const FurRow* r = find(rows, s, t);
+            const FurRow* r = findFurRow(rows, s, t);
             if (!r) continue;
             md += "| " + std::to_string(t) + " | " + s + " | " + mib(r->bufferBytes) + " | " +
                   mib(r->rssBytes) + " |\n";
@@ -160,11 +159,11 @@ void writeFurPlot(const std::vector<FurRow>& rows, const fs::path& pngPath,
                                           "#9467bd", "#8c564b", "#e377c2", "#17becf"};
     TempDir tmp;
     std::string plot;
-    const std::vector<std::string> series = seriesOf(rows);
+    const std::vector<std::string> series = furSeries(rows);
     for (std::size_t s = 0; s < series.size(); ++s) {
         std::string data;
         for (long t : trianglesOf(rows))
-            if (const FurRow* r = find(rows, series[s], t); r && r->frameMs > 0)
+            if (const FurRow* r = findFurRow(rows, series[s], t); r && r->frameMs > 0)
                 data += std::to_string(t) + "\t" + shortestExact(r->frameMs) + "\n";
         if (data.empty()) continue;
         const fs::path file = tmp.path() / ("series" + std::to_string(s) + ".dat");

@@ -160,7 +160,8 @@ bool gnuplotAvailable(const std::string& gnuplot) { return !findExecutable(gnupl
 void runGnuplot(const std::string& gnuplot, const std::string& script, const fs::path& image,
                 const fs::path& pngPath, const std::string& what) {
     const std::string exe = findExecutable(gnuplot);
-    if (exe.empty()) throw Error("gnuplot not found: install gnuplot-nox (install.sh does)");
+    if (exe.empty())
+        throw Error("gnuplot not found: install gnuplot-nox (bash install.sh --test does)");
     const fs::path dir = image.parent_path();
     const fs::path scriptFile = dir / "plot.gp";
     writeBytes(scriptFile, script);

@@ -5,6 +5,7 @@
 #include "csv_text.h"
 #include "error.h"
 #include "gnuplot.h"
+#include "measured_cells.h"
 #include "paths.h"
 #include "text_format.h"
 
@@ -19,17 +20,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string csvNumber(double x) { return std::isfinite(x) ? shortestExact(x) : ""; }
-std::string ms(double v) { return std::isfinite(v) ? significant(v, 3) : "-"; }
-
-const GrowthRow* find(const std::vector<GrowthRow>& rows, const std::string& series, bool bvh,
-                      long objects) {
+const GrowthRow* findGrowthRow(const std::vector<GrowthRow>& rows, const std::string& series,
+                               bool bvh, long objects) {
     for (const GrowthRow& r : rows)
         if (r.series == series && r.bvh == bvh && r.objects == objects) return &r;
     return nullptr;
 }
 
-std::vector<std::string> seriesOf(const std::vector<GrowthRow>& rows) {
+std::vector<std::string> growthSeries(const std::vector<GrowthRow>& rows) {
     std::vector<std::string> names;
     for (const GrowthRow& r : rows)
         if (std::find(names.begin(), names.end(), r.series) == names.end())
@@ -63,8 +61,9 @@ std::string growthCsv(const std::vector<GrowthRow>& rows) {
     for (const GrowthRow& r : rows)
         out += csvText(r.series) + "," + (r.bvh ? "bvh" : "linear") + "," +
                std::to_string(r.objects) + "," + std::to_string(r.width) + "," +
-               std::to_string(r.height) + "," + csvNumber(r.frameMs) + "," + csvNumber(r.buildMs) +
-               "," + std::to_string(r.bvhNodes) + "," + std::to_string(r.bvhDepth) + eol;
+               std::to_string(r.height) + "," + measuredCsv(r.frameMs) + "," +
+               measuredCsv(r.buildMs) + "," + std::to_string(r.bvhNodes) + "," +
+               std::to_string(r.bvhDepth) + eol;
     return out;
 }
 
@@ -111,18 +110,18 @@ std::string growthMarkdown(const std::vector<GrowthRow>& rows, const std::string
           growthText(growthBetween(rows, "mesh", false, 1000, 10000)) +
           " (BVH: " + growthText(growthBetween(rows, "mesh", true, 1000, 10000)) + ")\n\n";
 
-    for (const std::string& series : seriesOf(rows)) {
+    for (const std::string& series : growthSeries(rows)) {
         md += "## " + series + ": frame time (ms, median) by object count\n\n";
         md += "| " + std::string(series == "mesh" ? "triangles" : "spheres") +
               " | BVH | linear | linear / BVH | BVH build (ms) | nodes | depth |\n"
               "| ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
         for (long n : objectsOf(rows, series)) {
-            const GrowthRow* b = find(rows, series, true, n);
-            const GrowthRow* l = find(rows, series, false, n);
-            md += "| " + std::to_string(n) + " | " + (b ? ms(b->frameMs) : "-") + " | " +
-                  (l ? ms(l->frameMs) : "-") + " | " +
+            const GrowthRow* b = findGrowthRow(rows, series, true, n);
+            const GrowthRow* l = findGrowthRow(rows, series, false, n);
+            md += "| " + std::to_string(n) + " | " + (b ? measuredMs(b->frameMs) : "-") + " | " +
+                  (l ? measuredMs(l->frameMs) : "-") + " | " +
                   (b && l ? significant(l->frameMs / b->frameMs, 3) + "x" : std::string("-")) +
-                  " | " + (b ? ms(b->buildMs) : "-") + " | " +
+                  " | " + (b ? measuredMs(b->buildMs) : "-") + " | " +
                   (b ? std::to_string(b->bvhNodes) : "-") + " | " +
                   (b ? std::to_string(b->bvhDepth) : "-") + " |\n";
         }
@@ -162,18 +161,18 @@ void writeGrowthPlot(const std::vector<GrowthRow>& rows, const fs::path& pngPath
                 "lc rgb '" + colour + "' title " + gpString(name);
     };
     int s = 0;
-    for (const std::string& series : seriesOf(rows)) {
+    for (const std::string& series : growthSeries(rows)) {
         for (bool bvh : {true, false}) {
             std::string data;
             for (long n : objectsOf(rows, series))
-                if (const GrowthRow* r = find(rows, series, bvh, n); r && r->frameMs > 0)
+                if (const GrowthRow* r = findGrowthRow(rows, series, bvh, n); r && r->frameMs > 0)
                     data += std::to_string(n) + "\t" + shortestExact(r->frameMs) + "\n";
             line(series + (bvh ? ": frame, BVH" : ": frame, linear search"), data,
                  colours[(2 * s + (bvh ? 0 : 1)) % 4], false);
         }
         std::string build;
         for (long n : objectsOf(rows, series))
-            if (const GrowthRow* r = find(rows, series, true, n); r && r->buildMs > 0)
+            if (const GrowthRow* r = findGrowthRow(rows, series, true, n); r && r->buildMs > 0)
                 build += std::to_string(n) + "\t" + shortestExact(r->buildMs) + "\n";
         line(series + ": BVH build (CPU)", build, colours[(2 * s) % 4], true);
         ++s;

@@ -38,6 +38,7 @@
 #include "reference_tracer.h"
 #include "scene_transform.h"
 #include "stage_renderer.h"
+#include "stopwatch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -157,11 +158,6 @@ std::vector<BenchSetting> gridFor(const Scene& scene, bool quick, int width, int
     return grid;
 }
 
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
 // One setting being measured: its renderer stays alive for the whole run,
 // so that frames of every setting can be timed in turns.
 struct Measured {
@@ -277,8 +273,9 @@ int cmdBench(const BenchOptions& options) {
     // The output folder and the plotter too: minutes of measuring must not end
     // in "cannot write" or "gnuplot not found".
     if (options.plot && !bench::gnuplotAvailable())
-        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
-                    "plot out with --no-plot");
+        throw Error(
+            "gnuplot not found: install gnuplot-nox (bash install.sh --test does), or leave the "
+            "plot out with --no-plot");
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))

@@ -100,8 +100,9 @@ int cmdBenchFur(const BenchOptions& options) {
     // Everything that could fail at the end of a long run fails first, and
     // before the output folder exists.
     if (options.plot && !bench::gnuplotAvailable())
-        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
-                    "plot out with --no-plot");
+        throw Error(
+            "gnuplot not found: install gnuplot-nox (bash install.sh --test does), or leave the "
+            "plot out with --no-plot");
     auto context = createHeadlessContext(options.backend);
     FurRenderer renderer(stage, solutionSources(stage), scene, size.width, size.height);
     std::error_code ec;

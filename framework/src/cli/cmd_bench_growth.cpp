@@ -31,6 +31,7 @@
 #include "sphere_blocks.h"
 #include "stage_renderer.h"
 #include "stage_setup.h"
+#include "stopwatch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -43,11 +44,6 @@ namespace raylab {
 namespace {
 
 constexpr long kLinearMaxTriangles = 10000;
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
 
 // One point being measured: its renderer stays alive for the whole run, so
 // that the frames of all points can be timed in turns.
@@ -104,8 +100,9 @@ int cmdBenchGrowth(const BenchOptions& options) {
         options.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
     // Everything that could fail at the end of a long run fails first.
     if (options.plot && !bench::gnuplotAvailable())
-        throw Error("gnuplot not found: install gnuplot-nox (install.sh does), or leave the "
-                    "plot out with --no-plot");
+        throw Error(
+            "gnuplot not found: install gnuplot-nox (bash install.sh --test does), or leave the "
+            "plot out with --no-plot");
     std::error_code ec;
     std::filesystem::create_directories(options.outDir, ec);
     if (ec || !std::filesystem::is_directory(options.outDir))

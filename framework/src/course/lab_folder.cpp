@@ -14,7 +14,7 @@ namespace raylab {
 
 namespace {
 
-std::string trimmed(const std::string& s) {
+std::string trimmedLine(const std::string& s) {
     const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
     return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
@@ -32,7 +32,7 @@ std::string guideAtLevel(const std::string& source, Level level, const std::stri
         throw Error(file + ":" + std::to_string(n) + ": " + what);
     };
     for (int n = 1; std::getline(in, line); ++n) {
-        const std::string t = trimmed(line);
+        const std::string t = trimmedLine(line);
         if (t == "<!-- guided -->" || t == "<!-- open -->") {
             if (!section.empty())
                 fail(n, t + " inside the " + section + " section opened on line " +

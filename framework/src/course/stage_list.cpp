@@ -8,7 +8,7 @@ namespace raylab {
 
 namespace {
 
-std::string trimmed(const std::string& s) {
+std::string trimmedItem(const std::string& s) {
     const auto first = s.find_first_not_of(" \t");
     if (first == std::string::npos) return "";
     return s.substr(first, s.find_last_not_of(" \t") - first + 1);
@@ -21,8 +21,9 @@ std::size_t indexOf(const StageInfo& s) { return std::size_t(&s - allStages().da
 std::vector<const StageInfo*> parseStageList(const std::string& list, const std::string& option) {
     const std::vector<StageInfo>& all = allStages();
     std::vector<bool> chosen(all.size(), false);
-    if (trimmed(list).empty()) throw Error(option + ": no stage given (e.g. " + option + " 01-03)");
-    if (trimmed(list) == "all") {
+    if (trimmedItem(list).empty())
+        throw Error(option + ": no stage given (e.g. " + option + " 01-03)");
+    if (trimmedItem(list) == "all") {
         std::vector<const StageInfo*> out;
         for (const StageInfo& s : all) out.push_back(&s);
         return out;
@@ -31,7 +32,7 @@ std::vector<const StageInfo*> parseStageList(const std::string& list, const std:
     while (begin <= list.size()) {
         std::size_t end = list.find(',', begin);
         if (end == std::string::npos) end = list.size();
-        const std::string item = trimmed(list.substr(begin, end - begin));
+        const std::string item = trimmedItem(list.substr(begin, end - begin));
         begin = end + 1;
         if (item.empty())
             throw Error(option + " '" + list + "': an empty item (two commas, or one at an end)");

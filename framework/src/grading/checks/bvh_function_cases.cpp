@@ -122,7 +122,7 @@ std::string glsl(const dvec4& v) {
 }
 
 // loadWorld(w): the world's spheres and its tree into the stand-in arrays.
-std::string worldsGlsl() {
+std::string bvhWorldsGlsl() {
     std::size_t spheres = 0, nodes = 0, items = 0;
     std::vector<Bvh> trees;
     for (const BvhWorld& w : bvhWorlds()) {
@@ -154,12 +154,13 @@ std::string worldsGlsl() {
     return text + "    }\n}\n";
 }
 
-const char* kPrelude = "#include \"ray.glsl\"\n"
-                       "#include \"scene_objects.glsl\"  // objectId and KIND_*\n"
-                       "#include \"bvh_access.glsl\"     // its texture reads are replaced below\n"
-                       "#define bvhNodeLow(n) gNodeLow[n]\n"
-                       "#define bvhNodeHigh(n) gNodeHigh[n]\n"
-                       "#define bvhItem(k) gItems[k]\n";
+const char* kBvhPrelude =
+    "#include \"ray.glsl\"\n"
+    "#include \"scene_objects.glsl\"  // objectId and KIND_*\n"
+    "#include \"bvh_access.glsl\"     // its texture reads are replaced below\n"
+    "#define bvhNodeLow(n) gNodeLow[n]\n"
+    "#define bvhNodeHigh(n) gNodeHigh[n]\n"
+    "#define bvhItem(k) gItems[k]\n";
 
 // a0: the ray's origin, a0.w the world; a1: its unit direction, a1.w 1 for
 // anyHit; a2.x the hit distance the walk starts with (< 0: T_FAR).
@@ -176,7 +177,7 @@ FunctionCase walkCase(int world, dvec3 origin, dvec3 toward, bool anyHit = false
                   dvec4(limit, 0, 0, 0));
 }
 
-std::string hitText(const dvec4& v) {
+std::string sphereHitText(const dvec4& v) {
     return v.x > 0.5 ? "sphere " + std::to_string(std::lround(v.z)) + " at t = " + caseNumber(v.y)
                      : std::string("no hit");
 }
@@ -187,7 +188,7 @@ FunctionSpec walkBvhSpec() {
     FunctionSpec s;
     s.name = "walkBvh";
     s.prelude = RAYLAB_HARNESS_GLSL(
-        kPrelude + worldsGlsl() +
+        kBvhPrelude + bvhWorldsGlsl() +
         "#include \"intersect_sphere.glsl\"\n"
         "// Stand-ins for find_closest.glsl's keepNearer and the meshes (none here).\n"
         "void keepNearer(inout Hit hit, float t, int kind, int index)\n"
@@ -253,8 +254,8 @@ FunctionSpec walkBvhSpec() {
                    std::fabs(got.y - want.y) <= 1e-4 * std::max(1.0, want.y);
         return same ? ""
                     : c.label + ": expected " +
-                          (anyHit && found ? "a sphere before the limit" : hitText(want)) +
-                          ", got " + hitText(got);
+                          (anyHit && found ? "a sphere before the limit" : sphereHitText(want)) +
+                          ", got " + sphereHitText(got);
     };
     return s;
 }

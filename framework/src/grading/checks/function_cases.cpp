@@ -31,12 +31,6 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-std::string num(double v) { return caseNumber(v); }
-
-bool finite(const dvec4& v) { return allFinite(v); }
-
-dvec3 xyz(const dvec4& v) { return dvec3(v); }
-
 // 1 + 2^-23: a float step above 1, where a dot product of two unit vectors
 // can land.
 constexpr double kCosAboveOne = 1.0 + 1.0 / 8388608.0;
@@ -49,7 +43,7 @@ FunctionSpec fresnelDielectricSpec() {
     for (double ior : {1.33, 1.5, 2.4})
         for (double cosine : {1.0, 0.9, 0.6, 0.3, 0.1, 0.0}) {
             FunctionCase c;
-            c.label = "ior " + num(ior) + ", cos " + num(cosine);
+            c.label = "ior " + caseNumber(ior) + ", cos " + caseNumber(cosine);
             c.in = {dvec4(cosine, ior, 0, 0), dvec4(0.0), dvec4(0.0), dvec4(0.0)};
             s.cases.push_back(c);
         }
@@ -64,7 +58,7 @@ FunctionSpec fresnelDielectricSpec() {
     });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
         if (std::isfinite(got.x) && (got.x < 0.0 || got.x > 1.0))
-            return c.label + ": F = " + num(got.x) +
+            return c.label + ": F = " + caseNumber(got.x) +
                    " is not a share (reflected + transmitted must be 1, both >= 0)";
         return compareVector(c, got, want, 1, 1e-4);
     };
@@ -82,11 +76,11 @@ FunctionSpec fresnelConductorSpec() {
         FunctionCase c;
         c.label = cosine > 1.0
                       ? "gold, cos a float step above 1 (rounding): clamp 1 - cos before pow()"
-                      : "gold, cos " + num(cosine);
+                      : "gold, cos " + caseNumber(cosine);
         c.in = {dvec4(cosine, 0, 0, 0), dvec4(goldN, 0), dvec4(goldK, 0), dvec4(0.0)};
         s.cases.push_back(c);
         c.label = cosine > 1.0 ? "silver, cos a float step above 1: clamp 1 - cos before pow()"
-                               : "silver, cos " + num(cosine);
+                               : "silver, cos " + caseNumber(cosine);
         c.in = {dvec4(cosine, 0, 0, 0), dvec4(silverN, 0), dvec4(silverK, 0), dvec4(0.0)};
         s.cases.push_back(c);
     }
@@ -105,8 +99,8 @@ FunctionCase glassCase(const std::string& what, double degrees, bool entering, d
     const double a = glm::radians(degrees);
     const dvec3 normal(0, 1, 0), dir(std::sin(a), -std::cos(a), 0);
     FunctionCase c;
-    c.label = what + " [" + (entering ? "entering" : "leaving") + ", ior " + num(ior) + ", " +
-              num(degrees) + " degrees from the normal]";
+    c.label = what + " [" + (entering ? "entering" : "leaving") + ", ior " + caseNumber(ior) +
+              ", " + caseNumber(degrees) + " degrees from the normal]";
     c.in = {dvec4(dir, 0), dvec4(normal, 0), dvec4(entering ? 1.0 : 0.0, ior, 0, 0), dvec4(0.0)};
     return c;
 }
@@ -169,11 +163,11 @@ FunctionSpec refractGlassSpec() {
         return reference::refractGlass(xyz(c.in[0]), xyz(c.in[1]), c.in[2].x > 0.5, c.in[2].y);
     });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) -> std::string {
-        if (!finite(got)) return c.label + ": got NaN or Inf";
+        if (!allFinite(got)) return c.label + ": got NaN or Inf";
         const bool gotTir = xyz(got) == dvec3(0.0), wantTir = xyz(want) == dvec3(0.0);
         auto text = [](const dvec4& v) {
-            return "refracted (" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) +
-                   "), F = " + num(v.w);
+            return "refracted (" + caseNumber(v.x) + ", " + caseNumber(v.y) + ", " +
+                   caseNumber(v.z) + "), F = " + caseNumber(v.w);
         };
         if (wantTir && !gotTir)
             return c.label +
@@ -181,11 +175,11 @@ FunctionSpec refractGlassSpec() {
                    text(got);
         if (!wantTir && gotTir)
             return c.label + ": expected " + text(want) +
-                   ", got total internal reflection (F = " + num(got.w) + ")";
+                   ", got total internal reflection (F = " + caseNumber(got.w) + ")";
         if (std::fabs(got.w - want.w) > 1e-4 || glm::length(xyz(got) - xyz(want)) > 1e-4)
             return c.label + ": expected " +
                    (wantTir ? "total internal reflection, F = 1" : text(want)) + ", got " +
-                   (gotTir ? "F = " + num(got.w) : text(got));
+                   (gotTir ? "F = " + caseNumber(got.w) : text(got));
         return "";
     };
     s.diagnoses = refractGlassDiagnoses();
@@ -196,7 +190,7 @@ FunctionSpec refractGlassSpec() {
 // same place, and at the seam u = 0 and u = 1 meet. A failure shows the
 // values as returned.
 std::string compareUv(const FunctionCase& c, const dvec4& got, const dvec4& want) {
-    if (!finite(got)) return c.label + ": got NaN or Inf";
+    if (!allFinite(got)) return c.label + ": got NaN or Inf";
     dvec4 samePlace = got;
     samePlace.x -= std::round(got.x - want.x);
     if (compareVector(c, samePlace, want, 2, 1e-4).empty()) return "";

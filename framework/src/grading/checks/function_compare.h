@@ -21,6 +21,8 @@ glm::dvec4 asHarnessReads(const glm::dvec4& v);
 FunctionCase caseOf(std::string label, glm::dvec4 a0, glm::dvec4 a1 = glm::dvec4(0.0),
                     glm::dvec4 a2 = glm::dvec4(0.0), glm::dvec4 a3 = glm::dvec4(0.0));
 bool allFinite(const glm::dvec4& v);
+// A case input's first three components (a point or a direction).
+inline glm::dvec3 xyz(const glm::dvec4& v) { return glm::dvec3(v); }
 // Empty when the first COMPONENTS of GOT are within TOLERANCE of WANT, else
 // "LABEL: expected (w0, w1), got (g0, g1)" (or "got NaN or Inf").
 std::string compareVector(const FunctionCase& c, const glm::dvec4& got, const glm::dvec4& want,

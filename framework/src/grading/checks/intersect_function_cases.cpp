@@ -19,19 +19,15 @@ using glm::dvec4;
 
 using reference::kNoHit;
 
-std::string num(double v) { return caseNumber(v); }
-
-std::string hitText(double t) { return t < 0.0 ? "no hit" : "t = " + num(t); }
-
-bool finite(const dvec4& v) { return allFinite(v); }
+std::string hitText(double t) { return t < 0.0 ? "no hit" : "t = " + caseNumber(t); }
 
 // Hit distances: hit or miss must agree (unless on the boundary), t within a
 // relative 1e-4 - float32 gives about 1e-7, a wrong formula far more.
 std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& want) {
-    if (!finite(got)) return c.label + ": expected " + hitText(want.x) + ", got NaN or Inf";
+    if (!allFinite(got)) return c.label + ": expected " + hitText(want.x) + ", got NaN or Inf";
     bool gotHit = got.x != kNoHit, wantHit = want.x != kNoHit;
     if (gotHit && got.x <= 0.0)
-        return c.label + ": returned t = " + num(got.x) +
+        return c.label + ": returned t = " + caseNumber(got.x) +
                ", neither a hit in front of the ray nor NO_HIT";
     if (gotHit != wantHit) {
         if (c.hitOrMiss && !gotHit) return "";
@@ -41,8 +37,6 @@ std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& wan
         return c.label + ": expected " + hitText(want.x) + ", got " + hitText(got.x);
     return "";
 }
-
-dvec3 xyz(const dvec4& v) { return dvec3(v); }
 
 // The ray of a case whose a0.xyz is the origin and a1.xyz the direction.
 // (maybe_unused: only the references use it, and the page's core has none.)
@@ -289,10 +283,10 @@ FunctionSpec torusNormalSpec() {
         return dvec4(reference::torusNormalLocal(xyz(c.in[0]), c.in[0].w, c.in[1].x), 1.0);
     });
     s.compare = [](const FunctionCase& c, const dvec4& got, const dvec4& want) {
-        if (!finite(got)) return c.label + ": got NaN or Inf";
+        if (!allFinite(got)) return c.label + ": got NaN or Inf";
         if (std::fabs(glm::length(xyz(got)) - 1.0) > 1e-3)
-            return c.label + ": the normal is not of unit length (" + num(glm::length(xyz(got))) +
-                   ")";
+            return c.label + ": the normal is not of unit length (" +
+                   caseNumber(glm::length(xyz(got))) + ")";
         return compareVector(c, got, want, 3, 1e-3);
     };
     return s;

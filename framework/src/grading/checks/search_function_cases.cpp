@@ -61,7 +61,7 @@ FunctionCase searchCase(std::string label, const Objects& o) {
     return o;
 }
 
-const char* kPrelude =
+const char* kSearchPrelude =
     "#include \"ray.glsl\"\n"
     "#include \"scene_spheres.glsl\"\n"
     "#include \"scene_objects.glsl\"  // objectId and KIND_*; the scene's uniforms go unused\n"
@@ -135,7 +135,7 @@ const char* kHelpers =
     "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"
     "}\n";
 
-std::string hitText(const dvec4& v) {
+std::string objectHitText(const dvec4& v) {
     if (v.x < 0.5) return "no hit";
     const long id = std::lround(v.z);
     const long kind = id / shader::kObjectKindStride, index = id % shader::kObjectKindStride;
@@ -151,7 +151,7 @@ std::string hitText(const dvec4& v) {
 FunctionSpec findClosestEveryKindSpec() {
     FunctionSpec s;
     s.name = "findClosestEveryKind";
-    s.prelude = RAYLAB_HARNESS_GLSL(kPrelude);
+    s.prelude = RAYLAB_HARNESS_GLSL(kSearchPrelude);
     s.includes = {"find_closest.glsl"};
     s.helpers = RAYLAB_HARNESS_GLSL(kHelpers);
     s.call = "checkFindClosest(a0, a1, a2, a3)";
@@ -198,7 +198,8 @@ FunctionSpec findClosestEveryKindSpec() {
         const bool same = (got.x > 0.5) == (want.x > 0.5) &&
                           (want.x < 0.5 || (std::lround(got.z) == std::lround(want.z) &&
                                             std::fabs(got.y - want.y) <= 1e-6 * want.y));
-        return same ? "" : c.label + ": expected " + hitText(want) + ", got " + hitText(got);
+        return same ? ""
+                    : c.label + ": expected " + objectHitText(want) + ", got " + objectHitText(got);
     };
     return s;
 }

@@ -18,8 +18,6 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-dvec3 xyz(const dvec4& v) { return dvec3(v); }
-
 FunctionCase makeCase(std::string label, dvec4 a0, dvec4 a1 = dvec4(0.0), dvec4 a2 = dvec4(0.0),
                       dvec4 a3 = dvec4(0.0)) {
     FunctionCase c;
@@ -38,7 +36,7 @@ std::string compareColor(const FunctionCase& c, const dvec4& got, const dvec4& w
 // ---- 02 blinn_phong.glsl ---------------------------------------------------
 
 // The scene's lights (scene_lights.glsl) as globals the helper sets.
-const char* kLightsPrelude = "// Stand-ins for the scene's lights, set by the case.\n"
+const char* kShadingLights = "// Stand-ins for the scene's lights, set by the case.\n"
                              "int uLightCount;\n"
                              "vec3 uLightPositions[MAX_LIGHTS];\n"
                              "vec3 uLightColors[MAX_LIGHTS];\n";
@@ -68,7 +66,7 @@ FunctionCase blinnCase(std::string label, dvec3 normal, dvec3 toEye, double shin
 FunctionSpec blinnPhongSpec() {
     FunctionSpec s;
     s.name = "blinnPhong";
-    s.prelude = RAYLAB_HARNESS_GLSL(kLightsPrelude);
+    s.prelude = RAYLAB_HARNESS_GLSL(kShadingLights);
     s.includes = {"ray.glsl", "scene_materials.glsl", "blinn_phong.glsl"};
     s.helpers =
         RAYLAB_HARNESS_GLSL("vec4 checkBlinnPhong(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"

@@ -18,8 +18,6 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-dvec3 xyz(const dvec4& v) { return dvec3(v); }
-
 }  // namespace
 
 // skyColor(dir): a0.xyz the direction (any length), a1.x 1 with a sky box,

@@ -79,7 +79,7 @@ std::string glsl(const dvec3& v) {
 }
 
 // The worlds as GLSL: loadWorld(w, offset, scale) fills the stand-in spheres.
-std::string worldsGlsl() {
+std::string traceWorldsGlsl() {
     std::string text = "void loadWorld(int world, vec3 offset, float scale)\n{\n"
                        "    gOffset = offset;\n    gScale = scale;\n    gSphereCount = 0;\n";
     for (std::size_t w = 0; w < worlds().size(); ++w) {
@@ -279,7 +279,7 @@ FunctionSpec traceSpec() {
         "    gMaterials[gSphereCount] = m;\n"
         "    ++gSphereCount;\n"
         "}\n" +
-        worldsGlsl() +
+        traceWorldsGlsl() +
         "vec4 checkTrace(vec4 a0, vec4 a1, vec4 a2)\n"
         "{\n"
         "    loadWorld(int(a0.w), a2.xyz, a2.w);\n"

@@ -16,13 +16,11 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-dvec3 xyz(const dvec4& v) { return dvec3(v); }
-
 // The scene's lights (scene_lights.glsl) as globals the helper sets.
-const char* kLightsPrelude = "// Stand-ins for the scene's lights, set by the case.\n"
-                             "int uLightCount;\n"
-                             "vec3 uLightPositions[MAX_LIGHTS];\n"
-                             "vec3 uLightColors[MAX_LIGHTS];\n";
+const char* kVisibilityLights = "// Stand-ins for the scene's lights, set by the case.\n"
+                                "int uLightCount;\n"
+                                "vec3 uLightPositions[MAX_LIGHTS];\n"
+                                "vec3 uLightColors[MAX_LIGHTS];\n";
 
 // Sets the light and the spheres from the case, calls lightVisible.
 const char* kVisibilityHelper =
@@ -187,7 +185,7 @@ std::vector<FunctionDiagnosis> shadowRayDiagnoses() {
 FunctionSpec lightVisibilitySpec() {
     FunctionSpec s;
     s.name = "lightVisible";
-    s.prelude = RAYLAB_HARNESS_GLSL(std::string(kLightsPrelude) +
+    s.prelude = RAYLAB_HARNESS_GLSL(std::string(kVisibilityLights) +
                                     "// Stand-ins for the scene's spheres, set by the case.\n"
                                     "int uSphereCount;\n"
                                     "vec4 uSpheres[MAX_SPHERES];\n");
@@ -234,7 +232,7 @@ FunctionSpec lightVisibleFastSpec() {
     FunctionSpec s;
     s.name = "lightVisibleFast";
     s.prelude = RAYLAB_HARNESS_GLSL(
-        std::string(kLightsPrelude) +
+        std::string(kVisibilityLights) +
         "#include \"ray.glsl\"\n"
         "#include \"intersect_sphere.glsl\"\n"
         "// Stand-ins for the scene's spheres, set by the case, and for\n"

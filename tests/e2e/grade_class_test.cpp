@@ -49,7 +49,7 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     auto start = std::chrono::steady_clock::now();
     CommandResult r =
         runRaylab("grade --submissions " + quote((dir / "submissions").string()) + " --out " +
-                  quote((dir / "out").string()) + " --jobs 2 --timeout 20 --seed 7");
+                  quote((dir / "out").string()) + " --jobs 2 --timeout 10 --seed 7");
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("[ figure   ] 30 students x %zu stages graded in %.1f s with --jobs 2\n",

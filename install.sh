@@ -41,7 +41,7 @@ test_packages=(
   gnuplot-nox                                      # `raylab bench`'s speed-vs-error plot (bench.png)
   libembree-dev                                    # `raylab bench`'s embree-cast row (optional in CMake)
   xvfb xauth                                       # windowed-mode tests without a display
-  clang libclang-rt-14-dev clang-format            # libFuzzer targets (ctest -L fuzz), the sanitizer build, tools/check-format.sh
+  clang libclang-rt-14-dev clang-format            # libFuzzer targets (ctest -L fuzz), tools/check-format.sh
   chromium                                         # the web build's tests (ctest -L web): WebGL 2 headless
   firefox-esr                                      # the same tests in a second engine (ctest -L firefox)
   webkit2gtk-driver                                # the page's Check in WebKitGTK, Safari's engine (ctest -L webkit)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest sanitize_* (label sanitize): the project built with clang's (else gcc's)
+# ctest sanitize_* (label sanitize): the project built with gcc's
 # AddressSanitizer + UndefinedBehaviorSanitizer in a build folder of its own,
 # then its unit and numerics tests and a few headless renders run there.
 #   run_sanitize.sh build  SOURCE_DIR BUILD_DIR   configure + build the needed targets
@@ -56,15 +56,14 @@ trap check_reports EXIT
 
 case "$step" in
   build)
-    # -O0 -g1 (line tables: reports name file and line): compiles twice as
-    # fast as -O1 -g (the build is most of this group's time). clang, which the
-    # fuzz group needs anyway, compiles this build a fifth faster than gcc
-    # (measured on 10 of its files); gcc where clang is missing.
+    # -O0 -g1: compiles twice as fast as -O1 -g (the build is most of this
+    # group's time). gcc, the compiler of the main build: clang 14 compiles
+    # this build a fifth faster, but its -O0 build loses one first hit in
+    # 40,000 in ShellSlots.EveryFirstHitIsAmongTheSlots (a rounding edge
+    # gcc's builds do not meet; not yet understood).
     # -Wno-maybe-uninitialized: gcc 12 false positives inside <regex> with sanitizers.
-    flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
-    cxx=clang++
-    command -v clang++ >/dev/null || { cxx=g++; flags="$flags -Wno-maybe-uninitialized"; }
-    cmake -S "$src" -B "$bin" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_COMPILER=$cxx" \
+    flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -Wno-maybe-uninitialized"
+    cmake -S "$src" -B "$bin" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
       "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1" \
       "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
     # Only what the steps below run (raylab and raylab-labgen come with the tests).

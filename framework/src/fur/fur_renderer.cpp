@@ -124,9 +124,7 @@ void FurRenderer::rebuild() {
         ShaderSource fragment = assemble(p.fragment);
         if (p.geometry.empty()) return std::make_unique<ShaderProgram>(vertex, fragment);
         ShaderSource geometry = assemble(p.geometry);
-        // gl_Position captured while countPrimitives counts (and only then).
-        return std::make_unique<ShaderProgram>(vertex, geometry, fragment,
-                                               std::vector<std::string>{"gl_Position"});
+        return std::make_unique<ShaderProgram>(vertex, geometry, fragment);
     };
     auto emulated = [&](const StageProgram& p) -> std::unique_ptr<EmulatedGeometryPass> {
         if (!emulate_ || p.geometry.empty()) return nullptr;
@@ -315,34 +313,15 @@ long FurRenderer::countPrimitives(bool strands, const Frame& f) {
         setUniforms(emulated->draw(), f);
         primitives = emulated->run(true);
     } else {
-        // Counted, not drawn: the frame in the target stays as it was. The
-        // count runs with transform feedback active, into a buffer that
-        // holds one triangle (the query counts what does not fit too): Mesa's
-        // softpipe counts generated primitives only then, and gave 0
-        // (docs/bench/README.md, "On Mesa's softpipe").
-        const ShaderProgram& program = strands ? *strands_ : *fins_;
-        setUniforms(program, f);
-        GLint output = GL_TRIANGLE_STRIP;
-        glGetProgramiv(program.id(), GL_GEOMETRY_OUTPUT_TYPE, &output);
-        const GLenum mode = output == GL_POINTS       ? GL_POINTS
-                            : output == GL_LINE_STRIP ? GL_LINES
-                                                      : GL_TRIANGLES;
-        GLuint query = 0, feedback = 0;
+        GLuint query = 0;
         glGenQueries(1, &query);
-        glGenBuffers(1, &feedback);
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback);
-        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 3 * 4 * sizeof(float), nullptr, GL_STREAM_READ);
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback);
+        // Counted, not drawn: the frame in the target stays as it was.
         glEnable(GL_RASTERIZER_DISCARD);
         glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-        glBeginTransformFeedback(mode);
-        if (strands) buffers_->drawTriangles();
-        else buffers_->drawEdgesWithAdjacency();
-        glEndTransformFeedback();
+        if (strands) drawStrands(f);
+        else drawFins(f);
         glEndQuery(GL_PRIMITIVES_GENERATED);
         glDisable(GL_RASTERIZER_DISCARD);
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-        glDeleteBuffers(1, &feedback);
         GLuint64 generated = 0;
         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &generated);
         glDeleteQueries(1, &query);

@@ -58,6 +58,10 @@ ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& geo
                              const ShaderSource& fragment)
     : ShaderProgram(vertex, &geometry, fragment, {}) {}
 
+ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
+                             const ShaderSource& fragment, const std::vector<std::string>& feedback)
+    : ShaderProgram(vertex, &geometry, fragment, feedback) {}
+
 ShaderProgram::ShaderProgram(const ShaderSource& vertex, const ShaderSource* geometry,
                              const ShaderSource& fragment,
                              const std::vector<std::string>& feedback) {

@@ -33,6 +33,8 @@ public:
     // into one buffer in this order).
     ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment,
                   const std::vector<std::string>& feedback);
+    ShaderProgram(const ShaderSource& vertex, const ShaderSource& geometry,
+                  const ShaderSource& fragment, const std::vector<std::string>& feedback);
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;

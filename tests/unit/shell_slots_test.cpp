@@ -41,7 +41,7 @@ double hitTriangle(const Scene& scene, int i, glm::dvec3 o, glm::dvec3 d) {
     return u >= 0.0 && w >= 0.0 && u + w <= 1.0 && t > kTMin ? t : -1.0;
 }
 
-// How a slot chooses, as testShellGroup does: in float, against the planes
+// How a slot chooses, as find_closest.glsl's SHELL_SLOT does: in float, against the planes
 // as scene_baking.cpp bakes them.
 enum class Rule { Slots, AlwaysTop, IgnoringTMin };
 int chosen(const ShellSlot& s, glm::vec3 origin, glm::vec3 dir, Rule rule) {

@@ -6,6 +6,10 @@
 
 namespace raylab {
 
+// variants/shared-work/08-full/find_closest.glsl's SHELL_GROUP spells out a
+// shell's slots one by one, 6 of them: half a group's most triangles.
+static_assert(kTriangleGroupMax / 2 <= 6, "find_closest.glsl's SHELL_GROUP tests 6 slots at most");
+
 namespace {
 
 // A face: the shell's triangles on one plane.

@@ -18,11 +18,12 @@
 // looks.
 //
 // The specialised demo program (RAYLAB_SHELL_SLOTS; variants/shared-work/
-// 08-full/find_closest.glsl's testShellGroup) tests a shell by its slots:
+// 08-full/find_closest.glsl's SHELL_GROUP) tests a shell by its slots:
 // one slot per triangle of a top face, holding that triangle and the bottom
 // face's triangle across from it; each pixel's ray picks one of the two.
-// The slots are constants of the program, so its loop is unrolled into 6
-// tests with constant corners for pro's cube, where the group's loop took
+// The slots are constants of the program, spelt out as 6 tests with
+// constant corners for pro's cube (a group, kTriangleGroupMax, holds at
+// most 12 triangles, so a shell at most 6 slots), where the group's loop took
 // 12 turns of reads (llvmpipe reads an index that differs between its 8
 // lock-step pixels 8 times over). The picture stays the same (the demo's
 // views to the byte: tests/e2e/bvh_images_test.cpp's

@@ -80,29 +80,39 @@ void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout H
 // shell_slots.h says why this finds the same first hit): of each pair of
 // opposite faces only the plane a ray can meet the shell on first, so 6
 // triangle tests for pro's glass cube, not 12. Every number here is a
-// constant of the specialised program (g is, and the slots come baked with
-// the scene), so the loop is unrolled into tests with constant corners: no
-// reads, and no box test, which would only cost (as for the unrolled
-// groups above).
-void testShellGroup(Ray ray, TriangleShear shear, int g, inout Hit hit, bool stopAtFirst)
-{
-    if (stopAtFirst && hit.id >= 0) return;
-    int slot = uTriangleGroupSlot[g], slots = int(uTriangleGroupHigh[g].w) / 2;
-    for (int k = 0; k < slots; ++k) {
-        vec4 plane = uShellSlotPlane[slot + k];  // xyz: the top face's normal, w: its plane
-        vec4 sides = uShellSlotSides[slot + k];  // x: the bottom's plane; y, z: the triangles
-        float at = dot(plane.xyz, ray.origin), along = dot(plane.xyz, ray.dir);
-        // Going down (against the top's normal): the top if the ray crosses
-        // its plane beyond T_MIN, else the bottom; going up, the bottom if
-        // it crosses that plane beyond T_MIN, else the top.
-        bool top = along < 0.0 ? at - plane.w > T_MIN * -along : sides.x - at <= T_MIN * along;
-        int t = int(sides.y), b = int(sides.z);  // both corners are constants: chosen, not read
-        vec3 p0 = top ? uTriangleVertices[3 * t] : uTriangleVertices[3 * b];
-        vec3 p1 = top ? uTriangleVertices[3 * t + 1] : uTriangleVertices[3 * b + 1];
-        vec3 p2 = top ? uTriangleVertices[3 * t + 2] : uTriangleVertices[3 * b + 2];
-        keepNearer(hit, intersectTriangleSheared(ray, shear, p0, p1, p2), KIND_TRIANGLE, top ? t : b);
-    }
-}
+// constant of the specialised program (the group's index, and the slots
+// baked with the scene), so the tests have constant corners: no reads, and
+// no box test, which would only cost (as for the unrolled groups above).
+//
+// Macros, not a function with a loop, so that every index below is a
+// constant expression where it is written. Natively Mesa unrolls a loop
+// over the slots either way; but a WebGL page's ANGLE clamps every index
+// that is not a constant expression (a function's parameter, a loop's
+// counter) before the driver sees it, and with the clamps Mesa no longer
+// made the slots constants: the page's pro frame took 1.3x native's.
+
+// Slot S (a constant expression; clamped so that a slot past the last,
+// compiled but never run, still reads within the arrays).
+#define SHELL_SLOT(S) { \
+        const int s_ = clamp(S, 0, uShellSlotPlane.length() - 1); \
+        const vec4 plane = uShellSlotPlane[s_];   /* xyz: the top face's normal, w: its plane */ \
+        const vec4 sides = uShellSlotSides[s_];   /* x: the bottom's plane; y, z: the triangles */ \
+        const int t = int(sides.y), b = int(sides.z); \
+        float at = dot(plane.xyz, ray.origin), along = dot(plane.xyz, ray.dir); \
+        bool top = along < 0.0 ? at - plane.w > T_MIN * -along : sides.x - at <= T_MIN * along; \
+        vec3 p0 = top ? uTriangleVertices[3 * t] : uTriangleVertices[3 * b]; \
+        vec3 p1 = top ? uTriangleVertices[3 * t + 1] : uTriangleVertices[3 * b + 1]; \
+        vec3 p2 = top ? uTriangleVertices[3 * t + 2] : uTriangleVertices[3 * b + 2]; \
+        keepNearer(hit, intersectTriangleSheared(ray, shear, p0, p1, p2), KIND_TRIANGLE, top ? t : b); }
+
+// The slots of group G (a constant expression): a group holds at most 12
+// triangles (kTriangleGroupMax, triangle_groups.h), so a shell at most 6
+// slots.
+#define SHELL_SLOT_OF_GROUP(K) if (K < slots) SHELL_SLOT(slot + K)
+#define SHELL_GROUP(G) { if (!(stopAtFirst && hit.id >= 0)) { \
+        const int slot = uTriangleGroupSlot[G], slots = int(uTriangleGroupHigh[G].w) / 2; \
+        SHELL_SLOT_OF_GROUP(0) SHELL_SLOT_OF_GROUP(1) SHELL_SLOT_OF_GROUP(2) \
+        SHELL_SLOT_OF_GROUP(3) SHELL_SLOT_OF_GROUP(4) SHELL_SLOT_OF_GROUP(5) } }
 #endif
 
 // Every object but the spheres, one by one. With stopAtFirst it returns as
@@ -126,7 +136,7 @@ void testOthers(Ray ray, inout Hit hit, bool stopAtFirst)
     // Which groups are shells is a constant too: each group compiles one
     // test or the other, not both.
 #define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) { \
-        if (uTriangleGroupSlot[GROUP_INDEX(G)] >= 0) testShellGroup(ray, shear, GROUP_INDEX(G), hit, stopAtFirst); \
+        if (uTriangleGroupSlot[GROUP_INDEX(G)] >= 0) SHELL_GROUP(GROUP_INDEX(G)) \
         else testTriangleGroup(ray, invDir, shear, GROUP_INDEX(G), hit, stopAtFirst); }
 #else
 #define TRIANGLE_GROUP(G) if (G < uTriangleGroupCount) testTriangleGroup(ray, invDir, shear, GROUP_INDEX(G), hit, stopAtFirst);

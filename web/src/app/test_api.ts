@@ -202,7 +202,8 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
       };
     },
     // Median wall time of FRAMES frames of the demo's fly-through, each waited for by reading one pixel
-    // back (the browser's equivalent of glFinish), after one warm-up frame.
+    // back (the browser's equivalent of glFinish), after one warm-up frame: the frames native's
+    // `raylab demo --frames FRAMES` times.
     async timeFrames(req: ViewRequest & { frames: number; technique?: string }): Promise<{ medianMs: number; ms: number[] }> {
       canvas.width = req.width;
       canvas.height = req.height;
@@ -211,13 +212,15 @@ export function installTestApi(gl: WebGL2RenderingContext, canvas: HTMLCanvasEle
       const pixel = new Uint8Array(4);
       const ms: number[] = [];
       try {
-        for (let i = 0; i <= req.frames; ++i) {
+        // The native demo's frames (cmd_demo.cpp): the fly-through, 0.1 s
+        // apart, frames 0 .. FRAMES - 1 after a warm-up draw of frame 0.
+        for (let k = -1; k < req.frames; ++k) {
+          const i = Math.max(k, 0);
           const t0 = performance.now();
-          // The native demo's frames (cmd_demo.cpp): the fly-through, 0.1 s apart.
           const camera = new Camera(flyThroughPose(frame.camera.pose, i), frame.camera.fovYDeg);
           renderer.render(camera, frame.time + 0.1 * i, frame.settings, req.width, req.height);
           gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-          if (i > 0) ms.push(performance.now() - t0);
+          if (k >= 0) ms.push(performance.now() - t0);
         }
       } finally {
         renderer.dispose();

@@ -92,7 +92,11 @@ void testTriangleGroup(Ray ray, vec3 invDir, TriangleShear shear, int g, inout H
 // made the slots constants: the page's pro frame took 1.3x native's.
 
 // Slot S (a constant expression; clamped so that a slot past the last,
-// compiled but never run, still reads within the arrays).
+// compiled but never run, still reads within the arrays). Going down
+// (against the top's normal): the top if the ray crosses its plane beyond
+// T_MIN, else the bottom; going up, the bottom if it crosses that plane
+// beyond T_MIN, else the top. Both triangles' corners are constants:
+// chosen, not read.
 #define SHELL_SLOT(S) { \
         const int s_ = clamp(S, 0, uShellSlotPlane.length() - 1); \
         const vec4 plane = uShellSlotPlane[s_];   /* xyz: the top face's normal, w: its plane */ \

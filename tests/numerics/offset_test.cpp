@@ -36,7 +36,7 @@ constexpr int kGrid = 64;
 const double kGrazingCos = std::sin(3.0 * 3.14159265358979 / 180.0);
 constexpr double kTorusR = 0.62, kTorusr = 0.2;  // lab 05's torus, in units of S
 
-dvec3 rounded(dvec3 v) { return dvec3(f32(v.x), f32(v.y), f32(v.z)); }
+dvec3 offsetRounded(dvec3 v) { return dvec3(f32(v.x), f32(v.y), f32(v.z)); }
 
 enum class Surface { Sphere, Plane, Torus, FloorFromAfar };
 const char* name(Surface s) {
@@ -63,21 +63,21 @@ const dvec3 kEye(0.5, 1.5, 1.0);
 Figures measure(Surface surface, double scale, bool naive) {
     const bool plane = surface == Surface::Plane || surface == Surface::FloorFromAfar;
     const bool torus = surface == Surface::Torus;
-    const dvec3 eye = rounded(surface == Surface::FloorFromAfar ? scale * kEye
-                              : torus                           ? scale * dvec3(0.9, -2.2, 1.4)
-                                                                : kEye);
-    const dvec3 center = rounded(scale * dvec3(0.6, -0.2, -2.4));
+    const dvec3 eye = offsetRounded(surface == Surface::FloorFromAfar ? scale * kEye
+                                    : torus ? scale * dvec3(0.9, -2.2, 1.4)
+                                            : kEye);
+    const dvec3 center = offsetRounded(scale * dvec3(0.6, -0.2, -2.4));
     const double radius = f32(scale);
     const double R = f32(kTorusR * scale), r = f32(kTorusr * scale);
     const dvec3 planeNormal = surface == Surface::FloorFromAfar
                                   ? dvec3(0.0, 1.0, 0.0)
-                                  : rounded(glm::normalize(dvec3(0.2, 1.0, 0.3)));
+                                  : offsetRounded(glm::normalize(dvec3(0.2, 1.0, 0.3)));
     const double planeOffset = surface == Surface::FloorFromAfar
                                    ? 0.0
                                    : f32(glm::dot(planeNormal, scale * dvec3(0.0, -1.0, 0.0)));
-    const dvec3 light = rounded(scale * (plane   ? dvec3(-2.0, 4.0, -3.0)
-                                         : torus ? dvec3(2.0, -1.0, 3.0)
-                                                 : dvec3(3.0, 5.0, 2.0)));
+    const dvec3 light = offsetRounded(scale * (plane   ? dvec3(-2.0, 4.0, -3.0)
+                                               : torus ? dvec3(2.0, -1.0, 3.0)
+                                                       : dvec3(3.0, 5.0, 2.0)));
 
     FunctionSpec spec;
     spec.name = "acne";
@@ -113,7 +113,7 @@ Figures measure(Surface surface, double scale, bool naive) {
         }
     std::vector<dvec3> dirs;
     for (const dvec3& target : targets) {
-        const dvec3 d = rounded(glm::normalize(target - eye));
+        const dvec3 d = offsetRounded(glm::normalize(target - eye));
         dirs.push_back(d);
         FunctionCase c;
         c.in = {glm::dvec4(eye, 0.0), glm::dvec4(d, 0.0),

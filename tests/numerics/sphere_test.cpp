@@ -24,7 +24,7 @@ using glm::dvec3;
 
 namespace {
 
-constexpr int kGrid = 128;
+constexpr int kSphereGrid = 128;
 constexpr double kRadius = 1.0;
 
 struct Reference {
@@ -51,12 +51,12 @@ Reference reference(dvec3 o, dvec3 d, dvec3 center, double radius, double band) 
     return ref;
 }
 
-struct Figures {
+struct SphereFigures {
     double wrongShare = 0, p50 = 0, p99 = 0, maxUlps = 0;
     int rays = 0, hits = 0, wrong = 0;
 };
 
-Figures measure(double ratio, bool naive) {
+SphereFigures measureSphere(double ratio, bool naive) {
     FunctionSpec spec;
     spec.name = "intersectSphere";
     spec.includes = {"ray.glsl", "intersect_sphere.glsl"};
@@ -76,10 +76,11 @@ Figures measure(double ratio, bool naive) {
     // to 6e-8, which moves the ray by 6e-8 x distance there.
     const double band = 1e-5 * kRadius + 8.0 * floatUlp(ratio * kRadius);
     std::vector<Reference> refs;
-    for (int y = 0; y < kGrid; ++y)
-        for (int x = 0; x < kGrid; ++x) {
-            const dvec3 target = center + kRadius * (right * (-1.4 + 2.8 * (x + 0.5) / kGrid) +
-                                                     up * (-1.4 + 2.8 * (y + 0.5) / kGrid));
+    for (int y = 0; y < kSphereGrid; ++y)
+        for (int x = 0; x < kSphereGrid; ++x) {
+            const dvec3 target =
+                center + kRadius * (right * (-1.4 + 2.8 * (x + 0.5) / kSphereGrid) +
+                                    up * (-1.4 + 2.8 * (y + 0.5) / kSphereGrid));
             dvec3 dir = glm::normalize(target - o);
             dir = dvec3(f32(dir.x), f32(dir.y), f32(dir.z));
             FunctionCase k;
@@ -92,7 +93,7 @@ Figures measure(double ratio, bool naive) {
     if (naive) defines.push_back("RAYLAB_NAIVE_NUMERICS");
     const std::vector<glm::vec4> got = runSolution(spec, "01-raycast", defines);
 
-    Figures f;
+    SphereFigures f;
     int decided = 0;
     std::vector<double> ulps;
     for (std::size_t i = 0; i < refs.size(); ++i) {
@@ -117,7 +118,7 @@ Figures measure(double ratio, bool naive) {
     return f;
 }
 
-void print(const char* method, double ratio, const Figures& f) {
+void printSphere(const char* method, double ratio, const SphereFigures& f) {
     std::printf("[ figure   ] sphere at %6.0f radii, %-9s wrong hit/miss %7.3f%% (%5d rays), |t "
                 "error| p50 %10.1f ulp, p99 %10.1f ulp, max %10.1f ulp (%d rays, %d hits)\n",
                 ratio, method, f.wrongShare * 100.0, f.wrong, f.p50, f.p99, f.maxUlps, f.rays,
@@ -130,11 +131,11 @@ TEST(SphereNumerics, StableDiscriminantIsRightFarAwayAndTheTextbookOneIsNot) {
     double naiveWrongFar = 0;
     for (double ratio : {1e2, 1e3, 1e4}) {
         SCOPED_TRACE(ratio);
-        const Figures robust = measure(ratio, false);
-        const Figures naive = measure(ratio, true);
-        print("default", ratio, robust);
-        print("textbook", ratio, naive);
-        EXPECT_GT(robust.hits, kGrid * kGrid / 4) << "the grid must cover the sphere";
+        const SphereFigures robust = measureSphere(ratio, false);
+        const SphereFigures naive = measureSphere(ratio, true);
+        printSphere("default", ratio, robust);
+        printSphere("textbook", ratio, naive);
+        EXPECT_GT(robust.hits, kSphereGrid * kSphereGrid / 4) << "the grid must cover the sphere";
         EXPECT_EQ(robust.wrong, 0);
         EXPECT_LE(robust.p99, 8.0);
         if (ratio >= 1e4) naiveWrongFar = naive.wrongShare;

@@ -22,11 +22,11 @@ using glm::dvec3;
 namespace {
 
 constexpr double kR = 1.0, kr = 0.25;
-constexpr int kGrid = 128;
+constexpr int kTorusGrid = 128;
 
 double torusSdf(dvec3 p) { return std::hypot(std::hypot(p.x, p.y) - kR, p.z) - kr; }
 
-struct Reference {
+struct TorusReference {
     double t = -1.0;         // -1: miss
     bool ambiguous = false;  // grazes the surface: hit and miss are both right
     double margin = 0;       // how clearly it hits or misses: chord depth or closest approach
@@ -40,9 +40,9 @@ struct Reference {
 // near a tangent the quartic's double root makes t sensitive as the square
 // root of rounding error, and a float eye position 1000 units away is itself
 // only known to 6e-5.
-Reference traceReference(dvec3 o, dvec3 d) {
+TorusReference traceReference(dvec3 o, dvec3 d) {
     const double band = 1e-4 * kR + 8.0 * floatUlp(glm::length(o));
-    Reference ref;
+    TorusReference ref;
     double t = 0.0, closest = 1e30;
     for (int i = 0; i < 2000000 && t < 1e5; ++i) {
         double s = torusSdf(o + t * d);
@@ -65,7 +65,7 @@ Reference traceReference(dvec3 o, dvec3 d) {
     return ref;
 }
 
-struct Figures {
+struct TorusFigures {
     double wrongShare = 0, p50 = 0, p99 = 0, maxUlps = 0;
     int rays = 0, hits = 0, decided = 0;
     int nearMisses = 0;  // decided misses that pass within r / 100 of the surface
@@ -73,12 +73,12 @@ struct Figures {
 
 // Runs the rays (float32 origins and directions) through the solver and
 // compares each with the double reference.
-Figures measureRays(const std::vector<std::pair<dvec3, dvec3>>& rays, bool closedForm) {
+TorusFigures measureRays(const std::vector<std::pair<dvec3, dvec3>>& rays, bool closedForm) {
     FunctionSpec spec;
     spec.name = "intersectTorusLocal";
     spec.includes = {"ray.glsl", "scene_objects.glsl", "intersect_torus.glsl"};
     spec.call = "vec4(intersectTorusLocal(Ray(a0.xyz, a1.xyz), a2.x, a2.y), 0.0, 0.0, 1.0)";
-    std::vector<Reference> refs;
+    std::vector<TorusReference> refs;
     for (const auto& [o, dir] : rays) {
         FunctionCase c;
         c.in = {glm::dvec4(o, 0), glm::dvec4(dir, 0), glm::dvec4(kR, kr, 0, 0), glm::dvec4(0.0)};
@@ -89,7 +89,7 @@ Figures measureRays(const std::vector<std::pair<dvec3, dvec3>>& rays, bool close
     if (closedForm) defines.push_back("TORUS_SOLVER_CLOSED_FORM");
     std::vector<glm::vec4> got = runSolution(spec, "05-primitives", defines);
 
-    Figures f;
+    TorusFigures f;
     int decided = 0, wrong = 0;
     std::vector<double> ulps;
     for (std::size_t i = 0; i < refs.size(); ++i) {
@@ -118,7 +118,7 @@ Figures measureRays(const std::vector<std::pair<dvec3, dvec3>>& rays, bool close
     return f;
 }
 
-Figures measure(double distance, bool closedForm) {
+TorusFigures measureTorus(double distance, bool closedForm) {
     // The eye looks at the torus from a tilted direction; rays aim at a grid
     // over a square a little larger than the torus (misses and grazes too).
     const dvec3 eye = distance * glm::normalize(dvec3(0.3, -0.8, 0.5));
@@ -126,10 +126,10 @@ Figures measure(double distance, bool closedForm) {
     const dvec3 right = glm::normalize(glm::cross(forward, dvec3(0, 0, 1)));
     const dvec3 up = glm::cross(right, forward);
     std::vector<std::pair<dvec3, dvec3>> rays;
-    for (int y = 0; y < kGrid; ++y)
-        for (int x = 0; x < kGrid; ++x) {
-            dvec3 target =
-                right * (-1.4 + 2.8 * (x + 0.5) / kGrid) + up * (-1.4 + 2.8 * (y + 0.5) / kGrid);
+    for (int y = 0; y < kTorusGrid; ++y)
+        for (int x = 0; x < kTorusGrid; ++x) {
+            dvec3 target = right * (-1.4 + 2.8 * (x + 0.5) / kTorusGrid) +
+                           up * (-1.4 + 2.8 * (y + 0.5) / kTorusGrid);
             // The GPU sees float32 inputs: the reference takes the same numbers.
             dvec3 o(f32(eye.x), f32(eye.y), f32(eye.z));
             dvec3 dir = glm::normalize(target - o);
@@ -138,7 +138,7 @@ Figures measure(double distance, bool closedForm) {
     return measureRays(rays, closedForm);
 }
 
-void print(const char* solver, double distance, const Figures& f) {
+void printTorus(const char* solver, double distance, const TorusFigures& f) {
     std::printf("[ figure   ] torus at %6.0f R, %-12s wrong hit/miss %7.3f%%, |t error| p50 %9.1f "
                 "ulp, p99 %9.1f ulp, max %9.1f ulp (%d rays, %d hits)\n",
                 distance, solver, f.wrongShare * 100.0, f.p50, f.p99, f.maxUlps, f.rays, f.hits);
@@ -150,11 +150,11 @@ TEST(TorusNumerics, DefaultSolverIsRightAtEveryDistanceAndTheClosedFormIsNot) {
     double closedFormWrongFar = 0;
     for (double distance : {3.0, 10.0, 100.0, 1000.0}) {
         SCOPED_TRACE(distance);
-        Figures robust = measure(distance, false);
-        Figures closed = measure(distance, true);
-        print("default", distance, robust);
-        print("closed form", distance, closed);
-        EXPECT_GT(robust.hits, kGrid * kGrid / 10) << "the grid must cover the torus";
+        TorusFigures robust = measureTorus(distance, false);
+        TorusFigures closed = measureTorus(distance, true);
+        printTorus("default", distance, robust);
+        printTorus("closed form", distance, closed);
+        EXPECT_GT(robust.hits, kTorusGrid * kTorusGrid / 10) << "the grid must cover the torus";
         EXPECT_EQ(robust.wrongShare, 0.0);
         EXPECT_LE(robust.p99, 4.0);
         if (distance >= 100.0) closedFormWrongFar = std::max(closedFormWrongFar, closed.wrongShare);
@@ -195,8 +195,8 @@ TEST(TorusNumerics, GrazingRaysAreDecidedRight) {
                         rays.emplace_back(dvec3(f32(o.x), f32(o.y), f32(o.z)),
                                           dvec3(f32(d.x), f32(d.y), f32(d.z)));
                     }
-    Figures f = measureRays(rays, false);
-    print("default", 4.0, f);
+    TorusFigures f = measureRays(rays, false);
+    printTorus("default", 4.0, f);
     std::printf("[ figure   ] grazing rays: %d decided, %d of them misses within r/100 of the "
                 "surface\n",
                 f.decided, f.nearMisses);

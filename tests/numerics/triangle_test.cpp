@@ -210,7 +210,7 @@ std::vector<AimedRay> plainRays(const TriangleSoup& mesh, std::vector<bool>* out
     return rays;
 }
 
-struct Figures {
+struct TriangleFigures {
     int edgeRays = 0, cornerRays = 0, edgeCracks = 0, cornerCracks = 0, nonFinite = 0, wrongT = 0;
     int plainRays = 0, plainWrong = 0;  // centroid missed or a point outside hit
 };
@@ -235,9 +235,10 @@ std::vector<glm::vec4> runTriangles(const TriangleSoup& mesh, const std::vector<
     return runSolution(spec, "08-full", defines);
 }
 
-Figures measure(const TriangleSoup& mesh, const std::vector<AimedRay>& rays, bool naive) {
+TriangleFigures measureTriangle(const TriangleSoup& mesh, const std::vector<AimedRay>& rays,
+                                bool naive) {
     const std::vector<glm::vec4> got = runTriangles(mesh, rays, naive);
-    Figures f;
+    TriangleFigures f;
     std::vector<bool> outside;
     const std::vector<AimedRay> plain = plainRays(mesh, &outside);
     const std::vector<glm::vec4> plainGot = runTriangles(mesh, plain, naive);
@@ -267,7 +268,7 @@ Figures measure(const TriangleSoup& mesh, const std::vector<AimedRay>& rays, boo
     return f;
 }
 
-void print(const std::string& mesh, const char* method, const Figures& f) {
+void printTriangle(const std::string& mesh, const char* method, const TriangleFigures& f) {
     std::printf(
         "[ figure   ] %-12s %-16s fell through: %4d of %5d rays at shared edges, %3d of %4d at "
         "shared corners "
@@ -284,10 +285,10 @@ TEST(TriangleNumerics, WatertightTestHasNoCracksAndMollerTrumboreHas) {
     for (const TriangleSoup& mesh : {heightField(), mirror(), glassCube()}) {
         SCOPED_TRACE(mesh.name);
         const std::vector<AimedRay> rays = aimedRays(mesh);
-        const Figures robust = measure(mesh, rays, false);
-        const Figures naive = measure(mesh, rays, true);
-        print(mesh.name, "watertight", robust);
-        print(mesh.name, "Moller-Trumbore", naive);
+        const TriangleFigures robust = measureTriangle(mesh, rays, false);
+        const TriangleFigures naive = measureTriangle(mesh, rays, true);
+        printTriangle(mesh.name, "watertight", robust);
+        printTriangle(mesh.name, "Moller-Trumbore", naive);
         EXPECT_GT(robust.edgeRays, 10) << "every mesh must be seen across shared edges";
         EXPECT_EQ(robust.edgeCracks + robust.cornerCracks, 0);
         EXPECT_EQ(robust.nonFinite, 0);

@@ -22,7 +22,7 @@ using namespace raylab;
 
 namespace {
 
-Scene demoScene(const char* name) {
+Scene eyeCellScene(const char* name) {
     return loadScene(projectRoot() / "assets/scenes" / (std::string(name) + ".json"));
 }
 
@@ -33,14 +33,15 @@ bool rayMeetsSphere(glm::dvec3 o, glm::dvec3 d, glm::dvec3 c, double r) {
     return glm::length(o + t * d - c) <= r * (1.0 + 1e-6);
 }
 
-struct Audit {
+struct EyeCellAudit {
     long hits = 0;     // (ray, sphere) pairs where the ray meets the sphere
     long missing = 0;  // ... and the ray's cell does not list it
 };
 
 // Rays from CELLS' eye: half in any direction, half toward a sphere (its
 // centre, moved by up to its radius), with the spheres anywhere on their swing.
-Audit audit(const Scene& scene, const EyeCells& cells, int lookupResolution, unsigned seed) {
+EyeCellAudit auditEyeCells(const Scene& scene, const EyeCells& cells, int lookupResolution,
+                           unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     auto randomDirection = [&] {
@@ -49,7 +50,7 @@ Audit audit(const Scene& scene, const EyeCells& cells, int lookupResolution, uns
         while (glm::length(v) > 1.0 || glm::length(v) < 1e-3);
         return glm::normalize(v);
     };
-    Audit a;
+    EyeCellAudit a;
     const glm::dvec3 eye(cells.eye);
     for (int sample = 0; sample < 20000; ++sample) {
         glm::dvec3 toward = randomDirection();
@@ -75,7 +76,7 @@ Audit audit(const Scene& scene, const EyeCells& cells, int lookupResolution, uns
 
 void expectConservative(const std::string& name, const Scene& scene, glm::vec3 eye) {
     const EyeCells cells = buildEyeCells(scene, eye);
-    const Audit a = audit(scene, cells, cells.resolution, 1);
+    const EyeCellAudit a = auditEyeCells(scene, cells, cells.resolution, 1);
     std::printf("[ figure ] %s: 6 faces x %d^2 cells; a list that is not empty holds %.2f spheres "
                 "on average, %d at most (of %zu); %ld ray-sphere hits, %ld missing from their "
                 "cell\n",
@@ -89,32 +90,33 @@ void expectConservative(const std::string& name, const Scene& scene, glm::vec3 e
 
 TEST(EyeCells, EverySphereARayMeetsIsInItsCell) {
     for (const char* name : {"pro", "lite"}) {
-        const Scene scene = demoScene(name);
+        const Scene scene = eyeCellScene(name);
         expectConservative(std::string(name) + " from its camera", scene,
                            glm::vec3(scene.camera.position));
     }
     // An eye among the spheres, and one inside a sphere (every cell lists it).
-    const Scene pro = demoScene("pro");
-    expectConservative(
-        "pro from a sphere's side", pro,
-        glm::vec3(pro.spheres[3].center + glm::dvec3(0.0, 0.0, 1.5 * pro.spheres[3].radius)));
-    expectConservative("pro from inside a sphere", pro, glm::vec3(pro.spheres[0].center));
+    const Scene eyeCellsPro = eyeCellScene("pro");
+    expectConservative("pro from a sphere's side", eyeCellsPro,
+                       glm::vec3(eyeCellsPro.spheres[3].center +
+                                 glm::dvec3(0.0, 0.0, 1.5 * eyeCellsPro.spheres[3].radius)));
+    expectConservative("pro from inside a sphere", eyeCellsPro,
+                       glm::vec3(eyeCellsPro.spheres[0].center));
 }
 
 // The margins are shares of the scene's size and of the eye's distance from
 // the origin, so they hold for a scene resized or moved far away.
 TEST(EyeCells, EverySphereARayMeetsIsInItsCellAtAnyScaleAndPlace) {
-    const Scene pro = demoScene("pro");
+    const Scene eyeCellsPro = eyeCellScene("pro");
     for (double scale : {1e-4, 1e6}) {
         SceneTransform t;
         t.scale = scale;
-        const Scene scaled = transformScene(pro, t);
+        const Scene scaled = transformScene(eyeCellsPro, t);
         expectConservative("pro x " + std::to_string(scale), scaled,
                            glm::vec3(scaled.camera.position));
     }
     SceneTransform far;
     far.offset = glm::dvec3(1e5, 0.0, 0.0);
-    const Scene moved = transformScene(pro, far);
+    const Scene moved = transformScene(eyeCellsPro, far);
     expectConservative("pro moved by 1e5", moved, glm::vec3(moved.camera.position));
 }
 
@@ -122,31 +124,32 @@ TEST(EyeCells, EverySphereARayMeetsIsInItsCellAtAnyScaleAndPlace) {
 // one unit away (cells not rebuilt after the camera moved), or looked up on
 // the wrong grid, miss spheres.
 TEST(EyeCells, WrongCellsAreCaught) {
-    const Scene pro = demoScene("pro");
-    const glm::vec3 eye(pro.camera.position);
-    Scene smaller = pro;
+    const Scene eyeCellsPro = eyeCellScene("pro");
+    const glm::vec3 eye(eyeCellsPro.camera.position);
+    Scene smaller = eyeCellsPro;
     for (Sphere& s : smaller.spheres) s.radius *= 0.9;
     EyeCells shrunk = buildEyeCells(smaller, eye);
-    const Audit a = audit(pro, shrunk, kEyeCellResolution, 2);
+    const EyeCellAudit a = auditEyeCells(eyeCellsPro, shrunk, kEyeCellResolution, 2);
     std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld hits missing\n", a.missing,
                 a.hits);
     EXPECT_GT(a.missing, 0);
-    EyeCells stale = buildEyeCells(pro, eye + glm::vec3(1.0f, 0.0f, 0.0f));
+    EyeCells stale = buildEyeCells(eyeCellsPro, eye + glm::vec3(1.0f, 0.0f, 0.0f));
     stale.eye = eye;  // looked up for rays from the camera's new place
-    const Audit b = audit(pro, stale, kEyeCellResolution, 3);
+    const EyeCellAudit b = auditEyeCells(eyeCellsPro, stale, kEyeCellResolution, 3);
     std::printf("[ figure ] lists built one unit from the eye: %ld of %ld hits missing\n",
                 b.missing, b.hits);
     EXPECT_GT(b.missing, 0);
-    const Audit c = audit(pro, buildEyeCells(pro, eye), kEyeCellResolution / 2, 4);
+    const EyeCellAudit c =
+        auditEyeCells(eyeCellsPro, buildEyeCells(eyeCellsPro, eye), kEyeCellResolution / 2, 4);
     std::printf("[ figure ] lists looked up on a grid half as fine: %ld of %ld hits missing\n",
                 c.missing, c.hits);
     EXPECT_GT(c.missing, 0);
 }
 
 TEST(EyeCells, OnlyForScenesTheySuit) {
-    EXPECT_TRUE(eyeCellsSuit(demoScene("pro")));
-    EXPECT_FALSE(eyeCellsSuit(demoScene("mesh"))) << "mesh triangles stay in the BVH";
-    Scene none = demoScene("lite");
+    EXPECT_TRUE(eyeCellsSuit(eyeCellScene("pro")));
+    EXPECT_FALSE(eyeCellsSuit(eyeCellScene("mesh"))) << "mesh triangles stay in the BVH";
+    Scene none = eyeCellScene("lite");
     none.spheres.clear();
     EXPECT_FALSE(eyeCellsSuit(none));
 }

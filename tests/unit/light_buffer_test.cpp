@@ -26,7 +26,7 @@ using namespace raylab;
 
 namespace {
 
-Scene demoScene(const char* name) {
+Scene lightBufferScene(const char* name) {
     return loadScene(projectRoot() / "assets/scenes" / (std::string(name) + ".json"));
 }
 
@@ -51,7 +51,7 @@ bool segmentMeetsTriangle(glm::dvec3 o, glm::dvec3 d, double maxT, glm::dvec3 a,
     return u >= -slack && v >= -slack && u + v <= 1.0 + slack && t >= 0.0 && t <= maxT;
 }
 
-struct Audit {
+struct LightBufferAudit {
     long blockedRays = 0;  // (ray, object) pairs where the object blocks the ray
     long missing = 0;      // ... and the ray's cell does not list it (nor its shell's other faces)
     long blockedByTriangles = 0;
@@ -84,7 +84,8 @@ glm::dvec3 insideShell(const ConvexShell& shell, std::mt19937& rng) {
 
 // Shadow rays from points on the spheres and anywhere in the scene's reach
 // toward every light, with the spheres anywhere on their swing.
-Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution, unsigned seed) {
+LightBufferAudit auditLightBuffer(const Scene& scene, const LightBuffer& buffer,
+                                  int lookupResolution, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     auto randomDirection = [&] {
@@ -93,7 +94,7 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
         while (glm::length(v) > 1.0 || glm::length(v) < 1e-3);
         return glm::normalize(v);
     };
-    Audit a;
+    LightBufferAudit a;
     const double reach = buffer.reach;
     const std::vector<ConvexShell> shells = convexShells(scene);
     const std::vector<int> shellOf = shellOfTriangle(scene, shells);
@@ -163,7 +164,7 @@ Audit audit(const Scene& scene, const LightBuffer& buffer, int lookupResolution,
 
 void expectConservative(const char* name, const Scene& scene) {
     const LightBuffer buffer = buildLightBuffer(scene);
-    const Audit a = audit(scene, buffer, buffer.resolution, 1);
+    const LightBufferAudit a = auditLightBuffer(scene, buffer, buffer.resolution, 1);
     std::printf("[ figure ] %s: %d lights x 6 faces x %d^2 cells; a list that is not empty holds "
                 "%.2f objects on average, %d at most (of %zu spheres, %zu triangles); %ld blocked "
                 "shadow rays (%ld by triangles, %ld by a shell's face left out of a list that "
@@ -180,31 +181,32 @@ void expectConservative(const char* name, const Scene& scene) {
 }  // namespace
 
 TEST(LightBuffer, EveryBlockingSphereIsInTheRaysCell) {
-    expectConservative("pro", demoScene("pro"));
-    expectConservative("lite", demoScene("lite"));
+    expectConservative("pro", lightBufferScene("pro"));
+    expectConservative("lite", lightBufferScene("lite"));
 }
 
 // The margins are shares of the scene's size and distance from the origin,
 // so they hold for a scene resized or moved far away (the renderers draw
 // those in a standard frame, but the buffer does not rely on it).
 TEST(LightBuffer, EveryBlockingSphereIsInTheRaysCellAtAnyScaleAndPlace) {
-    const Scene pro = demoScene("pro");
+    const Scene lightBufferPro = lightBufferScene("pro");
     for (double scale : {1e-4, 1e6}) {
         SceneTransform t;
         t.scale = scale;
-        expectConservative(("pro x " + std::to_string(scale)).c_str(), transformScene(pro, t));
+        expectConservative(("pro x " + std::to_string(scale)).c_str(),
+                           transformScene(lightBufferPro, t));
     }
     SceneTransform far;
     far.offset = glm::dvec3(1e5, 0.0, 0.0);
-    expectConservative("pro moved by 1e5", transformScene(pro, far));
+    expectConservative("pro moved by 1e5", transformScene(lightBufferPro, far));
 }
 
 // The lists are short: that is the point of the buffer (pro's BVH walk
 // visits about 20 nodes per shadow ray).
 TEST(LightBuffer, ProsListsAreShort) {
-    const Scene pro = demoScene("pro");
+    const Scene lightBufferPro = lightBufferScene("pro");
     const auto start = std::chrono::steady_clock::now();
-    const LightBuffer buffer = buildLightBuffer(pro);
+    const LightBuffer buffer = buildLightBuffer(lightBufferPro);
     std::printf("[ figure ] pro's light buffer built in %.1f ms (a figure, not a check)\n",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count());
@@ -217,27 +219,30 @@ TEST(LightBuffer, ProsListsAreShort) {
 // moved 3 along x, leaving out a shell's faces the light sees instead of
 // those turned away, or looked up with the wrong grid, miss blockers.
 TEST(LightBuffer, AWrongBufferIsCaught) {
-    const Scene pro = demoScene("pro");
-    Scene smaller = pro;
+    const Scene lightBufferPro = lightBufferScene("pro");
+    Scene smaller = lightBufferPro;
     for (Sphere& s : smaller.spheres) s.radius *= 0.9;
-    const Audit shrunk = audit(pro, buildLightBuffer(smaller), kLightBufferResolution, 2);
+    const LightBufferAudit shrunk =
+        auditLightBuffer(lightBufferPro, buildLightBuffer(smaller), kLightBufferResolution, 2);
     std::printf("[ figure ] lists of spheres 10%% smaller: %ld of %ld blocked rays missing\n",
                 shrunk.missing, shrunk.blockedRays);
     EXPECT_GT(shrunk.missing, 0);
-    Scene movedTriangles = pro;
+    Scene movedTriangles = lightBufferPro;
     for (Triangle& t : movedTriangles.triangles)
         for (glm::dvec3& v : t.vertices) v.x += 3.0;
-    const Audit triangles = audit(pro, buildLightBuffer(movedTriangles), kLightBufferResolution, 4);
+    const LightBufferAudit triangles = auditLightBuffer(
+        lightBufferPro, buildLightBuffer(movedTriangles), kLightBufferResolution, 4);
     std::printf("[ figure ] lists of triangles moved 3 along x: %ld of %ld blocked rays missing\n",
                 triangles.missing, triangles.blockedRays);
     EXPECT_GT(triangles.missing, 0);
     // The cube turned inside out through its centre, each triangle onto the
     // face across: the lists leave out the faces the light sees.
-    Scene swapped = pro;
-    for (const ConvexShell& shell : convexShells(pro)) {
+    Scene swapped = lightBufferPro;
+    for (const ConvexShell& shell : convexShells(lightBufferPro)) {
         glm::dvec3 centre(0.0);
         for (int t : shell.triangles)
-            for (const glm::dvec3& v : pro.triangles[std::size_t(t)].vertices) centre += v;
+            for (const glm::dvec3& v : lightBufferPro.triangles[std::size_t(t)].vertices)
+                centre += v;
         centre /= 3.0 * double(shell.triangles.size());
         for (int t : shell.triangles) {
             auto& v = swapped.triangles[std::size_t(t)].vertices;
@@ -245,23 +250,25 @@ TEST(LightBuffer, AWrongBufferIsCaught) {
             std::swap(v[1], v[2]);  // still counter-clockwise from outside
         }
     }
-    ASSERT_EQ(convexShells(swapped).size(), convexShells(pro).size());
-    const Audit faces = audit(pro, buildLightBuffer(swapped), kLightBufferResolution, 5);
+    ASSERT_EQ(convexShells(swapped).size(), convexShells(lightBufferPro).size());
+    const LightBufferAudit faces =
+        auditLightBuffer(lightBufferPro, buildLightBuffer(swapped), kLightBufferResolution, 5);
     std::printf("[ figure ] lists that leave out the faces the lights see: %ld of %ld blocked "
                 "rays missing\n",
                 faces.missing, faces.blockedRays);
     EXPECT_GT(faces.missing, 0);
-    const LightBuffer buffer = buildLightBuffer(pro);
-    const Audit grid = audit(pro, buffer, kLightBufferResolution / 2, 3);
+    const LightBuffer buffer = buildLightBuffer(lightBufferPro);
+    const LightBufferAudit grid =
+        auditLightBuffer(lightBufferPro, buffer, kLightBufferResolution / 2, 3);
     std::printf("[ figure ] lists looked up on a grid half as fine: %ld of %ld missing\n",
                 grid.missing, grid.blockedRays);
     EXPECT_GT(grid.missing, 0);
 }
 
 TEST(LightBuffer, OnlyForScenesItSuits) {
-    EXPECT_TRUE(lightBufferSuits(demoScene("pro")));
-    EXPECT_FALSE(lightBufferSuits(demoScene("mesh"))) << "mesh triangles stay in the BVH";
-    Scene none = demoScene("lite");
+    EXPECT_TRUE(lightBufferSuits(lightBufferScene("pro")));
+    EXPECT_FALSE(lightBufferSuits(lightBufferScene("mesh"))) << "mesh triangles stay in the BVH";
+    Scene none = lightBufferScene("lite");
     none.spheres.clear();
     EXPECT_FALSE(lightBufferSuits(none));
 }

@@ -11,19 +11,19 @@ using namespace raylab;
 
 namespace {
 
-const std::string kMarked = "float f(vec3 a, float b)\n"                      // 1
-                            "{\n"                                             // 2
-                            "    if (b < 1.0) return 0.0;  // a < b\n"        // 3: not in a region
-                            "    // TODO(1.a): compute f\n"                   // 4
-                            "    //@solution\n"                               // 5
-                            "    if (b < 0.0) return -b;  // x + y\n"         // 6
-                            "    # define NOT_CODE 1 + 2\n"                   // 7
-                            "    /* a * b */ float c = min(a.x, 2.0) * b;\n"  // 8
-                            "    return length(normalize(a)) - c;\n"          // 9
-                            "    //@stub\n"                                   // 10
-                            "    //@ return 0.0;\n"                           // 11
-                            "    //@end\n"                                    // 12
-                            "}\n";
+const std::string kMutantMarked = "float f(vec3 a, float b)\n"                // 1
+                                  "{\n"                                       // 2
+                                  "    if (b < 1.0) return 0.0;  // a < b\n"  // 3: not in a region
+                                  "    // TODO(1.a): compute f\n"             // 4
+                                  "    //@solution\n"                         // 5
+                                  "    if (b < 0.0) return -b;  // x + y\n"   // 6
+                                  "    # define NOT_CODE 1 + 2\n"             // 7
+                                  "    /* a * b */ float c = min(a.x, 2.0) * b;\n"  // 8
+                                  "    return length(normalize(a)) - c;\n"          // 9
+                                  "    //@stub\n"                                   // 10
+                                  "    //@ return 0.0;\n"                           // 11
+                                  "    //@end\n"                                    // 12
+                                  "}\n";
 
 std::vector<std::string> ids(const std::vector<Mutant>& mutants) {
     std::vector<std::string> out;
@@ -34,7 +34,7 @@ std::vector<std::string> ids(const std::vector<Mutant>& mutants) {
 }  // namespace
 
 TEST(Mutants, SolutionLinesAreThoseBetweenSolutionAndStub) {
-    EXPECT_EQ(solutionLineNumbers(kMarked), (std::vector<int>{6, 7, 8, 9}));
+    EXPECT_EQ(solutionLineNumbers(kMutantMarked), (std::vector<int>{6, 7, 8, 9}));
 }
 
 TEST(Mutants, GeneratesTheExpectedMutantsOfTheSolutionCodeOnly) {
@@ -48,18 +48,18 @@ TEST(Mutants, GeneratesTheExpectedMutantsOfTheSolutionCodeOnly) {
         R"(f.glsl | return length(normalize(a)) - c; | "normalize(" -> "(")",
         R"(f.glsl | return length(normalize(a)) - c; | "-" -> "+")",
     };
-    EXPECT_EQ(ids(generateMutants("f.glsl", kMarked)), expected);
+    EXPECT_EQ(ids(generateMutants("f.glsl", kMutantMarked)), expected);
 }
 
 TEST(Mutants, AppliedMutantChangesOneTokenOfItsLine) {
-    const std::vector<Mutant> all = generateMutants("f.glsl", kMarked);
+    const std::vector<Mutant> all = generateMutants("f.glsl", kMutantMarked);
     ASSERT_EQ(all.size(), 8u);
-    std::string m = applyMutant(kMarked, all[6]);
+    std::string m = applyMutant(kMutantMarked, all[6]);
     EXPECT_NE(m.find("    return length((a)) - c;\n"), std::string::npos);
-    m = applyMutant(kMarked, all[2]);
+    m = applyMutant(kMutantMarked, all[2]);
     EXPECT_NE(m.find("    if (b < 0.0) return b;  // x + y\n"), std::string::npos);
     // Nothing else changed: undoing the one line gives the original.
-    EXPECT_EQ(m.size() + 1, kMarked.size());
+    EXPECT_EQ(m.size() + 1, kMutantMarked.size());
 }
 
 TEST(Mutants, OperatorsAndNumbers) {
@@ -90,15 +90,17 @@ TEST(Mutants, SameLineTwiceGetsAnOccurrenceNumber) {
 }
 
 TEST(Mutants, IdsDoNotDependOnLineNumbersOrComments) {
-    const std::string edited = "// a new first line\n" + kMarked;
-    std::string recommented = kMarked;
+    const std::string edited = "// a new first line\n" + kMutantMarked;
+    std::string recommented = kMutantMarked;
     recommented.replace(recommented.find("// x + y"), 8, "// another comment");
-    EXPECT_EQ(ids(generateMutants("f.glsl", edited)), ids(generateMutants("f.glsl", kMarked)));
-    EXPECT_EQ(ids(generateMutants("f.glsl", recommented)), ids(generateMutants("f.glsl", kMarked)));
+    EXPECT_EQ(ids(generateMutants("f.glsl", edited)),
+              ids(generateMutants("f.glsl", kMutantMarked)));
+    EXPECT_EQ(ids(generateMutants("f.glsl", recommented)),
+              ids(generateMutants("f.glsl", kMutantMarked)));
 }
 
 TEST(Mutants, SampleIsDeterministicAndKeepsTheOrder) {
-    const std::vector<Mutant> all = generateMutants("f.glsl", kMarked);
+    const std::vector<Mutant> all = generateMutants("f.glsl", kMutantMarked);
     const std::vector<Mutant> a = sampleMutants(all, 3, 7), b = sampleMutants(all, 3, 7);
     ASSERT_EQ(a.size(), 3u);
     EXPECT_EQ(ids(a), ids(b));

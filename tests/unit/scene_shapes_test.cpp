@@ -13,22 +13,22 @@ using raylab::test::writeFile;
 
 namespace {
 
-std::string sceneWith(const std::string& extra) {
+std::string shapesSceneWith(const std::string& extra) {
     return R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
                "materials": {"m": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10}},
                "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "m"}])" +
            (extra.empty() ? "" : ", " + extra) + "}";
 }
 
-Scene load(const ScratchDir& dir, const std::string& text) {
+Scene loadShapes(const ScratchDir& dir, const std::string& text) {
     writeFile(dir / "scene.json", text);
     return loadScene(dir / "scene.json");
 }
 
-std::string errorFor(const std::string& text) {
+std::string shapesErrorFor(const std::string& text) {
     ScratchDir dir;
     try {
-        load(dir, text);
+        loadShapes(dir, text);
     } catch (const Error& e) {
         std::string msg = e.what();
         EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
@@ -46,9 +46,9 @@ glm::dvec3 normalOf(const Triangle& t) {
 
 TEST(SceneShapes, PlanesAndDiscsHaveUnitNormals) {
     ScratchDir dir;
-    Scene s = load(
+    Scene s = loadShapes(
         dir,
-        sceneWith(
+        shapesSceneWith(
             R"("planes": [{"point": [0, -1, 0], "normal": [0, 2, 0], "material": "m", "tile_size": 3}],
                                     "discs": [{"center": [1, 2, 3], "normal": [0, 0, -5], "radius": 0.5, "material": "m"}])"));
     ASSERT_EQ(s.planes.size(), 1u);
@@ -60,9 +60,9 @@ TEST(SceneShapes, PlanesAndDiscsHaveUnitNormals) {
 
 TEST(SceneShapes, ARectangleIsTwoTrianglesFacingCrossOfItsEdges) {
     ScratchDir dir;
-    Scene s = load(
+    Scene s = loadShapes(
         dir,
-        sceneWith(
+        shapesSceneWith(
             R"("rectangles": [{"corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 3, 0], "material": "m"}])"));
     ASSERT_EQ(s.triangles.size(), 2u);
     for (const Triangle& t : s.triangles)
@@ -71,9 +71,9 @@ TEST(SceneShapes, ARectangleIsTwoTrianglesFacingCrossOfItsEdges) {
 
 TEST(SceneShapes, ABoxIsTwelveTrianglesAllFacingOutward) {
     ScratchDir dir;
-    Scene s = load(
+    Scene s = loadShapes(
         dir,
-        sceneWith(
+        shapesSceneWith(
             R"("boxes": [{"center": [1, 2, 3], "size": [2, 4, 6], "rotation_y": 30, "material": "m"}])"));
     ASSERT_EQ(s.triangles.size(), 12u);
     const glm::dvec3 center(1, 2, 3);
@@ -85,9 +85,9 @@ TEST(SceneShapes, ABoxIsTwelveTrianglesAllFacingOutward) {
 
 TEST(SceneShapes, ATorusSpinsItsAxisAboutTheSpinAxis) {
     ScratchDir dir;
-    Scene s = load(
+    Scene s = loadShapes(
         dir,
-        sceneWith(
+        shapesSceneWith(
             R"("tori": [{"center": [0, 0, 0], "axis": [1, 0, 0], "major_radius": 1, "minor_radius": 0.3,
                                                "material": "m", "spin": {"axis": [0, 1, 0], "period": 4}}])"));
     ASSERT_EQ(s.tori.size(), 1u);
@@ -102,7 +102,7 @@ TEST(SceneShapes, TexturesAreLayersSharedBetweenMaterials) {
     writeFile(dir / "a.png",
               "not really a png: only its existence is checked when the scene loads");
     writeFile(dir / "b.png", "x");
-    Scene s = load(
+    Scene s = loadShapes(
         dir, R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
         "materials": {
           "one": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "texture": "a.png", "normal_map": "b.png"},
@@ -115,53 +115,54 @@ TEST(SceneShapes, TexturesAreLayersSharedBetweenMaterials) {
 }
 
 TEST(SceneShapes, BadShapesAndMissingFilesAreOneLineErrorsThatSayWhere) {
+    EXPECT_NE(shapesErrorFor(
+                  shapesSceneWith(
+                      R"("planes": [{"point": [0, 0, 0], "normal": [0, 0, 0], "material": "m"}])"))
+                  .find("planes[0].normal: expected a direction"),
+              std::string::npos);
     EXPECT_NE(
-        errorFor(
-            sceneWith(R"("planes": [{"point": [0, 0, 0], "normal": [0, 0, 0], "material": "m"}])"))
-            .find("planes[0].normal: expected a direction"),
-        std::string::npos);
-    EXPECT_NE(
-        errorFor(
-            sceneWith(
+        shapesErrorFor(
+            shapesSceneWith(
                 R"("discs": [{"center": [0, 0, 0], "normal": [0, 1, 0], "radius": -1, "material": "m"}])"))
             .find("discs[0].radius: expected a positive number"),
         std::string::npos);
     EXPECT_NE(
-        errorFor(
-            sceneWith(
+        shapesErrorFor(
+            shapesSceneWith(
                 R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "material": "m"}])"))
             .find("triangles[0]: degenerate"),
         std::string::npos);
+    EXPECT_NE(shapesErrorFor(
+                  shapesSceneWith(
+                      R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1]], "material": "m"}])"))
+                  .find("triangles[0].vertices: expected three"),
+              std::string::npos);
+    EXPECT_NE(shapesErrorFor(
+                  shapesSceneWith(
+                      R"("boxes": [{"center": [0, 0, 0], "size": [1, 0, 1], "material": "m"}])"))
+                  .find("boxes[0].size: every side must be positive"),
+              std::string::npos);
     EXPECT_NE(
-        errorFor(
-            sceneWith(R"("triangles": [{"vertices": [[0, 0, 0], [1, 1, 1]], "material": "m"}])"))
-            .find("triangles[0].vertices: expected three"),
-        std::string::npos);
-    EXPECT_NE(
-        errorFor(
-            sceneWith(R"("boxes": [{"center": [0, 0, 0], "size": [1, 0, 1], "material": "m"}])"))
-            .find("boxes[0].size: every side must be positive"),
-        std::string::npos);
-    EXPECT_NE(
-        errorFor(
-            sceneWith(
+        shapesErrorFor(
+            shapesSceneWith(
                 R"("tori": [{"center": [0, 0, 0], "axis": [0, 1, 0], "major_radius": 1, "minor_radius": 2, "material": "m"}])"))
             .find("tori[0]: minor_radius must be smaller"),
         std::string::npos);
+    EXPECT_NE(shapesErrorFor(shapesSceneWith(R"("planes": {"point": [0, 0, 0]})"))
+                  .find("planes: expected a list"),
+              std::string::npos);
+    EXPECT_NE(shapesErrorFor(shapesSceneWith(R"("sky_box": ["a.png"])"))
+                  .find("sky_box: expected six image files"),
+              std::string::npos);
     EXPECT_NE(
-        errorFor(sceneWith(R"("planes": {"point": [0, 0, 0]})")).find("planes: expected a list"),
-        std::string::npos);
-    EXPECT_NE(
-        errorFor(sceneWith(R"("sky_box": ["a.png"])")).find("sky_box: expected six image files"),
-        std::string::npos);
-    EXPECT_NE(
-        errorFor(sceneWith(R"("sky_box": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"])"))
+        shapesErrorFor(
+            shapesSceneWith(R"("sky_box": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"])"))
             .find("sky_box[0]: file"),
         std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("glow": {"sphere": 7})"))
+    EXPECT_NE(shapesErrorFor(shapesSceneWith(R"("glow": {"sphere": 7})"))
                   .find("glow.sphere: expected the index of a sphere"),
               std::string::npos);
-    std::string missing = errorFor(
+    std::string missing = shapesErrorFor(
         R"({"background": [0, 0, 0], "camera": {"position": [0, 1, 5], "yaw": 0, "pitch": 0},
         "materials": {"earth": {"ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 10, "texture": "nowhere.png"}},
         "spheres": []})");
@@ -171,14 +172,15 @@ TEST(SceneShapes, BadShapesAndMissingFilesAreOneLineErrorsThatSayWhere) {
 
 TEST(SceneShapes, UnknownKeysAndTexturesWhereTheyCannotGoAreErrors) {
     EXPECT_NE(
-        errorFor(
-            sceneWith(
+        shapesErrorFor(
+            shapesSceneWith(
                 R"("planes": [{"point": [0, 0, 0], "normal": [0, 1, 0], "material": "m", "tile_szie": 2}])"))
             .find("planes[0].tile_szie: unknown key"),
         std::string::npos);
-    EXPECT_NE(errorFor(sceneWith(R"("glwo": {"sphere": 0})")).find("glwo: unknown key"),
+    EXPECT_NE(shapesErrorFor(shapesSceneWith(R"("glwo": {"sphere": 0})")).find("glwo: unknown key"),
               std::string::npos);
-    EXPECT_EQ(errorFor(sceneWith(R"("comment": "comments are fine anywhere")")), "(no error)");
+    EXPECT_EQ(shapesErrorFor(shapesSceneWith(R"("comment": "comments are fine anywhere")")),
+              "(no error)");
     ScratchDir dir;
     writeFile(dir / "n.png", "x");
     const std::string bumpy =

@@ -14,12 +14,12 @@ using namespace raylab;
 namespace {
 
 Scene lite() { return loadScene(projectRoot() / "assets/scenes/lite.json"); }
-Scene pro() { return loadScene(projectRoot() / "assets/scenes/pro.json"); }
+Scene transformPro() { return loadScene(projectRoot() / "assets/scenes/pro.json"); }
 
 }  // namespace
 
 TEST(SceneTransform, MovesEveryLengthAndPosition) {
-    const Scene a = pro();
+    const Scene a = transformPro();
     const SceneTransform t{4.0, glm::dvec3(8.0, -16.0, 32.0)};  // exact
     const Scene b = transformScene(a, t);
     auto moved = [&](const glm::dvec3& p) { return p * 4.0 + glm::dvec3(8.0, -16.0, 32.0); };

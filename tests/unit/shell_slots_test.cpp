@@ -25,7 +25,7 @@ using namespace raylab;
 
 namespace {
 
-Scene pro() { return loadScene(projectRoot() / "assets/scenes/pro.json"); }
+Scene slotsPro() { return loadScene(projectRoot() / "assets/scenes/pro.json"); }
 
 constexpr double kTMin = 1e-4;  // ray.glsl's T_MIN
 
@@ -55,7 +55,7 @@ int chosen(const ShellSlot& s, glm::vec3 origin, glm::vec3 dir, Rule rule) {
     return isTop ? s.topTriangle : s.bottomTriangle;
 }
 
-struct Audit {
+struct SlotAudit {
     long rays = 0, hits = 0, lost = 0;
     long atTMin = 0;  // first hits at T_MIN, within rounding: either answer
 };
@@ -64,8 +64,8 @@ struct Audit {
 // (moved off them to either side by up to 256 float steps, as
 // ray_offset.glsl moves a ray that leaves them) and from anywhere around
 // the cube; half aimed at a point in the cube, half anywhere.
-Audit audit(const Scene& scene, const std::vector<TriangleGroup>& groups,
-            const std::vector<std::vector<ShellSlot>>& slots, Rule rule) {
+SlotAudit auditSlots(const Scene& scene, const std::vector<TriangleGroup>& groups,
+                     const std::vector<std::vector<ShellSlot>>& slots, Rule rule) {
     std::size_t g = 0;
     while (g < slots.size() && slots[g].empty()) ++g;
     const TriangleGroup& group = groups.at(g);
@@ -79,7 +79,7 @@ Audit audit(const Scene& scene, const std::vector<TriangleGroup>& groups,
         while (glm::length(v) > 1.0 || glm::length(v) < 1e-3);
         return glm::normalize(v);
     };
-    Audit a;
+    SlotAudit a;
     for (int sample = 0; sample < 40000; ++sample) {
         glm::dvec3 p;
         switch (sample % 4) {
@@ -139,7 +139,7 @@ Audit audit(const Scene& scene, const std::vector<TriangleGroup>& groups,
 }  // namespace
 
 TEST(ShellSlots, ProsCubeHasThreePairsOfFaces) {
-    const Scene scene = pro();
+    const Scene scene = slotsPro();
     const std::vector<TriangleGroup> groups = triangleGroups(scene);
     const std::vector<std::vector<ShellSlot>> slots = shellSlots(scene, groups);
     ASSERT_EQ(slots.size(), groups.size());
@@ -167,7 +167,7 @@ TEST(ShellSlots, ProsCubeHasThreePairsOfFaces) {
 }
 
 TEST(ShellSlots, OnlyBoxLikeClosedShells) {
-    Scene open = pro();
+    Scene open = slotsPro();
     const auto groupsOf = [](const Scene& s) { return triangleGroups(s); };
     // An open box: one triangle gone.
     for (std::size_t i = 0; i < open.triangles.size(); ++i)
@@ -177,27 +177,27 @@ TEST(ShellSlots, OnlyBoxLikeClosedShells) {
         }
     EXPECT_FALSE(hasShellSlots(open, groupsOf(open)));
     // A closed convex shell whose faces have no opposite: a tetrahedron.
-    Scene tetra = pro();
+    Scene tetra = slotsPro();
     tetra.triangles.clear();
     const glm::dvec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, 0, 1);
     for (const auto& corners :
          {std::array<glm::dvec3, 3>{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d}}) {
-        Triangle t = pro().triangles.front();
+        Triangle t = slotsPro().triangles.front();
         t.vertices = corners;
         tetra.triangles.push_back(t);
     }
     ASSERT_EQ(convexShells(tetra).size(), 1u) << "a closed convex shell all the same";
     EXPECT_FALSE(hasShellSlots(tetra, groupsOf(tetra)));
     // No triangles at all.
-    Scene none = pro();
+    Scene none = slotsPro();
     none.triangles.clear();
     EXPECT_FALSE(hasShellSlots(none, groupsOf(none)));
 }
 
 TEST(ShellSlots, EveryFirstHitIsAmongTheSlots) {
-    const Scene scene = pro();
+    const Scene scene = slotsPro();
     const std::vector<TriangleGroup> groups = triangleGroups(scene);
-    const Audit a = audit(scene, groups, shellSlots(scene, groups), Rule::Slots);
+    const SlotAudit a = auditSlots(scene, groups, shellSlots(scene, groups), Rule::Slots);
     std::printf("[ figure ] pro's cube: %ld rays, %ld meet it, %ld first hits lost by the slots, "
                 "%ld within rounding of T_MIN (either answer)\n",
                 a.rays, a.hits, a.lost, a.atTMin);
@@ -211,11 +211,11 @@ TEST(ShellSlots, EveryFirstHitIsAmongTheSlots) {
 // just outside a face and cross it before T_MIN (a ball resting on the
 // cube, say), whose first hit is where they leave.
 TEST(ShellSlots, AWrongChoiceIsCaught) {
-    const Scene scene = pro();
+    const Scene scene = slotsPro();
     const std::vector<TriangleGroup> groups = triangleGroups(scene);
     const auto slots = shellSlots(scene, groups);
-    const Audit top = audit(scene, groups, slots, Rule::AlwaysTop);
-    const Audit side = audit(scene, groups, slots, Rule::IgnoringTMin);
+    const SlotAudit top = auditSlots(scene, groups, slots, Rule::AlwaysTop);
+    const SlotAudit side = auditSlots(scene, groups, slots, Rule::IgnoringTMin);
     std::printf("[ figure ] always the top face: %ld of %ld first hits lost; the origin's side "
                 "only: %ld lost\n",
                 top.lost, top.hits, side.lost);

@@ -40,7 +40,7 @@ const char* kProgram =
     "    fragColor = vec4(trace(Ray(vec3(0.0), vec3(0.0, 0.0, -1.0))), 1.0);\n"
     "}\n";
 
-std::string errorOf(const std::string& text) {
+std::string traceErrorOf(const std::string& text) {
     try {
         recordTrace(assembledFrom("m.frag", text));
     } catch (const Error& e) { return e.what(); }
@@ -87,9 +87,10 @@ TEST(TraceRecording, RecordsEveryCallWithItsSite) {
 }
 
 TEST(TraceRecording, NamesWhatItCannotRecord) {
-    EXPECT_EQ(errorOf("void main() {}\n"),
+    EXPECT_EQ(traceErrorOf("void main() {}\n"),
               "the program defines no findClosest() whose calls to record");
-    EXPECT_EQ(errorOf("struct Ray { vec3 o; }; struct Hit { float t; };\n"
-                      "bool findClosest(Ray r, out Hit h) { return false; }\nvoid main() {}\n"),
-              "the program calls findClosest() nowhere: no path to record");
+    EXPECT_EQ(
+        traceErrorOf("struct Ray { vec3 o; }; struct Hit { float t; };\n"
+                     "bool findClosest(Ray r, out Hit h) { return false; }\nvoid main() {}\n"),
+        "the program calls findClosest() nowhere: no path to record");
 }

@@ -77,9 +77,7 @@ TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
         const SourceLine w = e.vertex.where(++line);
         if (w.file != "g.geom") continue;
         ++fromGeom;
-        if (w.line == 8) {
-            EXPECT_EQ(l, "void raylab_geometryMain()");
-        }
+        if (w.line == 8) { EXPECT_EQ(l, "void raylab_geometryMain()"); }
     }
     EXPECT_EQ(fromGeom, 12);
 }

@@ -135,6 +135,36 @@ TEST(Demo, FurTrackDrawsBothTechniquesOnEachSceneAndTimesThem) {
     EXPECT_EQ(entries(dir / "fur"), 4);
 }
 
+// --emulate-geometry draws the page's way (the geometry shaders rewritten
+// into vertex shaders): the same pictures as the real geometry shaders'
+// (tests/fur/geometry_emulation_draw_test.cpp compares them closely), and
+// the ray tracer, which has none, refuses it.
+TEST(Demo, FurTrackEmulatesTheGeometryShadersAsThePageDoes) {
+    ScratchDir dir;
+    const std::string common = "--track fur --headless --frames 1 --size 80x60 --scene torus ";
+    CommandResult real = demoIn(dir, common + "--out real");
+    ASSERT_EQ(real.exitCode, 0) << real.all();
+    CommandResult r = demoIn(dir, common + "--out emulated --emulate-geometry");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("geometry shaders emulated as in the page"), std::string::npos) << r.out;
+    EXPECT_EQ(real.out.find("emulated"), std::string::npos) << real.out;
+    for (const char* picture :
+         {"torus-shells_and_fins-frame-000.png", "torus-fur_shader-frame-000.png"}) {
+        CommandResult same = runRaylab("compare " + quote((dir / "real" / picture).string()) + " " +
+                                       quote((dir / "emulated" / picture).string()));
+        EXPECT_EQ(same.exitCode, 0) << picture << ": " << same.all();
+    }
+    CommandResult differ =
+        runRaylab("compare " + quote((dir / "real/torus-shells_and_fins-frame-000.png").string()) +
+                  " " + quote((dir / "emulated/torus-fur_shader-frame-000.png").string()));
+    EXPECT_NE(differ.exitCode, 0) << "control: the two techniques told apart";
+    r = demoIn(dir, "--headless --frames 1 --size 80x60 --out rt --emulate-geometry");
+    EXPECT_EQ(r.exitCode, 2) << r.all();
+    EXPECT_EQ(r.err, "raylab: error: --emulate-geometry: only with --track fur (the ray tracer has "
+                     "no geometry shader)\n");
+    EXPECT_FALSE(fs::exists(dir / "rt"));
+}
+
 TEST(Demo, FurTrackRefusesABadSceneBeforeAnyFolderIsMade) {
     ScratchDir dir;
     writeFile(dir / "bad.json", "{\"background\": [0, 0, 0]}");

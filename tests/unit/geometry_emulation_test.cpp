@@ -58,11 +58,55 @@ TEST(GeometryEmulation, ReadsTheLayoutsAndTheVertexShadersOutputs) {
     EXPECT_EQ(e.captured, (std::vector<std::string>{"vPos", "vFlag"}));
     EXPECT_EQ(e.recordWords, 4);
     EXPECT_EQ(e.attributes, 4);  // 4 corners x 4 words
+    // An emission: its strip word, gl_Position and gUv, 7 words in 2 texels;
+    // one run of the body keeps all 4 (at most 16 texels a run).
+    EXPECT_EQ(e.emissionTexels, 2);
+    EXPECT_EQ(e.emissionsPerRun, 4);
+    EXPECT_EQ(e.runs, 1);
+    EXPECT_EQ(e.emitted.size(), 8u);
+}
+
+TEST(GeometryEmulation, RunsTheBodyOnceForAsManyEmissionsAsTransformFeedbackKeeps) {
+    // 5 words an emission (strip, gl_Position): 2 texels, 8 a run; 20
+    // emissions take 3 runs.
+    const EmulatedGeometry e = emulateGeometryShader(
+        kVertex,
+        assembledFrom("g.geom", "layout(points) in;\n"
+                                "layout(line_strip, max_vertices = 20) out;\n"
+                                "void main() { gl_Position = vec4(0.0); EmitVertex(); }\n"));
+    EXPECT_EQ(e.emissionTexels, 2);
+    EXPECT_EQ(e.emissionsPerRun, 8);
+    EXPECT_EQ(e.runs, 3);
+    EXPECT_EQ(e.emissionsPerPrimitive(), 24);
+    EXPECT_EQ(emissionTextureSize(e, 1000).rows, 47);  // 48000 texels
+    EXPECT_EQ(emissionTextureSize(e, 1000).layers, 1);
+    EXPECT_EQ(emissionTextureSize(e, 100000).rows, 1024);
+    EXPECT_EQ(emissionTextureSize(e, 100000).layers, 5);  // 4.8 M texels
+}
+
+TEST(GeometryEmulation, TheDrawDeclaresTheOutputsAsWritten) {
+    const EmulatedGeometry e = emulateGeometryShader(kVertex, assembledFrom("g.geom", kFins));
+    const std::string& t = e.draw.text;
+    EXPECT_NE(t.find("\nout vec2 gUv;\n"), std::string::npos) << t;
+    EXPECT_NE(t.find("flat out int raylab_kept;"), std::string::npos) << t;
+    // Its line names the student's: a mismatch with the fragment shader is theirs.
+    std::istringstream in(t);
+    int line = 0, found = 0;
+    for (std::string l; std::getline(in, l);)
+        if (++line, l == "out vec2 gUv;") {
+            found = line;
+            EXPECT_EQ(e.draw.where(line).file, "g.geom");
+            EXPECT_EQ(e.draw.where(line).line, 5);
+        }
+    EXPECT_GT(found, 0);
+    // In the expand it is a plain variable the body writes.
+    EXPECT_NE(e.expand.text.find("vec2 gUv;"), std::string::npos);
+    EXPECT_EQ(e.expand.text.find("out vec2 gUv"), std::string::npos);
 }
 
 TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
     const EmulatedGeometry e = emulateGeometryShader(kVertex, assembledFrom("g.geom", kFins));
-    const std::string& t = e.vertex.text;
+    const std::string& t = e.expand.text;
     // In a void function the body stops once its emissions are kept; in
     // another one the call stays a call.
     EXPECT_NE(t.find("{ if (raylab_emitVertex()) return; }"), std::string::npos) << t;
@@ -74,7 +118,7 @@ TEST(GeometryEmulation, RewritesTheCallsAndKeepsEveryLine) {
     std::istringstream in(t);
     int line = 0, fromGeom = 0;
     for (std::string l; std::getline(in, l);) {
-        const SourceLine w = e.vertex.where(++line);
+        const SourceLine w = e.expand.where(++line);
         if (w.file != "g.geom") continue;
         ++fromGeom;
         if (w.line == 8) { EXPECT_EQ(l, "void raylab_geometryMain()"); }

@@ -52,6 +52,9 @@ std::string frameName(int i) {
 
 int cmdDemo(const DemoOptions& demo) {
     if (demo.track == "fur") return cmdDemoFur(demo);
+    if (demo.emulateGeometry)
+        throw Error("--emulate-geometry: only with --track fur (the ray tracer has no geometry "
+                    "shader)");
     if (demo.track != "raytrace")
         throw Error("--track must be raytrace or fur (not '" + demo.track + "')");
     const StageInfo& stage = demo.stage.empty() ? demoStage() : findStage(demo.stage);
@@ -152,6 +155,10 @@ Command demoCommand() {
             cmd.add_flag("--no-bvh", demo->noBvh,
                          "stage 08: test every sphere for every ray instead of walking the BVH "
                          "(used from 32 spheres on)");
+            cmd.add_flag("--emulate-geometry", demo->emulateGeometry,
+                         "--track fur, headless: draw fins and strands as the page does (the "
+                         "geometry shaders rewritten into vertex shaders), to time that way "
+                         "against the real geometry shaders");
             auto backend = std::make_shared<BackendOption>(cmd);
             return std::function<int()>([=] {
                 demo->backend = backend->resolve();

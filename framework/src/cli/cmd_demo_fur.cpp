@@ -2,7 +2,8 @@
 // meshes. With a display, the window on the last fur stage (T switches the
 // technique, M the mesh); without one (or with --headless), a few frames of
 // each scene turning, drawn with shells + fins and with the fur shader,
-// written to PNG files and timed side by side.
+// written to PNG files and timed side by side (--emulate-geometry: the fins
+// and strands drawn as the page draws them, core/geometry_emulation.h).
 #include "command.h"
 #include "commands.h"
 #include "error.h"
@@ -60,7 +61,7 @@ int cmdDemoFur(const DemoOptions& demo) {
     options.size = demo.size;
     options.scene = furSceneFile(names.front()).string();
     StageSetup setup = resolveStageOptions(options);
-    if (displayAvailable() && !demo.headless) {
+    if (displayAvailable() && !demo.headless && !demo.emulateGeometry) {
         if (windowBuiltIn()) {
             std::printf("raylab: fur demo of stage %s in a window (T: shells + fins / fur shader, "
                         "M: mesh, [ ]: shells, F: fins; Esc quits; --headless renders to files)\n",
@@ -74,17 +75,20 @@ int cmdDemoFur(const DemoOptions& demo) {
     // Meshes and shaders too are ready before the output folder is made, so
     // that a bad OBJ file leaves nothing behind.
     std::vector<std::unique_ptr<FurRenderer>> renderers;
-    for (const auto& named : scenes)
+    for (const auto& named : scenes) {
         renderers.push_back(std::make_unique<FurRenderer>(stage, setup.sources, named.second,
                                                           setup.size.width, setup.size.height));
+        if (demo.emulateGeometry) renderers.back()->setGeometryEmulation(true);
+    }
     const std::filesystem::path outDir = outputFolder(demo);
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec || !std::filesystem::is_directory(outDir))
         throw Error("--out '" + outDir.string() + "': cannot create the folder");
-    std::printf("raylab demo --track fur: stage %s, %dx%d, %s backend, %s\n", stage.id.c_str(),
+    std::printf("raylab demo --track fur: stage %s, %dx%d, %s backend, %s%s\n", stage.id.c_str(),
                 setup.size.width, setup.size.height, context->backendName().c_str(),
-                glDescription().c_str());
+                glDescription().c_str(),
+                demo.emulateGeometry ? "; geometry shaders emulated as in the page" : "");
     const float step = 0.25f;  // seconds of turning between frames
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const auto& [name, scene] = scenes[k];

@@ -48,6 +48,7 @@ struct DemoOptions {
     bool noBvh = false;
     Backend backend = Backend::Auto;
     std::string track = "raytrace";  // "fur": cmd_demo_fur.cpp
+    bool emulateGeometry = false;    // fur: the page's way (core/geometry_emulation.h)
 };
 int cmdDemo(const DemoOptions& demo);
 int cmdDemoFur(const DemoOptions& demo);

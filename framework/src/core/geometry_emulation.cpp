@@ -33,15 +33,14 @@ std::string entryFile(const ShaderSource& source) {
                 "none); raylab run and check run it natively");
 }
 
-// The GLSL expression of a value of TYPE read from the captured words
-// starting at WORD (word w is component w % 4 of attribute raylab_in<w / 4>).
-std::string readWords(const std::string& type, int word) {
+// The GLSL expression of a value of TYPE read from 32-bit words starting at
+// WORD (word w is component w % 4 of the uvec4 <PREFIX><w / 4>).
+std::string readWords(const std::string& type, int word, const std::string& prefix) {
     const BasicType b = basicType(type);
     std::string words;
     for (int c = 0; c < b.components; ++c) {
         const int w = word + c;
-        words += (c ? ", " : "") + std::string("raylab_in") + std::to_string(w / 4) + "." +
-                 "xyzw"[w % 4];
+        words += (c ? ", " : "") + prefix + std::to_string(w / 4) + "." + "xyzw"[w % 4];
     }
     const std::string u =
         b.components == 1 ? words : "uvec" + std::to_string(b.components) + "(" + words + ")";
@@ -50,15 +49,142 @@ std::string readWords(const std::string& type, int word) {
     return u;
 }
 
+// The 32-bit words of NAME, a value of TYPE, one expression each.
+std::vector<std::string> wordsOf(const std::string& type, const std::string& name) {
+    const BasicType b = basicType(type);
+    std::vector<std::string> out;
+    for (int c = 0; c < b.components; ++c) {
+        const std::string v = b.components == 1 ? name : name + "." + std::string(1, "xyzw"[c]);
+        out.push_back(b.base == 'f'   ? "floatBitsToUint(" + v + ")"
+                      : b.base == 'i' ? "uint(" + v + ")"
+                                      : v);
+    }
+    return out;
+}
+
+// An output of the geometry shader: its type and name, and its declaration
+// as the student wrote it (for the draw).
+struct Output {
+    std::string type, name, declaration;
+    SourceLine from;
+};
+
+// The draw: the primitives of slot and corner gl_VertexID reads from the
+// emissions' texture, the outputs declared as the student did.
+ShaderSource drawShader(const EmulatedGeometry& e, const std::string& version,
+                        const std::vector<Output>& outputs) {
+    ShaderSource s;
+    int generated = 1;
+    appendGenerated(s, version, &generated);
+    appendGenerated(s, std::string("uniform highp usampler2DArray ") + kEmissionSampler + ";",
+                    &generated);
+    std::set<std::string> declared;
+    for (const Output& o : outputs)
+        if (declared.insert(o.declaration).second) appendLine(s, o.declaration, o.from);
+    const int v = e.verticesPerSlot, texels = e.emissionTexels;
+    const auto n = [](int i) { return std::to_string(i); };
+    const int perRun = e.emissionsPerRun;
+    std::string body = std::string("flat out int ") + kEmulationKeptOutput +
+                       ";\n"
+                       "uniform int " +
+                       kEmulationPrimitivesUniform +
+                       ";\n"
+                       "uvec4 raylab_texel(int t)\n{\n"
+                       "    return texelFetch(" +
+                       kEmissionSampler + ", ivec3(t % " + n(kEmissionTextureWidth) + ", (t / " +
+                       n(kEmissionTextureWidth) + ") % " + n(kEmissionLayerRows) + ", t / " +
+                       n(kEmissionTextureWidth * kEmissionLayerRows) +
+                       "), 0);\n"
+                       "}\n"
+                       "// The first texel of emission E of PRIMITIVE: the expand wrote run by\n"
+                       "// run, each run's primitives in order, " +
+                       n(perRun) + " emissions of " + n(texels) +
+                       " texels each.\n"
+                       "int raylab_emission(int primitive, int e)\n{\n"
+                       "    int run = e / " +
+                       n(perRun) +
+                       ";\n"
+                       "    return ((run * " +
+                       kEmulationPrimitivesUniform + " + primitive) * " + n(perRun) +
+                       " + e - run * " + n(perRun) + ") * " + n(texels) +
+                       ";\n"
+                       "}\n"
+                       "void main()\n{\n"
+                       "    int primitive = gl_VertexID / " +
+                       n(e.verticesPerPrimitive()) +
+                       ";\n"
+                       "    int vertex = gl_VertexID - primitive * " +
+                       n(e.verticesPerPrimitive()) +
+                       ";\n"
+                       "    int slot = vertex / " +
+                       n(v) + ", corner = vertex - slot * " + n(v) +
+                       ";\n"
+                       "    // A slot is a primitive made where its last emission is at least\n"
+                       "    // its vertices - 1 into its strip. That emission's first word:\n"
+                       "    // (strip + 1) * 4 + its place in the strip (0, 1, then 2 or 3 as\n"
+                       "    // the place is even or odd); 0 where the body made none.\n"
+                       "    uint last = raylab_texel(raylab_emission(primitive, slot + " +
+                       n(v - 1) +
+                       ")).x;\n"
+                       "    bool kept = last != 0u && (last & 3u) >= " +
+                       n(v - 1) + "u;\n";
+    if (e.output == EmulatedOutput::Triangles)
+        body += "    // The odd triangles of a strip swap their first two corners.\n"
+                "    bool odd = (last & 1u) == 1u;\n"
+                "    int at = raylab_emission(primitive, slot + (odd && corner < 2 ? 1 - corner : "
+                "corner));\n";
+    else body += "    int at = raylab_emission(primitive, slot + corner);\n";
+    body += "    // A primitive not made: a point outside the view.\n"
+            "    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n";
+    std::string read;
+    for (int a = 0; a < texels; ++a)
+        read += "        uvec4 raylab_w" + n(a) + " = raylab_texel(at + " + n(a) + ");\n";
+    read += "        gl_Position = " + readWords("vec4", 1, "raylab_w") + ";\n";
+    std::string zero;
+    int word = 5;
+    for (const Output& o : outputs) {
+        read += "        " + o.name + " = " + readWords(o.type, word, "raylab_w") + ";\n";
+        zero += "        " + o.name + " = " + o.type + "(0);\n";
+        word += basicType(o.type).components;
+    }
+    // Read only where kept: a run of slots not made costs no texel reads.
+    body += "    if (kept) {\n" + read + "    } else {\n" + zero + "    }\n";
+    body += "    " + std::string(kEmulationKeptOutput) + " = kept ? 1 : 0;\n}\n";
+    appendGenerated(s, body, &generated);
+    return s;
+}
+
 }  // namespace
 
 std::string EmulatedGeometry::json() const {
     static const char* const kOutputs[] = {"points", "lines", "triangles"};
-    return nlohmann::json{
-        {"input", inputName},         {"corners", corners},   {"recordWords", recordWords},
-        {"attributes", attributes},   {"captured", captured}, {"output", kOutputs[int(output)]},
-        {"maxVertices", maxVertices}, {"slots", slots},       {"verticesPerSlot", verticesPerSlot}}
+    return nlohmann::json{{"input", inputName},
+                          {"corners", corners},
+                          {"recordWords", recordWords},
+                          {"attributes", attributes},
+                          {"captured", captured},
+                          {"emitted", emitted},
+                          {"output", kOutputs[int(output)]},
+                          {"maxVertices", maxVertices},
+                          {"slots", slots},
+                          {"verticesPerSlot", verticesPerSlot},
+                          {"emissionTexels", emissionTexels},
+                          {"emissionsPerRun", emissionsPerRun},
+                          {"runs", runs},
+                          {"textureWidth", kEmissionTextureWidth},
+                          {"layerRows", kEmissionLayerRows},
+                          {"textureUnit", kEmissionTextureUnit}}
         .dump();
+}
+
+EmissionTextureSize emissionTextureSize(const EmulatedGeometry& e, long primitives) {
+    const long long texels =
+        std::max(1LL, (long long)primitives * e.emissionsPerPrimitive() * e.emissionTexels);
+    const long long rows = (texels + kEmissionTextureWidth - 1) / kEmissionTextureWidth;
+    EmissionTextureSize out;
+    out.layers = int((rows + kEmissionLayerRows - 1) / kEmissionLayerRows);
+    out.rows = int(std::min<long long>(rows, kEmissionLayerRows));
+    return out;
 }
 
 ShaderSource captureFragmentShader(const std::string& version) {
@@ -91,6 +217,7 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
 
     // The layouts, the inputs and the outputs.
     std::vector<GlslVarying> inputs, outputs;
+    std::vector<Output> declared;  // the outputs, for the draw
     int layoutLine = 0;
     for (const GlslStatement& s : fileScopeStatements(t)) {
         std::vector<std::string> words;
@@ -141,7 +268,25 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
             edits.push_back({from, to - from, keepingLines(text, from, to, decl)});
             continue;
         }
-        parseVaryings(t, s, "out", outputs, geometry);  // now the vertex shader's
+        const std::size_t outputsBefore = outputs.size();
+        if (parseVaryings(t, s, "out", outputs, geometry)) {
+            // The draw declares it as written; here it is a plain variable
+            // the body writes and each EmitVertex() reads.
+            std::string declaration, plain;
+            for (std::size_t k = s.begin; k < s.end; ++k) {
+                const std::string& w = t[k].text;
+                const bool space = k > s.begin && w != ";" && w != "," && w != ")" && w != "]" &&
+                                   t[k - 1].text != "(" && t[k - 1].text != "[";
+                declaration += (space ? " " : "") + w;
+            }
+            for (std::size_t k = outputsBefore; k < outputs.size(); ++k) {
+                plain += outputs[k].type + " " + outputs[k].name + "; ";
+                declared.push_back({outputs[k].type, outputs[k].name, declaration,
+                                    geometry.where(t[s.begin].line)});
+            }
+            const std::size_t from = t[s.begin].pos, to = t[s.end - 1].pos + 1;
+            edits.push_back({from, to - from, keepingLines(text, from, to, plain)});
+        }
     }
     if (!out.corners)
         throw Error(entryFile(geometry) + ": the geometry shader declares no input primitive "
@@ -234,8 +379,9 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
         for (std::size_t f = 0; f < fields.size(); ++f) {
             const std::string target =
                 fields[f].second == "gl_Position" ? "raylab_inPosition" : fields[f].second;
-            fill += "    " + target + "[" + std::to_string(c) +
-                    "] = " + readWords(fields[f].first, c * out.recordWords + offsets[f]) + ";\n";
+            fill += "    " + target + "[" + std::to_string(c) + "] = " +
+                    readWords(fields[f].first, c * out.recordWords + offsets[f], "raylab_in") +
+                    ";\n";
         }
     out.attributes = std::max(1, (out.corners * out.recordWords + 3) / 4);
     constexpr int kMaxAttributes = 16;  // WebGL 2's guaranteed vertex attributes
@@ -250,6 +396,23 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
                     std::to_string(4 * kMaxAttributes));
     out.slots = std::max(0, out.maxVertices - (out.verticesPerSlot - 1));
 
+    // An emission's words: its strip's, gl_Position, the outputs.
+    std::vector<std::string> words = {"raylab_head"};
+    for (const std::string& w : wordsOf("vec4", "gl_Position")) words.push_back(w);
+    for (const Output& o : declared)
+        for (const std::string& w : wordsOf(o.type, o.name)) words.push_back(w);
+    out.emissionTexels = int(words.size() + 3) / 4;
+    constexpr int kFeedbackTexels = 16;  // WebGL 2's least: 64 interleaved components
+    if (out.emissionTexels > kFeedbackTexels)
+        throw Error(at(geometry, layoutLine) + "the geometry shader's outputs take " +
+                    std::to_string(words.size() - 1) +
+                    " components per vertex with gl_Position; the page passes at most " +
+                    std::to_string(4 * kFeedbackTexels - 1));
+    out.emissionsPerRun = std::min(out.maxVertices, kFeedbackTexels / out.emissionTexels);
+    out.runs = (out.maxVertices + out.emissionsPerRun - 1) / out.emissionsPerRun;
+    const int texels = out.emissionTexels, perRun = out.emissionsPerRun;
+    for (int i = 0; i < perRun * texels; ++i) out.emitted.push_back("raylab_e" + std::to_string(i));
+
     const std::vector<std::string> lines = splitLines(applyEdits(text, std::move(edits)));
 
     // Declarations the body needs before its own code, after #version (and
@@ -263,75 +426,67 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     };
     if (readsPositions) head.push_back("vec4 raylab_inPosition[RAYLAB_CORNERS];");
 
-    // The wrapper: inputs in, the student's main, the kept emission out.
-    const int v = out.verticesPerSlot;
+    // The wrapper: inputs in, the student's main, this run's emissions out.
+    const auto str = [](int i) { return std::to_string(i); };
     std::string tail;
-    for (int a = 0; a < out.attributes; ++a)
-        tail += "in uvec4 raylab_in" + std::to_string(a) + ";\n";
-    tail += std::string("flat out int ") + kEmulationKeptOutput + ";\n";
-    tail += "int raylab_emitted = 0, raylab_strip = 0, raylab_stripStart = 0;\n"
-            "int raylab_first = 0, raylab_corner = 0, raylab_keep = -1;\n"
-            "int raylab_firstStrip = -1, raylab_lastStrip = -2;\n"
-            "vec4 raylab_keptPosition = vec4(0.0);\n";
-    std::string keep, give;
-    for (const GlslVarying& o : outputs) {
-        tail += o.type + " raylab_kept_" + o.name + " = " + o.type + "(0);\n";
-        keep += " raylab_kept_" + o.name + " = " + o.name + ";";
-        give += "    " + o.name + " = raylab_kept_" + o.name + ";\n";
+    for (int a = 0; a < out.attributes; ++a) tail += "in uvec4 raylab_in" + str(a) + ";\n";
+    for (const std::string& e : out.emitted) tail += "flat out uvec4 " + e + ";\n";
+    tail +=
+        "int raylab_emitted = 0, raylab_strip = 0, raylab_stripStart = 0, raylab_first = 0;\n"
+        "bool raylab_emitVertex()\n{\n"
+        "    int n = raylab_emitted;\n"
+        "    if (n >= " +
+        str(out.maxVertices) +
+        ") return true;\n"
+        "    raylab_emitted = n + 1;\n"
+        "    int k = n - raylab_first;\n"
+        "    if (k < 0) return false;\n"
+        "    if (k >= " +
+        str(perRun) +
+        ") return true;\n"
+        "    int place = n - raylab_stripStart;\n"
+        "    uint raylab_head = uint(raylab_strip + 1) * 4u + uint(place < 2 ? place : 2 + place % "
+        "2);\n";
+    for (int a = 0; a < texels; ++a) {
+        std::string w;
+        for (int c = 0; c < 4; ++c) {
+            const std::size_t i = std::size_t(4 * a + c);
+            w += (c ? ", " : "") + (i < words.size() ? words[i] : std::string("0u"));
+        }
+        tail += "    uvec4 w" + str(a) + " = uvec4(" + w + ");\n";
     }
-    tail += "bool raylab_emitVertex()\n{\n"
-            "    int n = raylab_emitted;\n"
-            "    if (n >= " +
-            std::to_string(out.maxVertices) +
-            ") return true;\n"
-            "    raylab_emitted = n + 1;\n"
-            "    if (n == raylab_first) {\n"
-            "        raylab_firstStrip = raylab_strip;\n";
-    if (out.output == EmulatedOutput::Triangles)
-        tail += "        // The odd triangles of a strip swap their first two corners.\n"
-                "        bool odd = (n - raylab_stripStart) % 2 == 1;\n"
-                "        raylab_keep = n + (odd && raylab_corner < 2 ? 1 - raylab_corner : "
-                "raylab_corner);\n";
-    else tail += "        raylab_keep = n + raylab_corner;\n";
-    tail += "    }\n"
-            "    if (n == raylab_keep) {" +
-            keep +
-            " raylab_keptPosition = gl_Position; }\n"
-            "    if (n == raylab_first + " +
-            std::to_string(v - 1) +
-            ") {\n"
-            "        raylab_lastStrip = raylab_strip;\n"
-            "        return true;\n"
-            "    }\n"
-            "    return false;\n"
+    // Separate outputs, each written at a constant place: an output array
+    // written at a run-time index is where softpipe goes wrong
+    // (docs/bench/README.md, "On Mesa's softpipe").
+    for (int k = 0; k < perRun; ++k) {
+        tail += std::string(k ? "    else if" : "    if") + " (k == " + str(k) + ") {";
+        for (int a = 0; a < texels; ++a)
+            tail += " raylab_e" + str(k * texels + a) + " = w" + str(a) + ";";
+        tail += " }\n";
+    }
+    tail += "    return k == " + str(perRun - 1) +
+            ";\n"
             "}\n"
             "void raylab_endPrimitive()\n{\n"
             "    raylab_strip += 1;\n"
             "    raylab_stripStart = raylab_emitted;\n"
             "}\n"
             "void main()\n{\n"
-            "    raylab_primitiveId = gl_InstanceID;\n"
-            "    raylab_first = gl_VertexID / " +
-            std::to_string(v) +
-            ";\n"
-            "    raylab_corner = gl_VertexID - " +
-            std::to_string(v) + " * raylab_first;\n" + fill +
-            "    raylab_geometryMain();\n"
-            "    bool kept = raylab_firstStrip >= 0 && raylab_firstStrip == raylab_lastStrip;\n" +
-            give +
-            "    // A primitive not made: a point outside the view.\n"
-            "    gl_Position = kept ? raylab_keptPosition : vec4(2.0, 2.0, 2.0, 1.0);\n"
-            "    " +
-            kEmulationKeptOutput +
-            " = kept ? 1 : 0;\n"
-            "}\n";
+            "    raylab_primitiveId = gl_VertexID;\n"
+            "    raylab_first = gl_InstanceID * " +
+            str(perRun) + ";\n" + fill;
+    for (const std::string& e : out.emitted) tail += "    " + e + " = uvec4(0u);\n";
+    tail +=
+        "    raylab_geometryMain();\n"
+        "    gl_Position = vec4(0.0);  // drawn nowhere: transform feedback keeps the emissions\n"
+        "}\n";
 
     // Assemble with the origin: line 1, its #extension lines, the head, the
     // body's other lines, the tail.
     std::size_t afterVersion = lines.empty() ? 0 : 1;
     while (afterVersion < lines.size() && lines[afterVersion].rfind("#extension", 0) == 0)
         ++afterVersion;
-    ShaderSource& s = out.vertex;
+    ShaderSource& s = out.expand;
     s.files = geometry.files;
     for (std::size_t i = 0; i < afterVersion; ++i)
         appendLine(s, lines[i], geometry.where(int(i) + 1));
@@ -340,6 +495,8 @@ EmulatedGeometry emulateGeometryShader(const ShaderSource& vertex, const ShaderS
     for (std::size_t i = afterVersion; i < lines.size(); ++i)
         appendLine(s, lines[i], geometry.where(int(i) + 1));
     appendGenerated(s, tail, &generated);
+    out.draw = drawShader(out, lines.empty() ? kGlslVersionLine : lines[0], declared);
+    out.draw.files = geometry.files;
     return out;
 }
 

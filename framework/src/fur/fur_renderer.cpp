@@ -173,6 +173,12 @@ void FurRenderer::setUniforms(const ShaderProgram& p, const Frame& f) const {
     glUniform1i(p.uniform("uFinMap"), kFinUnit);
 }
 
+void FurRenderer::setUniforms(const EmulatedGeometryPass& pass, const Frame& f) const {
+    setUniforms(pass.capture(), f);
+    setUniforms(pass.expand(), f);
+    setUniforms(pass.draw(), f);
+}
+
 void FurRenderer::drawSkinAndShells(const Frame& f, int shells) {
     const ShaderProgram& p = *shells_;
     setUniforms(p, f);
@@ -197,8 +203,7 @@ void FurRenderer::drawSkinAndShells(const Frame& f, int shells) {
 
 void FurRenderer::drawFins(const Frame& f) {
     if (finsEmulated_) {
-        setUniforms(finsEmulated_->capture(), f);
-        setUniforms(finsEmulated_->draw(), f);
+        setUniforms(*finsEmulated_, f);
     } else {
         setUniforms(*fins_, f);
     }
@@ -216,8 +221,7 @@ void FurRenderer::drawFins(const Frame& f) {
 
 void FurRenderer::drawStrands(const Frame& f) {
     if (strandsEmulated_) {
-        setUniforms(strandsEmulated_->capture(), f);
-        setUniforms(strandsEmulated_->draw(), f);
+        setUniforms(*strandsEmulated_, f);
         strandsEmulated_->run();
         return;
     }
@@ -309,8 +313,7 @@ long FurRenderer::countPrimitives(bool strands, const Frame& f) {
     EmulatedGeometryPass* emulated = strands ? strandsEmulated_.get() : finsEmulated_.get();
     long primitives = 0;
     if (emulated) {
-        setUniforms(emulated->capture(), f);
-        setUniforms(emulated->draw(), f);
+        setUniforms(*emulated, f);
         primitives = emulated->run(true);
     } else {
         GLuint query = 0;

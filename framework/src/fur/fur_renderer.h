@@ -83,6 +83,7 @@ private:
     struct Frame;  // the per-frame uniforms
     Frame frameFor(const Camera& camera, float timeSeconds, const RenderSettings& settings) const;
     void setUniforms(const ShaderProgram& p, const Frame& f) const;
+    void setUniforms(const EmulatedGeometryPass& pass, const Frame& f) const;  // its 3 programs
     void drawSkinAndShells(const Frame& f, int shells);
     void drawFins(const Frame& f);
     void drawStrands(const Frame& f);

@@ -23,8 +23,10 @@ public:
     EmulatedGeometryPass(const EmulatedGeometryPass&) = delete;
     EmulatedGeometryPass& operator=(const EmulatedGeometryPass&) = delete;
 
-    // Both programs read the stage's uniforms: the caller sets them on each.
+    // The capture and the expand read the stage's uniforms, the draw those
+    // of its outputs' fragment shader: the caller sets them on each.
     const ShaderProgram& capture() const { return *capture_; }
+    const ShaderProgram& expand() const { return *expand_; }
     const ShaderProgram& draw() const { return *draw_; }
     const EmulatedGeometry& layout() const { return layout_; }
 
@@ -33,16 +35,19 @@ public:
     void setCorners(const std::vector<float>& floats,
                     const std::vector<std::pair<int, int>>& attributes);
 
-    // Runs the vertex shader on the corners, then draws the primitives the
-    // geometry shader makes. With COUNT, draws nothing and returns how many
-    // primitives it made (transform feedback of raylab_kept).
+    // Runs the vertex shader on the corners, the geometry shader on their
+    // primitives, then draws the primitives it made. With COUNT, draws
+    // nothing and returns how many it made (transform feedback of
+    // raylab_kept). Leaves texture unit kEmissionTextureUnit bound.
     long run(bool count = false);
 
 private:
     EmulatedGeometry layout_;
-    std::unique_ptr<ShaderProgram> capture_, draw_;
-    GLuint cornerVao_ = 0, corners_ = 0, recordVao_ = 0, records_ = 0, kept_ = 0;
+    std::unique_ptr<ShaderProgram> capture_, expand_, draw_;
+    GLuint cornerVao_ = 0, corners_ = 0, recordVao_ = 0, records_ = 0, emptyVao_ = 0;
+    GLuint emissions_ = 0, emissionTexture_ = 0, kept_ = 0;
     long cornerCount_ = 0;
+    EmissionTextureSize textureSize_;
 };
 
 }  // namespace raylab

@@ -162,7 +162,8 @@ std::string mapLog(const std::string& log, const std::string& sourceJson) {
 json programsJson(const WebFurPrograms& p) {
     json out = {{"vertex", sourceJson(p.vertex)}, {"fragment", sourceJson(p.fragment)}};
     if (p.geometry) {
-        out["geometry"] = sourceJson(p.geometry->vertex);
+        out["geometry"] = sourceJson(p.geometry->expand);
+        out["geometryDraw"] = sourceJson(p.geometry->draw);
         out["captureFragment"] = sourceJson(p.captureFragment);
         out["emulation"] = json::parse(p.geometry->json());
     }

@@ -56,7 +56,8 @@ WebFurStage::WebFurStage(const std::string& stageId, const std::string& lab,
         out.vertex = asGlslEs300(vertex);
         if (!p.geometry.empty()) {
             out.geometry = emulateGeometryShader(vertex, assemble330(p.geometry));
-            out.geometry->vertex = asGlslEs300(out.geometry->vertex);
+            out.geometry->expand = asGlslEs300(out.geometry->expand);
+            out.geometry->draw = asGlslEs300(out.geometry->draw);
             out.captureFragment = asGlslEs300(captureFragmentShader());
         }
         out.fragment = assemble(p.fragment);

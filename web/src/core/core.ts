@@ -69,7 +69,7 @@ export interface FurStageInfo {
   // fins and strands: with their geometry shader's emulation (gl/emulated_geometry_pass.ts).
   programs: Record<'shells' | 'fins' | 'strands', {
     vertex: CoreSource; fragment: CoreSource;
-    geometry?: CoreSource; captureFragment?: CoreSource; emulation?: EmulationLayout;
+    geometry?: CoreSource; geometryDraw?: CoreSource; captureFragment?: CoreSource; emulation?: EmulationLayout;
   } | undefined>;
   todos: OpenTodo[];
   background: [number, number, number];

@@ -92,9 +92,10 @@ export class FurRenderer implements TrackRenderer {
     };
     const emulated = async (name: 'fins' | 'strands') => {
       const p = info.programs[name];
-      if (!p?.geometry || !p.captureFragment || !p.emulation) return null;
+      if (!p?.geometry || !p.geometryDraw || !p.captureFragment || !p.emulation) return null;
       const pass = await EmulatedGeometryPass.build(gl, core, {
-        vertex: p.vertex, fragment: p.fragment, geometry: p.geometry, captureFragment: p.captureFragment, emulation: p.emulation,
+        vertex: p.vertex, fragment: p.fragment, geometry: p.geometry, geometryDraw: p.geometryDraw,
+        captureFragment: p.captureFragment, emulation: p.emulation,
       });
       built.push(pass);
       return pass;
@@ -239,6 +240,7 @@ export class FurRenderer implements TrackRenderer {
 
   private setPassUniforms(pass: EmulatedGeometryPass, frame: Frame): void {
     this.setUniforms(pass.capture, frame);
+    this.setUniforms(pass.expand, frame);
     this.setUniforms(pass.draw, frame);
   }
 

@@ -6,11 +6,16 @@
 //  1. capture: the stage's vertex shader runs once per corner of every input
 //     primitive, its outputs kept by transform feedback (one record of
 //     recordWords words per corner);
-//  2. draw: the rewritten geometry shader runs once per (input primitive,
-//     output primitive slot, corner), one instance per input primitive, the
-//     primitive's records read as uvec4 attributes raylab_in0.. .
+//  2. expand: the rewritten geometry shader runs `runs` times per input
+//     primitive (a vertex per primitive, its records read as uvec4
+//     attributes raylab_in0.., an instance per run), each run keeping
+//     emissionsPerRun emissions by transform feedback;
+//  3. the emissions are copied into an RGBA32UI 2D array texture (the
+//     feedback buffer bound as the pixel unpack buffer);
+//  4. draw: one vertex per (input primitive, output primitive slot, corner),
+//     read from that texture, into the stage's fragment shader.
 // run(true) draws nothing and counts the primitives made instead (transform
-// feedback of the output raylab_kept): the fin count.
+// feedback of the draw's output raylab_kept): the fin count.
 import type { Core, CoreSource } from '../core/core.js';
 import { Program } from './program.js';
 
@@ -21,48 +26,68 @@ export interface EmulationLayout {
   recordWords: number;
   attributes: number;
   captured: string[];
+  emitted: string[];
   output: 'points' | 'lines' | 'triangles';
   maxVertices: number;
   slots: number;
   verticesPerSlot: number;
+  emissionTexels: number;
+  emissionsPerRun: number;
+  runs: number;
+  textureWidth: number;
+  layerRows: number;
+  textureUnit: number;
 }
 
 export interface EmulatedProgramSources {
   vertex: CoreSource;
   fragment: CoreSource;
-  geometry: CoreSource;         // the geometry shader as a vertex shader
-  captureFragment: CoreSource;  // writes nothing: the capture's link
+  geometry: CoreSource;         // the geometry shader as a vertex shader: its emissions out
+  geometryDraw: CoreSource;     // the primitives drawn from the emissions
+  captureFragment: CoreSource;  // writes nothing: the capture's and expand's link
   emulation: EmulationLayout;
 }
 
 export class EmulatedGeometryPass {
   private cornerVao: WebGLVertexArrayObject;
   private recordVao: WebGLVertexArrayObject;
+  private emptyVao: WebGLVertexArrayObject;
   private corners: WebGLBuffer;
   private records: WebGLBuffer;
+  private emissions: WebGLBuffer;
   private kept: WebGLBuffer;
+  private texture: WebGLTexture;
   private cornerCount = 0;
+  private rows = 0;
+  private layers = 0;
 
-  private constructor(private gl: WebGL2RenderingContext, readonly capture: Program, readonly draw: Program,
-    readonly layout: EmulationLayout) {
+  private constructor(private gl: WebGL2RenderingContext, readonly capture: Program, readonly expand: Program,
+    readonly draw: Program, readonly layout: EmulationLayout) {
     this.cornerVao = gl.createVertexArray()!;
     this.recordVao = gl.createVertexArray()!;
+    this.emptyVao = gl.createVertexArray()!;
     this.corners = gl.createBuffer()!;
     this.records = gl.createBuffer()!;
+    this.emissions = gl.createBuffer()!;
     this.kept = gl.createBuffer()!;
+    this.texture = gl.createTexture()!;
+    gl.useProgram(draw.id);
+    gl.uniform1i(gl.getUniformLocation(draw.id, 'raylab_emissions'), layout.textureUnit);
+    gl.useProgram(null);
   }
 
   // Throws ShaderError with the student's file and line.
   static async build(gl: WebGL2RenderingContext, core: Core, s: EmulatedProgramSources): Promise<EmulatedGeometryPass> {
-    const capture = await Program.build(gl, core, s.vertex, s.captureFragment, s.emulation.captured);
-    let draw: Program;
+    const built: Program[] = [];
     try {
-      draw = await Program.build(gl, core, s.geometry, s.fragment, ['raylab_kept']);
+      built.push(await Program.build(gl, core, s.vertex, s.captureFragment, s.emulation.captured));
+      built.push(await Program.build(gl, core, s.geometry, s.captureFragment, s.emulation.emitted));
+      built.push(await Program.build(gl, core, s.geometryDraw, s.fragment, ['raylab_kept']));
     } catch (e) {
-      capture.dispose();
+      for (const p of built) p.dispose();
       throw e;
     }
-    return new EmulatedGeometryPass(gl, capture, draw, s.emulation);
+    return new EmulatedGeometryPass(gl, built[0], built[1], built[2], s.emulation);
   }
 
   // The input primitives' corners one after the other: FLOATS per corner
@@ -80,51 +105,87 @@ export class EmulatedGeometryPass {
       gl.vertexAttribPointer(location, size, gl.FLOAT, false, 4 * perCorner, offset);
       offset += 4 * size;
     }
-    // One record per corner, read per primitive (16 bytes more: the last
-    // attribute may read past the last record).
+    // One record per corner, read per primitive, the expand's vertex (16
+    // bytes more: the last attribute may read past the last record).
     gl.bindBuffer(gl.ARRAY_BUFFER, this.records);
     gl.bufferData(gl.ARRAY_BUFFER, this.cornerCount * 4 * l.recordWords + 16, gl.DYNAMIC_COPY);
     gl.bindVertexArray(this.recordVao);
     for (let a = 0; a < l.attributes; ++a) {
-      const location = gl.getAttribLocation(this.draw.id, `raylab_in${a}`);
+      const location = gl.getAttribLocation(this.expand.id, `raylab_in${a}`);
       if (location < 0) continue;  // not read
       gl.enableVertexAttribArray(location);
       gl.vertexAttribIPointer(location, 4, gl.UNSIGNED_INT, 4 * l.corners * l.recordWords, 16 * a);
-      gl.vertexAttribDivisor(location, 1);
     }
     gl.bindVertexArray(null);
+    // The emissions (the core's emissionTextureSize): written by transform
+    // feedback, copied into the texture the draw reads.
+    const primitives = this.cornerCount / l.corners;
+    gl.useProgram(this.draw.id);
+    gl.uniform1i(gl.getUniformLocation(this.draw.id, 'raylab_primitives'), primitives);
+    gl.useProgram(null);
+    const texels = Math.max(1, primitives * l.runs * l.emissionsPerRun * l.emissionTexels);
+    const rows = Math.ceil(texels / l.textureWidth);
+    this.layers = Math.ceil(rows / l.layerRows);
+    this.rows = Math.min(rows, l.layerRows);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.emissions);
+    gl.bufferData(gl.ARRAY_BUFFER, 16 * l.textureWidth * this.rows * this.layers, gl.DYNAMIC_COPY);
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
+    gl.activeTexture(gl.TEXTURE0 + l.textureUnit);
+    gl.bindTexture(gl.TEXTURE_2D_ARRAY, this.texture);
+    gl.texImage3D(gl.TEXTURE_2D_ARRAY, 0, gl.RGBA32UI, l.textureWidth, this.rows, this.layers, 0,
+      gl.RGBA_INTEGER, gl.UNSIGNED_INT, null);
+    gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D_ARRAY, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.activeTexture(gl.TEXTURE0);
   }
 
-  // Both programs read the stage's uniforms: the caller sets them on each first.
+  // The three programs read the stage's uniforms: the caller sets them on each
+  // first. Leaves the emissions' texture bound to its unit.
   run(count = false): number {
     const gl = this.gl, l = this.layout;
     const primitives = this.cornerCount / l.corners;
     if (!primitives) return 0;
+    gl.enable(gl.RASTERIZER_DISCARD);
     // 1. The vertex shader per corner, its outputs kept.
     gl.useProgram(this.capture.id);
-    gl.enable(gl.RASTERIZER_DISCARD);
     gl.bindVertexArray(this.cornerVao);
     gl.bindBufferBase(gl.TRANSFORM_FEEDBACK_BUFFER, 0, this.records);
     gl.beginTransformFeedback(gl.POINTS);
     gl.drawArrays(gl.POINTS, 0, this.cornerCount);
     gl.endTransformFeedback();
+
+    // 2. The geometry shader's body: a vertex per input primitive, an
+    // instance per run, its emissions kept.
+    gl.useProgram(this.expand.id);
+    gl.bindVertexArray(this.recordVao);
+    gl.bindBufferBase(gl.TRANSFORM_FEEDBACK_BUFFER, 0, this.emissions);
+    gl.beginTransformFeedback(gl.POINTS);
+    gl.drawArraysInstanced(gl.POINTS, 0, primitives, l.runs);
+    gl.endTransformFeedback();
     gl.bindBufferBase(gl.TRANSFORM_FEEDBACK_BUFFER, 0, null);
     if (!count) gl.disable(gl.RASTERIZER_DISCARD);
 
-    // 2. The geometry shader per output primitive's corner.
+    // 3. The emissions into the texture the draw reads.
+    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, this.emissions);
+    gl.activeTexture(gl.TEXTURE0 + l.textureUnit);
+    gl.bindTexture(gl.TEXTURE_2D_ARRAY, this.texture);
+    gl.texSubImage3D(gl.TEXTURE_2D_ARRAY, 0, 0, 0, 0, l.textureWidth, this.rows, this.layers,
+      gl.RGBA_INTEGER, gl.UNSIGNED_INT, 0);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
+
+    // 4. The primitives, one vertex per (input primitive, slot, corner).
     const mode = l.output === 'points' ? gl.POINTS : l.output === 'lines' ? gl.LINES : gl.TRIANGLES;
-    const vertices = l.slots * l.verticesPerSlot;
+    const n = l.slots * l.verticesPerSlot * primitives;
     gl.useProgram(this.draw.id);
-    gl.bindVertexArray(this.recordVao);
+    gl.bindVertexArray(this.emptyVao);
     let made = 0;
     if (count) {
-      const n = vertices * primitives;
       gl.bindBuffer(gl.TRANSFORM_FEEDBACK_BUFFER, this.kept);
       gl.bufferData(gl.TRANSFORM_FEEDBACK_BUFFER, 4 * n, gl.DYNAMIC_READ);
       gl.bindBufferBase(gl.TRANSFORM_FEEDBACK_BUFFER, 0, this.kept);
       gl.beginTransformFeedback(mode);
-      gl.drawArraysInstanced(mode, 0, vertices, primitives);
+      gl.drawArrays(mode, 0, n);
       gl.endTransformFeedback();
       gl.bindBufferBase(gl.TRANSFORM_FEEDBACK_BUFFER, 0, null);
       gl.disable(gl.RASTERIZER_DISCARD);
@@ -135,7 +196,7 @@ export class EmulatedGeometryPass {
       for (const k of kept) made += k;
       made /= l.verticesPerSlot;
     } else {
-      gl.drawArraysInstanced(mode, 0, vertices, primitives);
+      gl.drawArrays(mode, 0, n);
     }
     gl.bindVertexArray(null);
     return made;
@@ -144,10 +205,11 @@ export class EmulatedGeometryPass {
   dispose(): void {
     const gl = this.gl;
     this.capture.dispose();
+    this.expand.dispose();
     this.draw.dispose();
-    gl.deleteVertexArray(this.cornerVao);
-    gl.deleteVertexArray(this.recordVao);
-    for (const b of [this.corners, this.records, this.kept]) gl.deleteBuffer(b);
+    for (const v of [this.cornerVao, this.recordVao, this.emptyVao]) gl.deleteVertexArray(v);
+    for (const b of [this.corners, this.records, this.emissions, this.kept]) gl.deleteBuffer(b);
+    gl.deleteTexture(this.texture);
   }
 }
 

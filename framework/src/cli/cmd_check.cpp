@@ -29,6 +29,19 @@ void markHandedOutViews(const StageInfo& stage, const std::vector<CheckView>& vi
                         const std::vector<bool>& viewPassed, std::vector<CheckCredit>& credits) {
     const std::size_t firstView = credits.size() - mine.size();
     if (std::all_of(viewPassed.begin(), viewPassed.end(), [](bool p) { return p; })) return;
+#ifdef RAYLAB_STUDENT_BUILD
+    // The handed-out lab's pictures as grading draws them (the earlier
+    // stages solved), shipped as data: the repository has no earlier
+    // stage's solution to draw them with (`raylab student-repo`).
+    (void)scene, (void)w, (void)h, (void)transform;
+    try {
+        const std::filesystem::path dir = projectRoot() / "course" / "handed-out" / stage.id;
+        for (std::size_t i = 0; i < mine.size(); ++i)
+            creditHandedOutView(credits[firstView + i], viewPassed[i], mine[i], expected[i],
+                                loadPng(dir / (views[i].name + ".png")));
+    } catch (const Error&) {  // no pictures to compare with: grading counts every view
+    }
+#else
     try {
         ViewRenderers handedOut(stage, labSources(stage, handedOutLabRoot()), scene, w, h,
                                 transform);
@@ -37,6 +50,7 @@ void markHandedOutViews(const StageInfo& stage, const std::vector<CheckView>& vi
                                 handedOut.render(views[i]));
     } catch (const Error&) {  // no handed-out lab to compare with: grading counts every view
     }
+#endif
 }
 
 // The checks a run does, of each kind (raylab check --checks).
@@ -90,7 +104,24 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     if (!insideCheckSandbox())
         return runCheckInSandbox(stage, setup.sources.labRoot,
                                  {check.timeoutSeconds, check.memoryMb, check.backend});
+#ifdef RAYLAB_STUDENT_BUILD
+    // No solution to render here: the reference pictures the repository
+    // ships (`raylab student-repo`), drawn at the check's own size.
+    const std::filesystem::path against = check.againstDir.empty()
+                                              ? projectRoot() / "course" / "references" / stage.id
+                                              : std::filesystem::path(check.againstDir);
+    if (check.againstDir.empty()) {
+        if (setup.size.width != 160 || setup.size.height != 120)
+            throw Error("--size " + options.size +
+                        ": this repository's reference pictures are 160x120 (leave --size out)");
+        if (!options.scene.empty() || !setup.transform.identity())
+            throw Error("--scene, --scene-scale and --scene-offset need pictures of the solution, "
+                        "which this repository does not hold (its references are of the "
+                        "stage's own views)");
+    }
+#else
     const std::filesystem::path against = check.againstDir;
+#endif
     std::error_code ec;
     if (!against.empty() && !std::filesystem::is_directory(against, ec))
         throw Error("--against '" + check.againstDir + "': folder does not exist");
@@ -193,36 +224,43 @@ int cmdCheck(const StageOptions& options, const CheckOptions& check) {
     return failed == 0 ? 0 : 1;
 }
 
+#ifdef RAYLAB_STUDENT_BUILD
+constexpr const char* kCheckAbout =
+    "check a stage against the course's reference pictures and expected values";
+#else
+constexpr const char* kCheckAbout = "check a stage against the solution from several camera views";
+#endif
+
 Command checkCommand() {
-    return {
-        "check", "check a stage against the solution from several camera views", [](CLI::App& cmd) {
-            auto stage = std::make_shared<StageOptions>();
-            auto check = std::make_shared<CheckOptions>();
-            stage->size = "160x120";
-            CLI::Option* lab = addStageOptions(cmd, *stage, false);
-            addSceneTransformOptions(cmd, *stage);
-            cmd.add_option("--against", check->againstDir,
-                           "compare with DIR/<view>.png instead of the solution rendered now");
-            cmd.add_option("--save", check->saveDir, "write the checked images to DIR/<view>.png");
-            cmd.add_option("--timeout", check->timeoutSeconds,
-                           "stop the check after this many seconds (default 600)")
-                ->check(CLI::PositiveNumber);
-            cmd.add_option("--course", check->courseFile,
-                           "score with a course file's weights (raylab grade --course)");
-            cmd.add_option("--checks", check->only,
-                           "comma-separated: run only these checks, by the names the report "
-                           "prints (views, function and count checks; default: all)")
-                ->delimiter(',');
-            cmd.add_option("--memory-mb", check->memoryMb,
-                           "limit the check's address space, as grading does (default: none)")
-                ->check(CLI::NonNegativeNumber);
-            auto backend = std::make_shared<BackendOption>(cmd);
-            return std::function<int()>([=] {
-                check->backend = backend->resolve();
-                stage->labGiven = lab->count() > 0;
-                return cmdCheck(*stage, *check);
-            });
-        }};
+    return {"check", kCheckAbout, [](CLI::App& cmd) {
+                auto stage = std::make_shared<StageOptions>();
+                auto check = std::make_shared<CheckOptions>();
+                stage->size = "160x120";
+                CLI::Option* lab = addStageOptions(cmd, *stage, false);
+                addSceneTransformOptions(cmd, *stage);
+                cmd.add_option("--against", check->againstDir,
+                               "compare with DIR/<view>.png instead of the solution rendered now");
+                cmd.add_option("--save", check->saveDir,
+                               "write the checked images to DIR/<view>.png");
+                cmd.add_option("--timeout", check->timeoutSeconds,
+                               "stop the check after this many seconds (default 600)")
+                    ->check(CLI::PositiveNumber);
+                cmd.add_option("--course", check->courseFile,
+                               "score with a course file's weights (raylab grade --course)");
+                cmd.add_option("--checks", check->only,
+                               "comma-separated: run only these checks, by the names the report "
+                               "prints (views, function and count checks; default: all)")
+                    ->delimiter(',');
+                cmd.add_option("--memory-mb", check->memoryMb,
+                               "limit the check's address space, as grading does (default: none)")
+                    ->check(CLI::NonNegativeNumber);
+                auto backend = std::make_shared<BackendOption>(cmd);
+                return std::function<int()>([=] {
+                    check->backend = backend->resolve();
+                    stage->labGiven = lab->count() > 0;
+                    return cmdCheck(*stage, *check);
+                });
+            }};
 }
 
 }  // namespace raylab

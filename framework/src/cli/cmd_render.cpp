@@ -4,7 +4,9 @@
 #include "debug_views.h"
 #include "error.h"
 #include "paths.h"
+#ifndef RAYLAB_STUDENT_BUILD
 #include "reference_tracer.h"
+#endif
 #include "track_registry.h"
 
 #include <cstdio>
@@ -87,6 +89,7 @@ ViewData gpuView(DebugView view, const StageSetup& setup, Backend backend, std::
     return viewFromGpu(view, rgba, w, h);
 }
 
+#ifndef RAYLAB_STUDENT_BUILD  // no reference tracer in a student repository
 ViewData referenceView(DebugView view, const StageSetup& setup, std::string* source) {
     requireRayTracingStage(*setup.stage, "the reference tracer (--reference)");
     ReferenceTracer tracer(setup.scene, ReferenceFeatures::forStage(*setup.stage), setup.time,
@@ -96,6 +99,7 @@ ViewData referenceView(DebugView view, const StageSetup& setup, std::string* sou
     *source = "reference tracer";
     return viewFromReference(view, samples, setup.size.width, setup.size.height);
 }
+#endif
 
 }  // namespace
 
@@ -103,6 +107,13 @@ int cmdRender(const StageOptions& options, const RenderOptions& render) {
     // Every input is checked before anything is drawn or written.
     const DebugView view = parseDebugView(render.view);
     const bool pfm = checkOutputFile(render.outFile);
+#ifdef RAYLAB_STUDENT_BUILD
+    if (render.reference || viewNeedsReference(view))
+        throw Error(std::string(render.reference ? "--reference" : "--view ") +
+                    (render.reference ? "" : debugViewName(view)) +
+                    ": the CPU reference tracer draws the solution, which a student repository "
+                    "does not hold");
+#endif
     if (viewNeedsReference(view) && !render.reference)
         throw Error(std::string("--view ") + debugViewName(view) +
                     " needs --reference (the GPU shaders do not count rays)");
@@ -110,8 +121,12 @@ int cmdRender(const StageOptions& options, const RenderOptions& render) {
     if (view == DebugView::Color && !pfm && !render.reference) return renderColorPng(setup, render);
 
     std::string source;
+#ifdef RAYLAB_STUDENT_BUILD
+    ViewData data = gpuView(view, setup, render.backend, &source);
+#else
     ViewData data = render.reference ? referenceView(view, setup, &source)
                                      : gpuView(view, setup, render.backend, &source);
+#endif
     std::string mapping;
     if (pfm) {
         writePfmAtomic(data.values, render.outFile);
@@ -137,11 +152,17 @@ Command renderCommand() {
                                "output file: .png (a picture) or .pfm (raw floats)")
                     ->required();
                 auto backend = std::make_shared<BackendOption>(cmd);
+#ifdef RAYLAB_STUDENT_BUILD
+                cmd.add_option("--view", render->view, "color, depth, normal, id")
+                    ->capture_default_str();
+                cmd.add_flag("--reference", render->reference)->group("");  // refused below
+#else
                 cmd.add_option("--view", render->view,
                                "color, depth, normal, id; with --reference also bounces, stack")
                     ->capture_default_str();
                 cmd.add_flag("--reference", render->reference,
                              "draw with the CPU reference tracer instead of the GPU");
+#endif
                 return std::function<int()>([=] {
                     render->backend = backend->resolve();
                     stage->labGiven = lab->count() > 0;

@@ -8,6 +8,7 @@
 #include "command.h"
 #include "command_options.h"
 #include "error.h"
+#include "function_tables.h"
 #include "fur_renderer.h"
 #include "fur_scene.h"
 #include "gl_context.h"
@@ -73,7 +74,13 @@ StagePrograms harnessPrograms(const std::string& name, const StageSetup& setup, 
     if (!checked)
         throw Error("--function " + name + ": stage " + setup.stage->id +
                     " does not check it (stage " + stageCheckingFunction(name).id + " does)");
+#ifdef RAYLAB_STUDENT_BUILD  // the harness GLSL is data here (function_tables.h)
+    HarnessProgram h =
+        assembleHarness(withHarnessFrom(studentFunctionTables(), spec, kStudentFunctionTables),
+                        *setup.stage, setup.sources, {}, es);
+#else
     HarnessProgram h = assembleHarness(spec, *setup.stage, setup.sources, {}, es);
+#endif
     return {h.vertex, h.fragment};
 }
 
@@ -154,9 +161,11 @@ Command shaderCommand() {
                          "the stage's generic program (scene in uniforms) instead of the "
                          "program specialised to the scene");
             cmd.add_flag("--no-bvh", o->noBvh, "stage 08: the linear search instead of the BVH");
+#ifndef RAYLAB_STUDENT_BUILD  // the demo's program is the solution's
             cmd.add_flag("--demo", o->demo,
                          "the program raylab demo draws: the solution with the demo's levers "
                          "(weight cut, shared work, light buffer, eye cells)");
+#endif
             cmd.add_option("--function", o->function,
                            "the harness program of this function check of the stage (e.g. "
                            "intersectSphere), as raylab check and the page compile it");

@@ -2,14 +2,17 @@
 // the CPU reference tracer (reference_tracer.h), then the path the stage's
 // own shader (labs/, --lab DIR or --solution) takes there on the GPU, ray by
 // ray (gpu_trace.h): the two side by side show where a student's path
-// leaves the reference's.
+// leaves the reference's. A student repository's build has no reference
+// tracer: the shader's path alone.
 #include "command.h"
 #include "command_options.h"
 #include "commands.h"
 #include "error.h"
 #include "gl_context.h"
 #include "gpu_trace.h"
+#ifndef RAYLAB_STUDENT_BUILD
 #include "reference_tracer.h"
+#endif
 #include "shader_program.h"
 #include "track_registry.h"
 
@@ -36,13 +39,13 @@ void parsePixel(const std::string& text, int& x, int& y) {
     y = int(py);
 }
 
-std::string vec(const glm::dvec3& v) {
+[[maybe_unused]] std::string vec(const glm::dvec3& v) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
     return buf;
 }
 
-int byte(double c) { return int(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
+[[maybe_unused]] int byte(double c) { return int(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
 }  // namespace
 
@@ -57,6 +60,13 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
                     std::to_string(h) + " image (x 0.." + std::to_string(w - 1) + ", y 0.." +
                     std::to_string(h - 1) + ")");
     const StageInfo& stage = *setup.stage;
+#ifdef RAYLAB_STUDENT_BUILD
+    std::printf("raylab trace: stage %s, scene %s, %dx%d, time %g s\n", stage.id.c_str(),
+                setup.scene.file.c_str(), w, h, double(setup.time));
+    std::printf("your shader's path (%s): a debug build of the program records each ray "
+                "findClosest() traces for pixel %d,%d (0,0 top left), in order\n",
+                setup.sources.label.c_str(), x, y);
+#else
     const ReferenceFeatures features = ReferenceFeatures::forStage(stage);
     ReferenceTracer tracer(setup.scene, features, setup.time, setup.settings);
 
@@ -89,6 +99,7 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
     std::printf("\nyour shader's path (%s): a debug build of the program records each ray "
                 "findClosest() traces for this pixel, in order\n",
                 setup.sources.label.c_str());
+#endif
     std::fflush(stdout);
     try {
         auto context = createHeadlessContext(Backend::Auto);
@@ -107,22 +118,27 @@ int cmdTrace(const StageOptions& options, const std::string& pixel) {
     return 0;
 }
 
+#ifdef RAYLAB_STUDENT_BUILD
+constexpr const char* kTraceAbout = "print one pixel's path through your shader, ray by ray";
+#else
+constexpr const char* kTraceAbout =
+    "print one pixel's path bounce by bounce: the CPU reference tracer's, then your shader's";
+#endif
+
 Command traceCommand() {
-    return {
-        "trace",
-        "print one pixel's path bounce by bounce: the CPU reference tracer's, then your shader's",
-        [](CLI::App& cmd) {
-            auto stage = std::make_shared<StageOptions>();
-            auto pixel = std::make_shared<std::string>();
-            stage->size = "800x600";
-            CLI::Option* lab = addStageOptions(cmd, *stage, true);
-            cmd.add_option("--pixel", *pixel, "the pixel X,Y of the --size image (0,0 top left)")
-                ->required();
-            return std::function<int()>([=] {
-                stage->labGiven = lab->count() > 0;
-                return cmdTrace(*stage, *pixel);
-            });
-        }};
+    return {"trace", kTraceAbout, [](CLI::App& cmd) {
+                auto stage = std::make_shared<StageOptions>();
+                auto pixel = std::make_shared<std::string>();
+                stage->size = "800x600";
+                CLI::Option* lab = addStageOptions(cmd, *stage, true);
+                cmd.add_option("--pixel", *pixel,
+                               "the pixel X,Y of the --size image (0,0 top left)")
+                    ->required();
+                return std::function<int()>([=] {
+                    stage->labGiven = lab->count() > 0;
+                    return cmdTrace(*stage, *pixel);
+                });
+            }};
 }
 
 }  // namespace raylab

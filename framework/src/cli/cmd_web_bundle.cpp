@@ -23,6 +23,7 @@
 #include "paths.h"
 #include "stage_list.h"
 #include "stage_sources.h"
+#include "student_release.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,70 +37,6 @@ namespace raylab {
 namespace fs = std::filesystem;
 
 namespace {
-
-void copyTree(const fs::path& from, const fs::path& to) {
-    fs::create_directories(to.parent_path());
-    fs::copy(from, to, fs::copy_options::recursive);
-}
-
-// Whether students write FILE as stage STAGE reads it: its solved form (the
-// newest of STAGE's chain in solution/) has regions a lab takes away. A
-// variant file standing in for such a file is that file solved; one standing
-// in for a provided file (surface_at.glsl with meshes) is not.
-bool studentsWrite(const std::string& stage, const std::string& file) {
-    std::error_code ec;
-    for (const StageInfo* at = &findStage(stage);; at = &findStage(at->buildsOn)) {
-        if (fs::is_regular_file(at->folder() / file, ec)) {
-            const std::string text = readTextFile(at->folder() / file);
-            return text.find("//@solution") != std::string::npos ||
-                   text.find("//@open") != std::string::npos;
-        }
-        if (at->buildsOn.empty()) return false;
-    }
-}
-
-// framework/shaders/ with the variant folders of STAGES only, and without
-// the variant files that hold solved code (studentsWrite).
-void copyFrameworkShaders(const fs::path& to, const std::set<std::string>& stages) {
-    const fs::path from = projectRoot() / "framework" / "shaders";
-    for (const fs::directory_entry& e : fs::recursive_directory_iterator(from)) {
-        if (!e.is_regular_file()) continue;
-        const fs::path rel = e.path().lexically_relative(from);
-        auto part = rel.begin();
-        if (part->string() == "variants") {
-            if (std::distance(rel.begin(), rel.end()) != 4) continue;
-            const std::string stage = std::next(part, 2)->string();
-            if (!stages.count(stage) || studentsWrite(stage, rel.filename().string())) continue;
-        }
-        fs::create_directories((to / rel).parent_path());
-        fs::copy_file(e.path(), to / rel);
-    }
-}
-
-// The stages PLAN's stages build on that PLAN does not release, in course order.
-std::vector<const StageInfo*> earlierStages(const std::vector<HandoutStage>& plan) {
-    std::set<std::string> released, seen;
-    for (const HandoutStage& h : plan) released.insert(h.stage->id);
-    for (const HandoutStage& h : plan)
-        for (const StageInfo* at = h.stage; !at->buildsOn.empty();) {
-            at = &findStage(at->buildsOn);
-            if (!released.count(at->id)) seen.insert(at->id);
-        }
-    std::vector<const StageInfo*> out;
-    for (const StageInfo& s : allStages())
-        if (seen.count(s.id)) out.push_back(&s);
-    return out;
-}
-
-// web/function_tables.json with the tables of PLAN's stages' checks only.
-std::string releasedFunctionTables(const std::vector<HandoutStage>& plan) {
-    std::vector<const FunctionSpec*> specs;
-    for (const HandoutStage& h : plan)
-        for (const FunctionSpec* spec : functionSpecsFor(*h.stage))
-            if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(spec);
-    // No checks at all: an empty table, not every one (functionTablesJson's default).
-    return specs.empty() ? "{\"functions\": {}}\n" : functionTablesJson(specs);
-}
 
 // web/tools/write_catalog.mjs for the bundle: its stages, no solutions.
 void writeCatalog(const fs::path& root, const std::vector<HandoutStage>& plan) {
@@ -192,26 +129,10 @@ Command webBundleCommand() {
             "write the web page with the released stages' labs as a static folder for students "
             "(any web server), with no solution of a stage it holds",
             [](CLI::App& cmd) {
-                auto stages = std::make_shared<std::string>();
-                auto out = std::make_shared<std::string>();
-                auto carry = std::make_shared<std::string>("own");
-                auto course = std::make_shared<std::string>();
-                auto level = std::make_shared<std::string>("guided");
-                cmd.add_option("--stages", *stages,
-                               "the released stages, as raylab handout takes them (01-03, "
-                               "01,02,f1, all)")
-                    ->required();
-                cmd.add_option("--out", *out, "the folder to write (new, or empty)")->required();
-                cmd.add_option("--carry", *carry,
-                               "earlier stages this bundle does not release: own or solved (as "
-                               "raylab handout)")
-                    ->capture_default_str();
-                cmd.add_option("--course", *course,
-                               "a course file (docs/grading.md): the guides show its weights");
-                cmd.add_option("--level", *level, "guided or open (as raylab handout)")
-                    ->capture_default_str();
+                auto o = std::make_shared<ReleaseOptions>();
+                addReleaseOptions(cmd, *o, "the folder to write (new, or empty)");
                 return std::function<int()>(
-                    [=] { return cmdWebBundle(*stages, *out, *carry, *course, *level); });
+                    [=] { return cmdWebBundle(o->stages, o->out, o->carry, o->course, o->level); });
             }};
 }
 

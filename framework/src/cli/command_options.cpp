@@ -10,7 +10,13 @@ CLI::Option* addStageOptions(CLI::App& cmd, StageOptions& o, bool withCamera) {
         cmd.add_option("--lab", o.labDir,
                        "use the lab in DIR (laid out like labs/); without DIR: labs/ (the default)")
             ->expected(0, 1);
+#ifdef RAYLAB_STUDENT_BUILD
+    // Not offered (a student repository holds no solution), but refused with
+    // its reason rather than as an unknown option (resolveStageOptions).
+    cmd.add_flag("--solution", o.solution)->group("");
+#else
     cmd.add_flag("--solution", o.solution, "use the complete solution instead of a lab");
+#endif
     cmd.add_option("--scene", o.scene,
                    "lite, pro or a scene file (default: the stage's scene under assets/scenes/)");
     cmd.add_option("--size", o.size, "image size WIDTHxHEIGHT")->capture_default_str();

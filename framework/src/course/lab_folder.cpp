@@ -126,6 +126,11 @@ Level handedOutLevel() {
 
 std::filesystem::path handedOutLabRoot() {
     namespace fs = std::filesystem;
+#ifdef RAYLAB_STUDENT_BUILD
+    // A student repository: labs/ is the student's work; the labs as they
+    // were handed out (at the repository's level) are kept apart.
+    return projectRoot() / "course" / "handout";
+#endif
     if (handedOutLevel() == Level::Guided) return projectRoot() / "labs";
     static OpenLabs labs;
     std::error_code ec;

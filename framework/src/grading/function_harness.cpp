@@ -5,6 +5,7 @@
 #include "canvas.h"
 #include "error.h"
 #include "framebuffer.h"
+#include "function_tables.h"
 #include "harness_program.h"
 #include "shader_program.h"
 
@@ -73,8 +74,18 @@ std::vector<glm::vec4> runHarness(const FunctionSpec& spec, const StageInfo& sta
     return results;
 }
 
-FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stage,
+FunctionOutcome runFunctionCheck(const FunctionSpec& checked, const StageInfo& stage,
                                  const StageSources& sources) {
+#ifdef RAYLAB_STUDENT_BUILD
+    // No references or stand-ins here: the harness GLSL and the expected
+    // values come from the repository's tables (function_tables.h).
+    const FunctionSpec spec =
+        withHarnessFrom(studentFunctionTables(), checked, kStudentFunctionTables);
+    const std::vector<glm::dvec4> wants =
+        tableOf(studentFunctionTables(), spec.name, kStudentFunctionTables).wants;
+#else
+    const FunctionSpec& spec = checked;
+#endif
     std::vector<glm::vec4> results;
     try {
         results = runHarness(spec, stage, sources);
@@ -89,13 +100,21 @@ FunctionOutcome runFunctionCheck(const FunctionSpec& spec, const StageInfo& stag
         out.firstFailure = std::string("does not compile: ") + e.what();
         return out;
     }
+#ifdef RAYLAB_STUDENT_BUILD
+    return scoreFunctionResults(spec, results, wants);
+#else
     return scoreFunctionResults(spec, results);
+#endif
 }
 
 std::vector<EarlierFailure> runEarlierFunctionChecks(const StageInfo& stage,
                                                      const StageSources& sources) {
     std::vector<EarlierFailure> failures;
     for (const EarlierFunctionCheck& check : earlierFunctionChecks(stage, sources)) {
+#ifdef RAYLAB_STUDENT_BUILD
+        // An earlier stage the repository does not release has no table.
+        if (!studentFunctionTables().count(check.spec->name)) continue;
+#endif
         // The earlier stage as the student's folders draw it.
         const StageSources own =
             labSources(*check.stage, sources.labRoot, MissingLabFiles::FromHandedOutLab);

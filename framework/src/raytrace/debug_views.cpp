@@ -1,15 +1,19 @@
 #include "debug_views.h"
 
 #include "error.h"
+#ifndef RAYLAB_STUDENT_BUILD
 #include "reference_tracer.h"
+#endif
 
 namespace raylab {
 
 namespace {
 
+#ifndef RAYLAB_STUDENT_BUILD
 int channelsOf(DebugView view) {
     return view == DebugView::Color || view == DebugView::Normal ? 3 : 1;
 }
+#endif
 
 StageInfo withViewDefines(const StageInfo& stage, GpuView view) {
     StageInfo s = stage;
@@ -34,6 +38,7 @@ std::vector<float> GpuViewRenderer::readFloats() const {
     return rgba;
 }
 
+#ifndef RAYLAB_STUDENT_BUILD  // no reference tracer in a student repository
 ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& samples, int width,
                            int height) {
     ViewData d;
@@ -63,5 +68,6 @@ ViewData viewFromReference(DebugView view, const std::vector<ReferenceSample>& s
     }
     return d;
 }
+#endif
 
 }  // namespace raylab

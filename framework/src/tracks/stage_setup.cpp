@@ -29,6 +29,11 @@ int choice(const char* flag, const std::string& value, const char* const (&names
 
 StageSetup resolveStageOptions(const StageOptions& o) {
     StageSetup s;
+#ifdef RAYLAB_STUDENT_BUILD
+    if (o.solution)
+        throw Error("--solution: this is a student repository, which holds no solution (raylab "
+                    "check compares your lab with the course's pictures in course/references/)");
+#endif
     if (o.labGiven && o.solution) throw Error("--lab and --solution exclude each other");
     if (!std::isfinite(o.time) || std::fabs(o.time) > 1e6f)
         throw Error("--time must be a finite number of seconds");

@@ -23,117 +23,16 @@ import { appendFileSync, copyFileSync, existsSync, mkdirSync, mkdtempSync, readd
 import { tmpdir } from 'node:os';
 import { join, relative, resolve } from 'node:path';
 import { collectProblems, launchBrowser, projectRoot } from './browser.mjs';
+import { filesUnder, leaksIn, projectTables, SHADER, solutionRegions } from '../answer_search.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
 const raylab = resolve(option('--raylab', join(projectRoot, 'build/raylab')));
 const only = option('--only', '');  // the bundles whose name holds TEXT (while working on one)
-const SHADER = /\.(glsl|vert|frag|geom)$/;
 const ALL_STAGES = readdirSync(join(projectRoot, 'solution')).filter((id) => existsSync(join(projectRoot, 'solution', id, 'stage.json'))).sort();
 
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
-const squash = (text) => text.replace(/\s+/g, ' ').trim();
-
-function filesUnder(dir) {
-  return readdirSync(dir).flatMap((n) => (statSync(join(dir, n)).isDirectory() ? filesUnder(join(dir, n)) : [join(dir, n)]));
-}
-
-// The code of every //@solution region of every stage's files (up to its
-// //@stub), whitespace squashed; at the open level also every run of code an
-// open region's guided part gives (the answer at that level), but for runs of
-// under 40 characters and those the open stub holds too (a signature).
-function solutionRegions(level = 'guided') {
-  const regions = [];
-  for (const stage of ALL_STAGES) {
-    for (const file of filesUnder(join(projectRoot, 'solution', stage)).filter((f) => SHADER.test(f))) {
-      const lines = readFileSync(file, 'utf8').split('\n');
-      const where = (i) => `${relative(projectRoot, file)}:${i + 1}`;
-      let stub = '', run = [], runStart = 0, inOpen = false, inStub = false, inSolution = false;
-      const endRun = () => {
-        const code = squash(run.join('\n'));
-        if (code.length >= 40 && !squash(stub).includes(code)) regions.push({ where: where(runStart), code });
-        run = [];
-      };
-      for (let i = 0; i < lines.length; ++i) {
-        const t = lines[i].trim();
-        if (t === '//@solution') {
-          if (inOpen) endRun();
-          const body = [];
-          for (++i; i < lines.length && !lines[i].trim().startsWith('//@stub'); ++i) body.push(lines[i]);
-          regions.push({ where: where(i - body.length), code: squash(body.join('\n')) });
-          inSolution = true;
-        } else if (t === '//@end') {
-          inSolution = false;
-          runStart = i + 1;
-        } else if (t === '//@open') {
-          inStub = true;
-          stub = '';
-        } else if (t === '//@guided') {
-          inStub = false;
-          inOpen = level === 'open';
-          runStart = i + 1;
-        } else if (t === '//@end-open') {
-          if (inOpen) endRun();
-          inOpen = false;
-        } else if (inStub) {
-          stub += ' ' + squash(t.replace(/^\/\/@ ?/, ''));
-        } else if (inOpen && !inSolution && !t.startsWith('//@') && !t.startsWith('//')) {
-          run.push(lines[i]);
-        }
-      }
-    }
-  }
-  return regions;
-}
-
-// Every check's harness GLSL (stand-ins, helpers) from the project's tables,
-// by function: a bundle may hold those of its released stages' checks only.
-const projectTables = JSON.parse(readFileSync(join(projectRoot, 'web/function_tables.json'), 'utf8')).functions;
-function standIns(released) {
-  const allowed = new Set(released.flatMap((f) => [projectTables[f].prelude, projectTables[f].helpers]).map(squash));
-  return Object.entries(projectTables).filter(([name]) => !released.includes(name))
-    .flatMap(([name, t]) => [t.prelude, t.helpers].map((code) => ({ where: `${name}'s harness`, code: squash(code) })))
-    .filter((r) => r.code.length >= 40 && !allowed.has(r.code));
-}
-
-// The WebAssembly inside the core's script (a data URL) as text, for its strings.
-function wasmStrings(coreJs) {
-  const m = /data:application\/octet-stream;base64,([A-Za-z0-9+/=]+)/.exec(readFileSync(coreJs, 'utf8'));
-  if (!m) throw new Error(`${coreJs}: no WebAssembly inside`);
-  return Buffer.from(m[1], 'base64').toString('latin1').replace(/[^\x20-\x7e\n]+/g, '\n');
-}
-
-// What in BUNDLE gives away an answer or holds a stage it does not release: one line per finding.
-// CARRY: solved, where the earlier stages the bundle does not release come
-// solved (their answers are the course's to give).
-function leaksIn(bundle, released, level, carry = 'own') {
-  const found = [];
-  const stagesHeld = new Set(released);
-  for (const id of released)  // and those they build on
-    for (let at = JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8')).builds_on; at;
-      at = JSON.parse(readFileSync(join(projectRoot, 'solution', at, 'stage.json'), 'utf8')).builds_on) stagesHeld.add(at);
-  const carried = carry === 'solved' ? [...stagesHeld].filter((id) => !released.includes(id)) : [];
-  const functions = released.flatMap((id) => JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8')).function_checks ?? []);
-  const searched = [...solutionRegions(level).filter((r) => !carried.some((id) => r.where.startsWith(`solution/${id}/`))),
-    ...standIns([...new Set(functions)])];
-  for (const file of filesUnder(bundle)) {
-    const rel = relative(bundle, file);
-    const parts = rel.split('/');
-    if (rel.startsWith('solution/') && !rel.endsWith('/stage.json')) found.push(`${rel}: a file of solution/`);
-    if (parts[0] === 'solution' && !stagesHeld.has(parts[1])) found.push(`${rel}: a later stage's stage.json`);
-    if (parts[0] === 'labs' && parts.length > 2 && !stagesHeld.has(parts[1])) found.push(`${rel}: a lab of a stage not handed out`);
-    if (rel.startsWith('tests/reference/') && !released.includes(parts[2])) found.push(`${rel}: a reference of a stage not released`);
-    if (rel.startsWith('framework/shaders/variants/') && !stagesHeld.has(parts[4])) found.push(`${rel}: a variant of a stage not released`);
-    if (/test_api/.test(rel)) found.push(`${rel}: the page's test API`);
-    if (!/\.(glsl|vert|frag|geom|json|md|html|js|mjs|css|txt)$/.test(file)) continue;
-    const text = squash(rel.endsWith('raylab_core.js') ? `${readFileSync(file, 'utf8')}\n${wasmStrings(file)}` : readFileSync(file, 'utf8'));
-    for (const r of searched) if (r.code && text.includes(r.code)) found.push(`${rel}: holds ${r.where.endsWith('harness') ? 'the stand-ins of ' : 'the solution region of '}${r.where}`);
-  }
-  const tables = Object.keys(JSON.parse(readFileSync(join(bundle, 'web/function_tables.json'), 'utf8')).functions);
-  for (const f of tables) if (!functions.includes(f)) found.push(`web/function_tables.json: the table of ${f}, a check of a stage not released`);
-  return found;
-}
 
 function serveStatically(dir) {
   const child = spawn('python3', ['-m', 'http.server', '0', '--bind', '127.0.0.1', '--directory', dir], { stdio: ['ignore', 'pipe', 'pipe'] });

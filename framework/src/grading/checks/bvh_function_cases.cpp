@@ -9,7 +9,9 @@
 
 #include "function_compare.h"
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "reference_intersect.h"
+#endif
 #include "shader_constants.h"
 
 #include <algorithm>
@@ -61,6 +63,8 @@ struct Node {
     int first = 0, code = 0;  // as bvh_access.glsl: a leaf's code is 8 * count + kind
 };
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the stand-ins' worlds: not in the page's core or a student
+                                   // build
 struct Bvh {
     std::vector<Node> nodes;
     std::vector<int> items;
@@ -161,6 +165,7 @@ const char* kBvhPrelude =
     "#define bvhNodeLow(n) gNodeLow[n]\n"
     "#define bvhNodeHigh(n) gNodeHigh[n]\n"
     "#define bvhItem(k) gItems[k]\n";
+#endif
 
 // a0: the ray's origin, a0.w the world; a1: its unit direction, a1.w 1 for
 // anyHit; a2.x the hit distance the walk starts with (< 0: T_FAR).

@@ -14,8 +14,10 @@
 #include "trace_function_cases.h"
 #include "visibility_function_cases.h"
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "reference_intersect.h"
 #include "reference_shading.h"
+#endif
 #include "text_format.h"
 
 #include "error.h"

@@ -1,6 +1,7 @@
 #include "function_tables.h"
 
 #include "error.h"
+#include "paths.h"
 
 #include <nlohmann/json.hpp>
 
@@ -136,6 +137,13 @@ const FunctionTable& tableOf(const FunctionTables& tables, const std::string& na
         throw Error(file + " has no table for " + name +
                     " (a bundle holds its released stages' checks only)");
     return it->second;
+}
+
+const FunctionTables& studentFunctionTables() {
+    static const FunctionTables tables =
+        parseFunctionTables(readTextFile(projectRoot() / kStudentFunctionTables),
+                            kStudentFunctionTables, TableCoverage::Some);
+    return tables;
 }
 
 FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,

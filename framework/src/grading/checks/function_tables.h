@@ -47,4 +47,10 @@ const FunctionTable& tableOf(const FunctionTables& tables, const std::string& na
 FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
                              const std::string& file);
 
+// A student repository's tables (`raylab student-repo`: its released
+// stages' checks), read once; the file's name for messages. Throws Error
+// when the file cannot be read or does not match today's cases.
+inline constexpr const char* kStudentFunctionTables = "course/function_tables.json";
+const FunctionTables& studentFunctionTables();
+
 }  // namespace raylab

@@ -5,7 +5,9 @@
 
 #include "adjacency.h"
 #include "function_compare.h"
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "fur_reference.h"
+#endif
 #include "mesh_shapes.h"
 #include "silhouette.h"
 

@@ -5,8 +5,11 @@
 #include "intersect_function_cases.h"
 
 #include "function_compare.h"
+#include "shader_constants.h"
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "reference_intersect.h"
+#endif
 
 #include <cmath>
 
@@ -17,7 +20,7 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-using reference::kNoHit;
+using shader::kNoHit;
 
 std::string hitText(double t) { return t < 0.0 ? "no hit" : "t = " + caseNumber(t); }
 
@@ -38,11 +41,11 @@ std::string compareHit(const FunctionCase& c, const dvec4& got, const dvec4& wan
     return "";
 }
 
-// The ray of a case whose a0.xyz is the origin and a1.xyz the direction.
-// (maybe_unused: only the references use it, and the page's core has none.)
-[[maybe_unused]] reference::DRay rayOf(const FunctionCase& c) {
-    return {xyz(c.in[0]), xyz(c.in[1])};
-}
+#ifndef RAYLAB_REFERENCES_AS_DATA
+// The ray of a case whose a0.xyz is the origin and a1.xyz the direction
+// (the references', which the page's core and a student build leave out).
+reference::DRay rayOf(const FunctionCase& c) { return {xyz(c.in[0]), xyz(c.in[1])}; }
+#endif
 
 // The references are the reference tracer's own (reference_intersect.h,
 // reference_shading.h): one double-precision version of each GLSL function.

@@ -122,6 +122,8 @@ FunctionSpec surfaceLightSpec() {
     return s;
 }
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // a stand-in: the page's core and a student build read it from
+                                   // the tables
 // The GLSL that sets the fur uniforms of a transform check from the case:
 // uModel = move a2.xyz, turn a1.x radians about y, scale a1.yzw; uView looks
 // from a3.xyz turned a3.w radians about y; uProjection is a perspective of
@@ -148,6 +150,7 @@ const char* const kTransformHelpers =
     "    uProjection = mat4(f / (4.0 / 3.0), 0.0, 0.0, 0.0,  0.0, f, 0.0, 0.0,  0.0, 0.0, "
     "-100.1 / 99.9, -1.0,  0.0, 0.0, -2.0 * 100.0 * 0.1 / 99.9, 0.0);\n"
     "}\n";
+#endif
 
 // The same matrices in double precision.
 struct TransformCase {
@@ -200,7 +203,8 @@ std::vector<FunctionCase> transformCases() {
 // A transform check: the case's matrices set (setTransforms), then
 // EXPRESSION (of the point a0.xyz) against the reference, within TOLERANCE
 // relative to its length.
-FunctionSpec transformSpec(const char* name, const std::string& expression, double tolerance) {
+FunctionSpec transformSpec(const char* name, [[maybe_unused]] const std::string& expression,
+                           double tolerance) {
     FunctionSpec s;
     s.name = name;
     s.prelude = RAYLAB_HARNESS_GLSL("#define RAYLAB_FUNCTION_CHECK\n");

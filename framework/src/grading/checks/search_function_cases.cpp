@@ -61,6 +61,7 @@ FunctionCase searchCase(std::string label, const Objects& o) {
     return o;
 }
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 const char* kSearchPrelude =
     "#include \"ray.glsl\"\n"
     "#include \"scene_spheres.glsl\"\n"
@@ -94,7 +95,9 @@ const char* kSearchPrelude =
     "}\n"
     "float intersectTriangle(Ray ray, vec3 a, vec3 b, vec3 c) { return sum3(a + b + c); }\n"
     "float intersectTorus(Ray ray, int i) { return gTorusT[i]; }\n";
+#endif
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 const char* kHelpers =
     "void setObject(int kind, int i, float t)\n"
     "{\n"
@@ -134,6 +137,7 @@ const char* kHelpers =
     "    bool found = findClosest(Ray(vec3(0.0), vec3(0.0, 0.0, -1.0)), hit);\n"
     "    return vec4(found ? 1.0 : 0.0, found ? hit.t : 0.0, float(hit.id), 1.0);\n"
     "}\n";
+#endif
 
 std::string objectHitText(const dvec4& v) {
     if (v.x < 0.5) return "no hit";

@@ -6,8 +6,10 @@
 
 #include "function_compare.h"
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "reference_intersect.h"
 #include "reference_shading.h"
+#endif
 
 #include <cmath>
 
@@ -35,11 +37,13 @@ std::string compareColor(const FunctionCase& c, const dvec4& got, const dvec4& w
 
 // ---- 02 blinn_phong.glsl ---------------------------------------------------
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 // The scene's lights (scene_lights.glsl) as globals the helper sets.
 const char* kShadingLights = "// Stand-ins for the scene's lights, set by the case.\n"
                              "int uLightCount;\n"
                              "vec3 uLightPositions[MAX_LIGHTS];\n"
                              "vec3 uLightColors[MAX_LIGHTS];\n";
+#endif
 
 // The material and light colours of every blinnPhong case: each channel
 // different, so a colour forgotten or taken from the wrong term shows.

@@ -15,8 +15,10 @@
 #include "case_patterns.h"
 #include "function_compare.h"
 
+#ifndef RAYLAB_REFERENCES_AS_DATA  // the references: not in the page's core or a student build
 #include "reference_intersect.h"
 #include "reference_shading.h"
+#endif
 #include "shader_constants.h"
 
 #include <cmath>
@@ -74,6 +76,7 @@ const std::vector<World>& worlds() {
     return all;
 }
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 std::string glsl(const dvec3& v) {
     return "vec3(" + glslFloat(v.x) + ", " + glslFloat(v.y) + ", " + glslFloat(v.z) + ")";
 }
@@ -102,13 +105,13 @@ std::string traceWorldsGlsl() {
 // run-time index by choosing among all its entries. The spheres keep
 // MAX_SPHERES, which a lab's loop may run to; a material is read only for a
 // hit, whose index is below the world's count.)
-[[maybe_unused]] std::size_t mostWorldSpheres() {
+std::size_t mostWorldSpheres() {
     std::size_t most = 0;
     for (const World& w : worlds()) most = std::max(most, w.spheres.size());
     return most;
 }
 
-[[maybe_unused]] std::string prelude() {
+std::string prelude() {
     return "#include \"ray.glsl\"\n"
            "#include \"scene_materials.glsl\"  // Material and MAT_*; the scene's uniforms go "
            "unused\n"
@@ -145,12 +148,13 @@ std::string traceWorldsGlsl() {
            "#include \"fresnel.glsl\"\n";
 }
 
-[[maybe_unused]] dvec3 skyStandIn(const dvec3& dir) { return dvec3(0.35, 0.5, 0.75) + 0.25 * dir; }
+dvec3 skyStandIn(const dvec3& dir) { return dvec3(0.35, 0.5, 0.75) + 0.25 * dir; }
 
-[[maybe_unused]] dvec3 blinnStandIn(const dvec3& normal, const dvec3& toEye, const WorldSphere& m) {
+dvec3 blinnStandIn(const dvec3& normal, const dvec3& toEye, const WorldSphere& m) {
     return 0.1 * m.diffuse + m.diffuse * (0.25 + 0.75 * std::max(glm::dot(normal, toEye), 0.0)) +
            0.1 * m.specular * (0.5 + 0.5 * normal.y);
 }
+#endif
 
 // a0: the primary ray's origin in world units, a0.w the world; a1: its unit
 // direction; a2: the world's offset, a2.w its scale (origin and spheres are

@@ -16,12 +16,15 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 // The scene's lights (scene_lights.glsl) as globals the helper sets.
 const char* kVisibilityLights = "// Stand-ins for the scene's lights, set by the case.\n"
                                 "int uLightCount;\n"
                                 "vec3 uLightPositions[MAX_LIGHTS];\n"
                                 "vec3 uLightColors[MAX_LIGHTS];\n";
+#endif
 
+#ifndef RAYLAB_REFERENCES_AS_DATA
 // Sets the light and the spheres from the case, calls lightVisible.
 const char* kVisibilityHelper =
     "vec4 checkLightVisible(vec4 a0, vec4 a1, vec4 a2, vec4 a3)\n"
@@ -37,6 +40,7 @@ const char* kVisibilityHelper =
     "    }\n"
     "    return vec4(lightVisible(a0.xyz, a1.xyz, 0) ? 1.0 : 0.0, 0.0, 0.0, 1.0);\n"
     "}\n";
+#endif
 
 // a0: the point, a0.w the radius of a blocking sphere (0: none); a1: the
 // unit normal facing the eye, a1.w where the blocker's centre lies on the

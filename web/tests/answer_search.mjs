@@ -109,7 +109,7 @@ export function leaksIn(bundle, released, level, carry = 'own', layout = BUNDLE)
     if (rel.startsWith(`${layout.references}/`) && !released.includes(parts[2])) found.push(`${rel}: a reference of a stage not released`);
     if (rel.startsWith('framework/shaders/variants/') && !stagesHeld.has(parts[4])) found.push(`${rel}: a variant of a stage not released`);
     if (/test_api/.test(rel)) found.push(`${rel}: the page's test API`);
-    if (!/\.(glsl|vert|frag|geom|json|md|html|js|mjs|css|txt)$/.test(file)) continue;
+    if (!/\.(glsl|vert|frag|geom|json|md|html|js|mjs|css|txt|cpp|h|sh)$/.test(file)) continue;
     const text = squash(rel.endsWith('raylab_core.js') ? `${readFileSync(file, 'utf8')}\n${wasmStrings(file)}` : readFileSync(file, 'utf8'));
     for (const r of searched) if (r.code && text.includes(r.code)) found.push(`${rel}: holds ${r.where.endsWith('harness') ? 'the stand-ins of ' : 'the solution region of '}${r.where}`);
   }

@@ -17,7 +17,6 @@ packages=(
   libglew-dev libglm-dev libgl1-mesa-dev           # OpenGL and its maths
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri      # drawing without a window (checks)
   libosmesa6-dev                                   # a second way to draw without a window
-  libzip-dev libsodium-dev                         # what the checks' sandbox links
   libcli11-dev nlohmann-json3-dev                  # command line, scene files
   libtinyobjloader-dev                             # OBJ meshes (fur track)
   libimgui-dev                                     # the window's overlay

@@ -17,7 +17,7 @@
 //    leaves the student's own work as it was; a release that drops a stage
 //    is refused.
 // One repository for the whole file, which runs as one ctest test (label
-// student-repo): its build takes about a minute and a half.
+// student-repo): its build takes about a minute.
 #include "check_report.h"
 #include "mistake_catalog.h"
 #include "stage_catalog.h"

@@ -63,14 +63,24 @@ const std::set<std::string> kStudentCli = {"CMakeLists.txt",
 
 // framework/src's folders a student repository leaves out: the reference
 // tracer (every stage's answers in C++), the bench that runs it, the page's
-// WebAssembly bindings (the page is not built there).
-const std::set<std::string> kLeftOut = {"raytrace/reference", "bench", "wasm"};
+// WebAssembly bindings (the page is not built there), the instructors'
+// reports.
+const std::set<std::string> kLeftOut = {"raytrace/reference", "bench", "wasm", "grading/report"};
+
+// Of the class workflow and grading modules, a student build compiles the
+// checks' sandbox and the function checks' harness (their CMakeLists.txt).
+const std::set<std::string> kStudentGrading = {
+    "classroom/CMakeLists.txt",  "classroom/check_sandbox.cpp", "classroom/check_sandbox.h",
+    "classroom/grade_options.h", "grading/CMakeLists.txt",      "grading/function_harness.cpp",
+    "grading/function_harness.h"};
 
 bool leftOut(const fs::path& rel) {
     const std::string r = rel.generic_string();
     for (const std::string& dir : kLeftOut)
         if (r == dir || r.rfind(dir + "/", 0) == 0) return true;
     if (rel.parent_path() == "cli") return !kStudentCli.count(rel.filename().string());
+    if (rel.parent_path() == "classroom" || rel.parent_path() == "grading")
+        return !kStudentGrading.count(r);
     // The fur functions in double precision: references of the fur checks.
     return rel.parent_path() == "fur/mesh" && rel.stem() == "fur_reference";
 }

@@ -143,6 +143,10 @@ try {
     `C during a check does nothing: ${seen.filter((e) => e.c).length} presses, ${busy.length} during a check, ${starts.length} checks run`);
   check(/^raylab check: stage 01-raycast, lab my-work\//m.test(report) && /\d+ passed, 0 failed/.test(report),
     `Check passes: ${JSON.stringify(report.trim().split('\n').slice(-2).join(' / '))}`);
+  // The mark follows the verdict's save to the browser's storage (work_panel.ts
+  // checked()), which may end after the button is enabled again.
+  await page.waitForFunction((id) => document.querySelector(`#stage option[value="${id}"]`).textContent.startsWith('✓'),
+    { timeout: 10_000 }, STAGE).catch(() => {});
   const mark = await page.evaluate((id) => document.querySelector(`#stage option[value="${id}"]`).textContent, STAGE);
   check(mark.startsWith('✓'), `the Stage menu marks the passed stage: ${JSON.stringify(mark)}`);
   await openTab('find_closest.glsl');

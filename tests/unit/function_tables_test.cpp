@@ -84,11 +84,12 @@ TEST(FunctionTables, ABundlesTablesHoldItsChecksAndTheirHarness) {
     // A bundle of stage 03 holds lightVisible's table, stand-ins and helpers,
     // and nothing of 08's lightVisibleFast (whose stand-in finds blockers).
     const FunctionSpec& released = functionSpec("lightVisible");
-    const std::string text = functionTablesJson({&released});
+    const std::string text = functionTablesJson({&released}, {&findStage("03")});
     EXPECT_EQ(text.find("lightVisibleFast"), std::string::npos);
     EXPECT_EQ(text.find("findBlocker"), std::string::npos);
     const FunctionTables some = parseFunctionTables(text, "b.json", TableCoverage::Some);
     ASSERT_EQ(some.size(), 1u);
+    EXPECT_NE(text.find("\"counts\": {}"), std::string::npos) << "03 has no count check";
     const FunctionSpec rebuilt = withHarnessFrom(some, released, "b.json");
     EXPECT_FALSE(rebuilt.prelude.empty());
     EXPECT_EQ(rebuilt.prelude, released.prelude);
@@ -120,4 +121,26 @@ TEST(FunctionTables, ABundlesTablesHoldItsChecksAndTheirHarness) {
                   std::string::npos)
             << e.what();
     }
+}
+
+// The cases a float answer may call either way (an edge-on silhouette) are
+// marked in the tables: a build without the reference that decides them
+// (silhouette.h) takes them from there.
+TEST(FunctionTables, TheCasesEitherAnswerPassesComeWithTheTables) {
+    const FunctionTables tables = parseFunctionTables(functionTablesJson(), "tables");
+    int either = 0;
+    for (const FunctionSpec& spec : functionSpecs()) {
+        FunctionSpec blank = spec;
+        for (FunctionCase& c : blank.cases) c.hitOrMiss = false;
+        const FunctionSpec rebuilt = withHarnessFrom(tables, blank, "tables");
+        for (std::size_t i = 0; i < spec.cases.size(); ++i) {
+            EXPECT_EQ(rebuilt.cases[i].hitOrMiss, spec.cases[i].hitOrMiss)
+                << spec.name << ": " << spec.cases[i].label;
+            either += spec.cases[i].hitOrMiss && spec.name == "isSilhouette";
+        }
+    }
+    EXPECT_GT(either, 0) << "isSilhouette has edge-on cases";
+    EXPECT_THROW(parseFunctionTables(
+                     replaced(functionTablesJson(), "\"either\":true", "\"either\":1"), "tables"),
+                 Error);
 }

@@ -83,11 +83,13 @@ std::vector<const StageInfo*> earlierStages(const std::vector<HandoutStage>& pla
 // web/function_tables.json with the tables of PLAN's stages' checks only.
 std::string releasedFunctionTables(const std::vector<HandoutStage>& plan) {
     std::vector<const FunctionSpec*> specs;
-    for (const HandoutStage& h : plan)
+    std::vector<const StageInfo*> stages;
+    for (const HandoutStage& h : plan) {
+        stages.push_back(h.stage);
         for (const FunctionSpec* spec : functionSpecsFor(*h.stage))
             if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(spec);
-    // No checks at all: an empty table, not every one (functionTablesJson's default).
-    return specs.empty() ? "{\"functions\": {}}\n" : functionTablesJson(specs);
+    }
+    return functionTablesJson(specs, stages);
 }
 
 namespace {

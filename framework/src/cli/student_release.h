@@ -37,7 +37,8 @@ void copyFrameworkShaders(const std::filesystem::path& to, const std::set<std::s
 // The stages PLAN's stages build on that PLAN does not release, in course order.
 std::vector<const StageInfo*> earlierStages(const std::vector<HandoutStage>& plan);
 
-// The function tables (function_tables.h) of PLAN's stages' checks only, as JSON.
+// The function tables and count tables (function_tables.h, count_tables.h) of
+// PLAN's stages' checks only, as JSON.
 std::string releasedFunctionTables(const std::vector<HandoutStage>& plan);
 
 // C++ source TEXT (FILE, for messages) as a student repository holds it:

@@ -23,6 +23,12 @@ struct CountResult {
     bool applies = true;  // false: this view does not draw what is counted (fins off)
     bool passed = false;
     std::string detail;  // "the geometry shader emitted 212 fins; 212 edges are silhouettes"
+    // A build without the count's reference (RAYLAB_REFERENCES_AS_DATA)
+    // measures only: the verdict then comes from the count tables
+    // (count_tables.h), which hold the CPU's number for the stage's views.
+    bool measuredOnly = false;
+    long measured = 0;  // the GPU's number (fins emitted)
+    long outOf = 0;     // of how many (the mesh's edges)
 };
 
 class TrackRenderer {

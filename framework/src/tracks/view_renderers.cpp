@@ -1,5 +1,8 @@
 #include "view_renderers.h"
 
+#include "count_tables.h"
+#include "function_tables.h"
+
 #include "json_reader.h"
 #include "stage_renderer.h"
 #include "stage_setup.h"
@@ -58,7 +61,14 @@ Image ViewRenderers::render(const CheckView& view, long* nonFinite, long* todoPi
 
 CountResult ViewRenderers::countCheck(const std::string& name, const CheckView& view) {
     TrackRenderer& r = forView(view);
-    return r.countCheck(name, cameraOf(view), view.time, settingsOf(view));
+    CountResult result = r.countCheck(name, cameraOf(view), view.time, settingsOf(view));
+#ifdef RAYLAB_STUDENT_BUILD
+    // A student repository holds no reference of the count: its tables do.
+    if (result.applies && result.measuredOnly)
+        result = judgedByTable(studentCountTables(), kStudentFunctionTables, stage_.id, name,
+                               view.name, result);
+#endif
+    return result;
 }
 
 CountOutcome runCountCheck(ViewRenderers& renderers, const std::string& name,

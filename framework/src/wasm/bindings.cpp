@@ -244,11 +244,13 @@ public:
     // The procedural mesh FURMESH (1.. of shapes) instead of the scene's (0),
     // the native window's key M; the mesh's arrays and info() change.
     void showMesh(int furMesh) { stage_->showMesh(furMesh); }
-    // The fin count check's verdict on EMITTED fins seen from (X, Y, Z) at
-    // time T: {passed, detail}.
-    std::string finCount(double emitted, float t, float x, float y, float z) const {
-        const FinCountVerdict v = stage_->finCount(long(emitted), t, glm::vec3(x, y, z));
-        return json{{"passed", v.passed}, {"detail", v.detail}}.dump();
+    // The fin count check's verdict on EMITTED fins in the stage's check
+    // view VIEW: {passed, detail}, or {error} (tables without the view).
+    std::string finCount(double emitted, const std::string& view) const {
+        try {
+            const FinCountVerdict v = stage_->finCount(long(emitted), view);
+            return json{{"passed", v.passed}, {"detail", v.detail}}.dump();
+        } catch (const Error& e) { return json{{"error", e.what()}}.dump(); }
     }
     // The model matrix at time T, column-major.
     val modelMatrix(float t) const {

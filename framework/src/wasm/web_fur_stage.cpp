@@ -1,5 +1,6 @@
 #include "web_fur_stage.h"
 
+#include "count_tables.h"
 #include "error.h"
 #include "mesh_shapes.h"
 #include "paths.h"
@@ -80,10 +81,16 @@ void WebFurStage::showMesh(int furMesh) {
     adjacency_ = stage_->has("fins") ? buildEdgeAdjacency(mesh_) : EdgeAdjacency{};
 }
 
-FinCountVerdict WebFurStage::finCount(long emitted, float t, glm::vec3 eye) const {
-    const SilhouetteCount cpu =
-        countSilhouettes(mesh_, adjacency_, glm::dmat4(scene_.modelMatrix(t)), glm::dvec3(eye));
-    return judgeFinCount(emitted, adjacency_.edgeCount(), cpu);
+FinCountVerdict WebFurStage::finCount(long emitted, const std::string& view) const {
+    static const std::string file = displayPath(projectRoot() / "web" / "function_tables.json");
+    static const CountTables tables =
+        parseCountTables(readTextFile(projectRoot() / "web" / "function_tables.json"), file);
+    CountResult measured;
+    measured.measuredOnly = true;
+    measured.measured = emitted;
+    measured.outOf = long(adjacency_.edgeCount());
+    const CountResult r = judgedByTable(tables, file, stage_->id, "fin_count", view, measured);
+    return {r.passed, r.detail};
 }
 
 }  // namespace raylab

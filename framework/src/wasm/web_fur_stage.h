@@ -7,11 +7,11 @@
 // vertex shaders (core/geometry_emulation.h), fed by the stage's vertex
 // shader through transform feedback. Students need not read this file.
 #include "adjacency.h"
+#include "fin_count.h"
 #include "fur_scene.h"
 #include "geometry_emulation.h"
 #include "mesh.h"
 #include "shader_source.h"
-#include "silhouette.h"
 #include "stage_catalog.h"
 #include "stage_sources.h"
 #include "strand_budget.h"
@@ -53,9 +53,11 @@ public:
     // detail) instead of the scene's (0), as the native window's key M does
     // (FurRenderer::render): the mesh, adjacency and bounds change.
     void showMesh(int furMesh);
-    // The fin count check's verdict on EMITTED fins seen from EYE at time T
-    // (native: FurRenderer::countCheck).
-    FinCountVerdict finCount(long emitted, float t, glm::vec3 eye) const;
+    // The fin count check's verdict on EMITTED fins in the stage's check
+    // view VIEW (native: FurRenderer::countCheck), against the count tables
+    // of web/function_tables.json (count_tables.h): the core holds no
+    // silhouette test. Throws Error when the tables have none for VIEW.
+    FinCountVerdict finCount(long emitted, const std::string& view) const;
     float boundsRadius() const { return boundsRadius_; }
 
 private:

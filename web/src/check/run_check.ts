@@ -48,7 +48,8 @@ export function backendName(gl: WebGL2RenderingContext): string {
 
 // A count check from the check views' cameras (native: runCountCheck): the
 // number the student's shaders produced against the same number worked out
-// on the CPU by the core. Null where the page has no such count.
+// on the CPU natively (the core's count tables). Null where the page has no
+// such count.
 async function countResults(name: string, stage: StageJson, rendererFor: (scene: string) => Promise<LoadedStage>) {
   if (name !== 'fin_count') return null;
   const results = [];
@@ -60,7 +61,7 @@ async function countResults(name: string, stage: StageJson, rendererFor: (scene:
     const fins = r instanceof FurRenderer && frame.settings.fins && frame.settings.furTechnique === 0
       ? r.countFins(frame.camera, frame.time, frame.settings, CHECK_WIDTH, CHECK_HEIGHT) : null;
     results.push(fins === null || !(r instanceof FurRenderer) ? { view: view.name, applies: false }
-      : { view: view.name, applies: true, ...r.finCountVerdict(fins, frame.camera, frame.time) });
+      : { view: view.name, applies: true, ...r.finCountVerdict(fins, view.name) });
   }
   return results;
 }

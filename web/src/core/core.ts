@@ -97,7 +97,7 @@ export interface FurStageHandle {
   indices(): Uint32Array;
   adjacency(): Uint32Array;
   modelMatrix(t: number): Float32Array;
-  finCount(emitted: number, t: number, x: number, y: number, z: number): string;  // {passed, detail}
+  finCount(emitted: number, view: string): string;  // {passed, detail} or {error}
   showMesh(furMesh: number): void;  // key M: 0 the scene's mesh, i shapes[i - 1]
   delete(): void;
 }

@@ -252,10 +252,13 @@ export class FurRenderer implements TrackRenderer {
     return this.fins.run(true) / 2;  // each fin a strip of two triangles
   }
 
-  // The fin count check's verdict on FINS seen from CAMERA (the core's, as native's).
-  finCountVerdict(fins: number, camera: Camera, timeSeconds: number): { passed: boolean; detail: string } {
-    const [x, y, z] = camera.pose.position;
-    return JSON.parse(this.core.finCount(fins, timeSeconds, x, y, z)) as { passed: boolean; detail: string };
+  // The fin count check's verdict on FINS in the stage's check view VIEW
+  // (the core's, as native's, against the count tables: the core holds no
+  // silhouette test). Throws when the tables have no count for VIEW.
+  finCountVerdict(fins: number, view: string): { passed: boolean; detail: string } {
+    const r = JSON.parse(this.core.finCount(fins, view)) as { passed: boolean; detail: string; error?: string };
+    if (r.error !== undefined) throw new Error(r.error);
+    return { passed: r.passed, detail: r.detail };
   }
 
   dispose(): void {

@@ -1,12 +1,14 @@
 #pragma once
 // The silhouette test of the fin shader, in double precision: the reference
 // for the function check of isSilhouette() and for the fin count check (the
-// number of fins the geometry shader emits for a mesh and a camera).
+// number of fins the geometry shader emits for a mesh and a camera). It is
+// TODO f3.a's answer: the page's core and a student repository are built
+// without it and read what it gives as data (function_tables.h,
+// count_tables.h).
 #include "adjacency.h"
+#include "fin_count.h"
 
 #include <glm/glm.hpp>
-
-#include <string>
 
 namespace raylab {
 
@@ -25,24 +27,10 @@ double silhouetteProduct(const glm::dvec3& p, const glm::dvec3& a, const glm::dv
 bool silhouetteUncertain(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                          const glm::dvec3& c, const glm::dvec3& d);
 
-struct SilhouetteCount {
-    long certain = 0;    // edges that are silhouettes beyond doubt
-    long uncertain = 0;  // edges too close to edge-on to call
-};
-
 // Silhouette edges of ADJACENCY's edges of MESH placed by MODEL, seen from EYE
 // (world space): a correct fin shader emits between `certain` and
 // `certain + uncertain` fins.
 SilhouetteCount countSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency,
                                  const glm::dmat4& model, const glm::dvec3& eye);
-
-// The fin count check's verdict on EMITTED fins (native: a query of the
-// real geometry shader; the page: its emulation's transform feedback)
-// against CPU, for a mesh of EDGES edges, in the report's words.
-struct FinCountVerdict {
-    bool passed = false;
-    std::string detail;  // "the geometry shader emitted 12 fins for 96 edges; ..."
-};
-FinCountVerdict judgeFinCount(long emitted, std::size_t edges, const SilhouetteCount& cpu);
 
 }  // namespace raylab

@@ -1,5 +1,7 @@
 #include "function_tables.h"
 
+#include "count_tables.h"
+
 #include "error.h"
 #include "paths.h"
 
@@ -31,17 +33,25 @@ double numberFrom(const json& v, const std::string& where) {
 
 }  // namespace
 
-std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs) {
-    std::vector<const FunctionSpec*> chosen = specs;
-    if (chosen.empty())
-        for (const FunctionSpec& spec : functionSpecs()) chosen.push_back(&spec);
+#ifndef RAYLAB_REFERENCES_AS_DATA
+std::string functionTablesJson() {
+    std::vector<const FunctionSpec*> specs;
+    for (const FunctionSpec& spec : functionSpecs()) specs.push_back(&spec);
+    std::vector<const StageInfo*> stages;
+    for (const StageInfo& stage : allStages()) stages.push_back(&stage);
+    return functionTablesJson(specs, stages);
+}
+
+std::string functionTablesJson(const std::vector<const FunctionSpec*>& chosen,
+                               const std::vector<const StageInfo*>& stages) {
     // One line per case (compact, yet a changed case shows as one line in a diff).
     std::string text = "{\"about\": \"the function checks' inputs and expected values, and "
-                       "their harness GLSL (raylab function-tables)\",\n \"functions\": {\n";
+                       "their harness GLSL; the count checks' CPU figures for the stages' "
+                       "views (raylab function-tables)\",\n \"functions\": {";
     bool firstSpec = true;
     for (const FunctionSpec* spec : chosen) {
         const std::vector<glm::dvec4> wants = referenceWants(*spec);
-        text += std::string(firstSpec ? "" : ",\n") + "  " + json(spec->name).dump() + ": {\n";
+        text += std::string(firstSpec ? "\n" : ",\n") + "  " + json(spec->name).dump() + ": {\n";
         firstSpec = false;
         text += "   \"prelude\": " + json(spec->prelude).dump() + ",\n";
         text += "   \"helpers\": " + json(spec->helpers).dump() + ",\n";
@@ -50,17 +60,27 @@ std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs) {
             json in = json::array();
             for (const glm::dvec4& a : spec->cases[i].in)
                 in.push_back({number(a.x), number(a.y), number(a.z), number(a.w)});
-            const json c = {
+            json c = {
                 {"case", spec->cases[i].label},
                 {"in", in},
                 {"want",
                  {number(wants[i].x), number(wants[i].y), number(wants[i].z), number(wants[i].w)}}};
+            if (spec->cases[i].hitOrMiss) c["either"] = true;
             text += "    " + c.dump() + (i + 1 < spec->cases.size() ? ",\n" : "\n");
         }
         text += "   ]\n  }";
     }
-    return text + "\n }\n}\n";
+    text += std::string(chosen.empty() ? "" : "\n ") + "},\n \"counts\": {";
+    bool firstStage = true;
+    const json counts = countTablesJson(stages);
+    for (const auto& [stage, checks] : counts.items()) {
+        text += std::string(firstStage ? "\n" : ",\n") + "  " + json(stage).dump() + ": " +
+                checks.dump();
+        firstStage = false;
+    }
+    return text + (firstStage ? "" : "\n ") + "}\n}\n";
 }
+#endif
 
 FunctionTables parseFunctionTables(const std::string& text, const std::string& file,
                                    TableCoverage coverage) {
@@ -117,7 +137,10 @@ FunctionTables parseFunctionTables(const std::string& text, const std::string& f
                                     std::to_string(theirs) +
                                     " in the table: this build makes another case");
                 }
+            if (c.contains("either") && !c["either"].is_boolean())
+                throw Error(at + ": \"either\" must be true or false");
             t.labels.push_back(spec.cases[i].label);
+            t.either.push_back(c.value("either", false));
             t.wants.emplace_back(numberFrom(c["want"][0], at), numberFrom(c["want"][1], at),
                                  numberFrom(c["want"][2], at), numberFrom(c["want"][3], at));
         }
@@ -152,6 +175,8 @@ FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& s
     FunctionSpec out = spec;
     out.prelude = table.prelude;
     out.helpers = table.helpers;
+    for (std::size_t i = 0; i < out.cases.size() && i < table.either.size(); ++i)
+        out.cases[i].hitOrMiss = table.either[i];
     return out;
 }
 

@@ -7,6 +7,7 @@
 // themselves run. A students' bundle (`raylab web-bundle`) holds the tables
 // of its released stages' checks only.
 #include "function_checks.h"
+#include "stage_catalog.h"
 
 #include <map>
 #include <string>
@@ -17,13 +18,23 @@ namespace raylab {
 struct FunctionTable {
     std::vector<std::string> labels;  // the cases', to notice a table that drifted
     std::vector<glm::dvec4> wants;
+    // The cases a float answer may call either way (FunctionCase::hitOrMiss):
+    // where the reference decides it (an edge-on silhouette), a build
+    // without the reference takes it from here.
+    std::vector<bool> either;
     std::string prelude, helpers;  // the spec's harness GLSL (RAYLAB_HARNESS_GLSL)
 };
 using FunctionTables = std::map<std::string, FunctionTable>;
 
-// The tables of SPECS as JSON (needs the references and the harness GLSL:
-// native only); every function check's when SPECS is empty.
-std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs = {});
+#ifndef RAYLAB_REFERENCES_AS_DATA
+// The tables of every function check, and the count tables of every stage
+// (count_tables.h), as JSON (needs the references and the harness GLSL:
+// native only).
+std::string functionTablesJson();
+// The tables of SPECS and the count tables of STAGES only (a release).
+std::string functionTablesJson(const std::vector<const FunctionSpec*>& specs,
+                               const std::vector<const StageInfo*>& stages);
+#endif
 
 // Whether a file must hold every function check's table (the project's
 // web/function_tables.json) or holds some (a bundle's: its stages' checks).
@@ -41,9 +52,9 @@ FunctionTables parseFunctionTables(const std::string& text, const std::string& f
 const FunctionTable& tableOf(const FunctionTables& tables, const std::string& name,
                              const std::string& file);
 
-// SPEC with its harness GLSL from TABLES (the page's core, where the spec
-// was built without it). Throws Error naming FILE when TABLES has no table
-// for SPEC (a bundle without the stage that checks it).
+// SPEC with its harness GLSL and its cases' `either` from TABLES (the page's
+// core and a student repository, where the spec was built without them). Throws Error naming FILE
+// when TABLES has no table for SPEC (a bundle without the stage that checks it).
 FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
                              const std::string& file);
 

@@ -137,8 +137,9 @@ TEST_F(StudentRepo, HoldsNoAnswerAndTheSearchFindsPlantedOnes) {
     CommandResult r = runCommand(search + quote(origin().string()));
     EXPECT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.out.find("0 findings"), std::string::npos) << r.out;
-    for (const char* part : {"solution/01-raycast/intersect_sphere.glsl", "raytrace/reference",
-                             "src/bench", "fur_reference", "cmd_bench.cpp", "tests/"})
+    for (const char* part :
+         {"solution/01-raycast/intersect_sphere.glsl", "raytrace/reference", "src/bench",
+          "fur_reference", "silhouette.cpp", "silhouette.h", "cmd_bench.cpp", "tests/"})
         for (const std::string& f : filesUnder(origin()))
             EXPECT_EQ(f.find(part), std::string::npos) << f << " holds " << part;
 
@@ -223,6 +224,18 @@ TEST_F(StudentRepo, RefusesWhatNeedsTheSolutionInOneLine) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
     }
     EXPECT_FALSE(fs::exists(clone() / "x.png"));
+    // Nor do the guides send the student to them (their with-solution
+    // blocks are left out: lab_folder.h), nor to the folders left out.
+    int guides = 0;
+    for (const std::string& f : filesUnder(origin() / "labs"))
+        if (fs::path(f).filename() == "README.md") {
+            const std::string text = readFile(origin() / "labs" / f);
+            for (const char* absent :
+                 {"--solution", "--reference", "raylab demo", "solution/", "with-solution"})
+                EXPECT_EQ(text.find(absent), std::string::npos) << f << " says " << absent;
+            ++guides;
+        }
+    EXPECT_GE(guides, 4);
     CommandResult help = student("--help");
     for (const char* absent : {"grade", "bench", "handout", "student-repo", "demo"})
         EXPECT_EQ(help.out.find("\n  " + std::string(absent) + " "), std::string::npos)

@@ -52,14 +52,18 @@ void checkHandoutSources(const std::vector<HandoutStage>& plan, const fs::path& 
 
 void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& labs,
                         const fs::path& to, const std::string& labFolder,
-                        const CourseSettings& course, Level level) {
+                        const CourseSettings& course, Level level, SolutionText solution) {
     std::error_code ec;
     for (const HandoutStage& h : plan) {
         const fs::path from = labs / h.stage->id, stageTo = to / h.stage->id;
         // The open level's own files and guide; none at the guided level (labs/ has them).
-        const std::map<std::string, std::string> open = level == Level::Open
-                                                            ? labFolderFiles(*h.stage, Level::Open)
-                                                            : std::map<std::string, std::string>{};
+        std::map<std::string, std::string> open = level == Level::Open
+                                                      ? labFolderFiles(*h.stage, Level::Open)
+                                                      : std::map<std::string, std::string>{};
+        // A guide without what needs the solution: from the stage's guide.md.
+        if (solution == SolutionText::LeaveOut &&
+            fs::is_regular_file(h.stage->folder() / "guide.md", ec))
+            open["README.md"] = stageGuide(*h.stage, level, h.stage->grading, solution);
         fs::create_directories(stageTo);
         // The guide and its pictures; the shader files the plan names.
         for (const auto& [name, picture] : labPictures(from, level))

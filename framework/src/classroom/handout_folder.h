@@ -5,6 +5,7 @@
 // them.
 #include "course_file.h"
 #include "handout.h"
+#include "lab_folder.h"
 #include "lab_markers.h"
 
 #include <filesystem>
@@ -21,11 +22,13 @@ void checkHandoutSources(const std::vector<HandoutStage>& plan, const std::files
 // LABFOLDER: how the guides' commands name the folder ("week3/"; empty:
 // leave them alone). At the open level a stage's own files and its guide
 // are generated from solution/ (lab_folder.h); LABS gives the pictures and
-// the earlier stages' solved files. Throws std::filesystem::filesystem_error
-// or Error.
+// the earlier stages' solved files. SOLUTION LeaveOut: the guides without
+// what needs the solution (a student repository: lab_folder.h). Throws
+// std::filesystem::filesystem_error or Error.
 void writeHandoutFolder(const std::vector<HandoutStage>& plan, const std::filesystem::path& labs,
                         const std::filesystem::path& to, const std::string& labFolder,
-                        const CourseSettings& course, Level level = Level::Guided);
+                        const CourseSettings& course, Level level = Level::Guided,
+                        SolutionText solution = SolutionText::Keep);
 
 // --out OUTDIR as a folder to write: a name ("week3/" is week3), new or
 // empty, in a folder that exists. Throws Error("--out ...: why").

@@ -81,8 +81,10 @@ bool leftOut(const fs::path& rel) {
     if (rel.parent_path() == "cli") return !kStudentCli.count(rel.filename().string());
     if (rel.parent_path() == "classroom" || rel.parent_path() == "grading")
         return !kStudentGrading.count(r);
-    // The fur functions in double precision: references of the fur checks.
-    return rel.parent_path() == "fur/mesh" && rel.stem() == "fur_reference";
+    // The fur functions in double precision and the silhouette count
+    // (TODO f3.a's answer): references of the fur checks.
+    return rel.parent_path() == "fur/mesh" &&
+           (rel.stem() == "fur_reference" || rel.stem() == "silhouette");
 }
 
 // framework/ as a student repository holds it.
@@ -160,7 +162,7 @@ void writeCourse(const fs::path& root, const fs::path& handout,
     // The labs as handed out (a file missing from a student's folder is read
     // from here, as grading does).
     fs::create_directories(handout);
-    writeHandoutFolder(plan, defaultLabRoot(), handout, "", course, level);
+    writeHandoutFolder(plan, defaultLabRoot(), handout, "", course, level, SolutionText::LeaveOut);
     copyTree(handout, root / "course" / "handout");
     json stagesJson = json::array();
     for (const HandoutStage& h : plan) stagesJson.push_back(h.stage->id);

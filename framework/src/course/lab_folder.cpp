@@ -21,10 +21,13 @@ std::string trimmedLine(const std::string& s) {
 
 }  // namespace
 
-std::string guideAtLevel(const std::string& source, Level level, const std::string& file) {
-    // The section we are in: "" (shared), "guided" or "open".
+std::string guideAtLevel(const std::string& source, Level level, const std::string& file,
+                         SolutionText solution) {
+    // The section we are in: "" (shared), "guided" or "open"; and whether in
+    // a with-solution block (which may hold level sections or sit in one).
     std::string section;
-    int sectionLine = 0;
+    std::string solutionBlock;  // "with-solution" or "without-solution"
+    int sectionLine = 0, solutionLine = 0;
     std::string out;
     std::istringstream in(source);
     std::string line;
@@ -47,13 +50,35 @@ std::string guideAtLevel(const std::string& source, Level level, const std::stri
             section.clear();
             continue;
         }
+        if (t == "<!-- with-solution -->" || t == "<!-- without-solution -->") {
+            if (solutionLine)
+                fail(n, t + " inside the <!-- " + solutionBlock + " --> opened on line " +
+                            std::to_string(solutionLine));
+            solutionBlock = t.substr(5, t.size() - 9);
+            solutionLine = n;
+            continue;
+        }
+        if (t == "<!-- /with-solution -->" || t == "<!-- /without-solution -->") {
+            if (!solutionLine || solutionBlock != t.substr(6, t.size() - 10))
+                fail(n, t + " closes no block opened before it");
+            solutionLine = 0;
+            continue;
+        }
         if (!section.empty() && t.rfind("#", 0) == 0)
             fail(n, "a heading inside the " + section +
                         " section: headings are shared by both levels (one outline)");
-        if (section.empty() || section == levelName(level)) out += line + "\n";
+        if (solutionLine && t.rfind("#", 0) == 0)
+            fail(n, "a heading inside <!-- " + solutionBlock +
+                        " -->: a student repository's guide keeps the outline");
+        const bool kept =
+            !solutionLine || (solutionBlock == "with-solution") == (solution == SolutionText::Keep);
+        if ((section.empty() || section == levelName(level)) && kept) out += line + "\n";
     }
     if (!section.empty())
         fail(sectionLine, "<!-- " + section + " --> not closed with <!-- /" + section + " -->");
+    if (solutionLine)
+        fail(solutionLine,
+             "<!-- " + solutionBlock + " --> not closed with <!-- /" + solutionBlock + " -->");
     return out;
 }
 
@@ -78,10 +103,11 @@ std::map<std::string, std::filesystem::path> labPictures(const std::filesystem::
     return pictures;
 }
 
-std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading) {
+std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading,
+                       SolutionText solution) {
     const std::filesystem::path source = stage.folder() / "guide.md";
-    return withGradingSection(guideAtLevel(readTextFile(source), level, displayPath(source)), stage,
-                              grading);
+    return withGradingSection(
+        guideAtLevel(readTextFile(source), level, displayPath(source), solution), stage, grading);
 }
 
 std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level) {

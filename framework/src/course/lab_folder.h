@@ -17,10 +17,21 @@
 
 namespace raylab {
 
-// SOURCE (a guide.md, FILE in messages) at LEVEL, the level markers
-// removed. Throws Error("FILE:LINE: ...") for an unclosed or nested section
-// or a heading inside one.
-std::string guideAtLevel(const std::string& source, Level level, const std::string& file);
+// What a guide says that needs the course's solution or its reference
+// tracer (`run --solution`, `render --reference`, `demo`), between
+// "<!-- with-solution -->" and "<!-- /with-solution -->": kept in the
+// template's labs, left out of a student repository (`raylab student-repo`),
+// whose build has neither. What it says there instead, between
+// "<!-- without-solution -->" and "<!-- /without-solution -->": the other
+// way round.
+enum class SolutionText { Keep, LeaveOut };
+
+// SOURCE (a guide.md, FILE in messages) at LEVEL, the level markers and the
+// with-solution markers removed (with SOLUTION LeaveOut, what they enclose
+// too). Throws Error("FILE:LINE: ...") for an unclosed or nested section or
+// a heading inside one.
+std::string guideAtLevel(const std::string& source, Level level, const std::string& file,
+                         SolutionText solution = SolutionText::Keep);
 
 // The hand-made files of the lab folder DIR (labs/<id>/: pictures, not the
 // shader files or README.md) as a lab folder at LEVEL holds them: its name
@@ -31,7 +42,8 @@ std::map<std::string, std::filesystem::path> labPictures(const std::filesystem::
                                                          Level level);
 
 // STAGE's guide at LEVEL, its "How you are graded" from GRADING.
-std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading);
+std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& grading,
+                       SolutionText solution = SolutionText::Keep);
 
 // Every generated file of STAGE's lab folder at LEVEL: name -> text (the
 // shader files and README.md, the guide with the stage's own grading; none

@@ -55,6 +55,11 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     std::printf("[ figure   ] 30 students x %zu stages graded in %.1f s with --jobs 2\n",
                 raylab::allStages().size(), seconds);
     ASSERT_EQ(r.exitCode, 0) << r.all();
+    std::smatch once;
+    if (std::regex_search(r.out, once, std::regex(R"((\d+) of (\d+) items the same work)")))
+        std::printf("[ figure   ] %s of %s items the same work as another student's: graded "
+                    "once\n",
+                    once[1].str().c_str(), once[2].str().c_str());
 
     int checked = 0;
     for (const auto& [student, stages] : expected.items()) {
@@ -171,4 +176,60 @@ TEST(GradeClass, ThirtySubmissionsScoreAsExpected) {
     EXPECT_LT(index, 1u << 20);
     EXPECT_EQ(readFile(dir / "out" / "report.html").find("<img"), std::string::npos);
     std::printf("[ figure   ] report.html for %zu students: %ju bytes\n", std::size_t(30), index);
+}
+
+// The same work handed in by several students (a team's code in each
+// member's folder) is graded once (same_work.h): each gets the result, with
+// the pictures in their own folder; a result that names its student (a
+// compile error names the file's folder) is not given on: that work is
+// graded again for each.
+TEST(GradeClass, TheSameWorkIsGradedOnceAndEachStudentKeepsTheirOwnPictures) {
+    ScratchDir dir;
+    ScratchDir solved;
+    writeSolvedLabs(solved.path());
+    const fs::path subs = dir / "submissions";
+    for (const char* name : {"ada", "ben", "cid", "dan"}) {
+        fs::create_directories(subs / name);
+        fs::copy(solved / "01-raycast", subs / name / "01-raycast", fs::copy_options::recursive);
+    }
+    for (const char* name : {"cid", "dan"}) {
+        const fs::path file = subs / name / "01-raycast" / "intersect_sphere.glsl";
+        writeFile(file, readFile(file) + "\nthis is not GLSL\n");
+    }
+    CommandResult r = runRaylab("grade --submissions " + quote(subs.string()) + " --out " +
+                                quote((dir / "out").string()) + " --stages 01 --jobs 2");
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    EXPECT_NE(r.out.find("raylab grade: 1 of 4 items the same work as another student's: graded "
+                         "once"),
+              std::string::npos)
+        << r.out;
+    auto result = [&](const std::string& name) {
+        return json::parse(readFile(dir / "out/students" / name / "01-raycast/result.json"));
+    };
+    const json ada = result("ada"), ben = result("ben");
+    EXPECT_EQ(ada["score"], 100.0);
+    ASSERT_EQ(ada["checks"].size(), ben["checks"].size());
+    int pictures = 0;
+    for (std::size_t i = 0; i < ada["checks"].size(); ++i) {
+        const json &a = ada["checks"][i], &b = ben["checks"][i];
+        EXPECT_EQ(a["score"], b["score"]);
+        EXPECT_EQ(a["output"], b["output"]);
+        if (!a.contains("student_image") || a["student_image"] == "") continue;  // a function
+        const std::string mine = b["student_image"];
+        EXPECT_EQ(mine.rfind("students/ben/01-raycast/", 0), 0u) << mine;
+        EXPECT_TRUE(fs::is_regular_file(dir / "out" / mine)) << mine;
+        ++pictures;
+    }
+    EXPECT_GT(pictures, 5);
+    EXPECT_EQ(readFile(dir / "out/students/ben/01-raycast/result.json").find("ada"),
+              std::string::npos);
+    // The compile errors name each student's own file.
+    for (const char* name : {"cid", "dan"}) {
+        const json c = result(name);
+        EXPECT_EQ(c["status"], "compile error");
+        const std::string message = c["message"];
+        EXPECT_NE(message.find(std::string(name) + "/01-raycast/intersect_sphere.glsl"),
+                  std::string::npos)
+            << message;
+    }
 }

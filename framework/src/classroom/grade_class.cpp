@@ -10,6 +10,7 @@
 #include "lms_exports.h"
 #include "paths.h"
 #include "pseudonyms.h"
+#include "same_work.h"
 #include "stage_list.h"
 
 #include <unistd.h>
@@ -349,12 +350,28 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
     std::deque<Item> queue;
     result.anonymised = !g.anonymise.empty();
     result.courseDigest = fileDigest(g.course);
+    // An item whose work is an earlier item's is not run: it gets that
+    // item's result (same_work.h).
+    std::map<std::string, Item> leaderOf;       // work -> the item that grades it
+    std::vector<std::pair<Item, Item>> sameAs;  // (item, its leader)
     for (std::size_t i = 0; i < students.size(); ++i) {
         result.students[i].name = shown[i];
         fs::create_directories(studentFolder(out, shown[i]), ec);
-        for (const StageInfo* s : stages) queue.push_back({i, s});
+        const fs::path lab = submissions / students[i];
+        for (const StageInfo* s : stages) {
+            const std::optional<std::string> work =
+                stageFolderExists(lab / s->id) ? sameWorkKey(*s, lab) : std::nullopt;
+            if (work) {
+                const auto [at, first] = leaderOf.emplace(*work, Item{i, s});
+                if (!first) {
+                    sameAs.emplace_back(Item{i, s}, at->second);
+                    continue;
+                }
+            }
+            queue.push_back({i, s});
+        }
     }
-    Progress progress(queue.size());
+    Progress progress(queue.size() + sameAs.size());
     const ChildLimits limits{g.timeoutSeconds, g.memoryMb};
     // Runs ITEMS with up to JOBS children; FINISH gets each item's result.
     auto runItems = [&](const std::deque<Item>& items, int jobs,
@@ -418,27 +435,51 @@ std::optional<ClassResult> gradeClass(const GradeOptions& g) {
         };
         return runPool(items.size(), jobs, startItem, itemDone, interrupted);
     };
-    std::deque<Item> timedOut;
-    bool completed = runItems(queue, g.jobs, [&](const Item& item, StageResult r) {
-        // With --jobs 1 the item ran alone already: a rerun would cost the
-        // timeout again for the same verdict.
-        if (r.status == "timed out" && g.jobs > 1) timedOut.push_back(item);
-        else progress.done(students[item.student], r);
-        graded[{item.student, item.stage->id}] = std::move(r);
-    });
-    // A wall-clock limit depends on the load: an item that timed out while
-    // others ran beside it gets a second run on its own before it scores 0.
-    // (Gradescope and PrairieLearn grade with --jobs 1: no second run.)
-    if (completed && !timedOut.empty()) {
-        std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n",
-                     timedOut.size(), timedOut.size() == 1 ? "" : "s",
-                     timedOut.size() == 1 ? "it" : "them", timedOut.size() == 1 ? "its" : "their");
-        completed = runItems(timedOut, 1, [&](const Item& item, StageResult r) {
-            progress.done(students[item.student], r);
+    // Grades ITEMS; false when interrupted.
+    auto gradeItems = [&](const std::deque<Item>& items) {
+        std::deque<Item> timedOut;
+        bool completed = runItems(items, g.jobs, [&](const Item& item, StageResult r) {
+            // With --jobs 1 the item ran alone already: a rerun would cost the
+            // timeout again for the same verdict.
+            if (r.status == "timed out" && g.jobs > 1) timedOut.push_back(item);
+            else progress.done(students[item.student], r);
             graded[{item.student, item.stage->id}] = std::move(r);
         });
+        // A wall-clock limit depends on the load: an item that timed out while
+        // others ran beside it gets a second run on its own before it scores 0.
+        // (Gradescope and PrairieLearn grade with --jobs 1: no second run.)
+        if (completed && !timedOut.empty()) {
+            std::fprintf(stderr, "raylab grade: %zu item%s timed out; running %s again on %s own\n",
+                         timedOut.size(), timedOut.size() == 1 ? "" : "s",
+                         timedOut.size() == 1 ? "it" : "them",
+                         timedOut.size() == 1 ? "its" : "their");
+            completed = runItems(timedOut, 1, [&](const Item& item, StageResult r) {
+                progress.done(students[item.student], r);
+                graded[{item.student, item.stage->id}] = std::move(r);
+            });
+        }
+        return completed;
+    };
+    if (!gradeItems(queue)) return std::nullopt;
+    // The same work's result for each student who handed it in; graded on
+    // their own where the result names its student (same_work.h).
+    std::deque<Item> ownRun;
+    for (const auto& [item, leader] : sameAs) {
+        std::optional<StageResult> r =
+            copySameWork(graded.at({leader.student, leader.stage->id}), out, shown[leader.student],
+                         shown[item.student], {students[leader.student], shown[leader.student]});
+        if (!r) {
+            ownRun.push_back(item);
+            continue;
+        }
+        progress.done(students[item.student], *r);
+        graded[{item.student, item.stage->id}] = std::move(*r);
     }
-    if (!completed) return std::nullopt;
+    if (!gradeItems(ownRun)) return std::nullopt;
+    if (sameAs.size() > ownRun.size())
+        std::printf("raylab grade: %zu of %zu items the same work as another student's: graded "
+                    "once\n",
+                    sameAs.size() - ownRun.size(), queue.size() + sameAs.size());
     for (std::size_t i = 0; i < students.size(); ++i)
         for (const StageInfo* s : stages) result.students[i].stages.push_back(graded[{i, s->id}]);
     result.seconds =

@@ -96,9 +96,12 @@ std::vector<std::string> readmeCommands(const fs::path& readme) {
 // The report without its first line (which names where the pictures come
 // from: the solution rendered here, or the repository's references).
 std::string report(const std::string& out) {
-    const std::size_t at = out.find("raylab check: stage ");
-    const std::size_t next = at == std::string::npos ? at : out.find('\n', at);
-    return next == std::string::npos ? out : out.substr(0, at) + out.substr(next + 1);
+    // The header ("raylab check: stage 03-shadows, lab ... against ..."), not
+    // a note on an earlier stage ("raylab check: stage f3 reads your own ...").
+    std::smatch header;
+    if (!std::regex_search(out, header, std::regex("raylab check: stage [^ ]+, [^\n]*\n")))
+        return out;
+    return header.prefix().str() + header.suffix().str();
 }
 
 }  // namespace
@@ -257,7 +260,7 @@ TEST_F(StudentRepo, ALaterReleaseReachesTheCloneWithoutTouchingTheStudentsWork) 
     EXPECT_EQ(r.exitCode, 2) << r.all();
     EXPECT_NE(r.err.find("already releases 03-shadows"), std::string::npos) << r.err;
 
-    r = runRaylab("student-repo --stages 01-04 --out " + quote(origin().string()));
+    r = runRaylab("student-repo --stages 01-04,f1-f3 --out " + quote(origin().string()));
     ASSERT_EQ(r.exitCode, 0) << r.all();
     EXPECT_NE(r.out.find("new labs 04-recursion"), std::string::npos) << r.out;
     r = runCommand("cd " + quote(origin().string()) + " && " + kGit + "add -A && " + kGit +
@@ -273,4 +276,31 @@ TEST_F(StudentRepo, ALaterReleaseReachesTheCloneWithoutTouchingTheStudentsWork) 
     EXPECT_TRUE(fs::is_regular_file(clone() / "labs/04-recursion/README.md"));
     EXPECT_TRUE(fs::is_directory(clone() / "course/references/04-recursion"));
     EXPECT_TRUE(fs::is_regular_file(clone() / "course/handed-out/04-recursion/front.png"));
+
+    // f3's fin count, which the student build judges against the count
+    // tables (it holds no silhouette test): the instructors' report on the
+    // lab as handed out, word for word, and a pass on the solved one.
+    CommandResult mineF3 = student("check --stage f3");
+    EXPECT_EQ(mineF3.exitCode, 1) << mineF3.all();
+    CommandResult theirs =
+        runRaylab("check --stage f3 --lab " + quote((clone() / "labs").string()) + " --against " +
+                  quote((sourceDir() / "tests/reference/f3-fins").string()));
+    EXPECT_NE(mineF3.out.find("FAIL fin_count"), std::string::npos) << mineF3.out;
+    // (Run from here, the instructors' build names the clone's lab folder
+    // in full, which the student's, run in the clone, calls labs/.)
+    std::string theirsHere = theirs.out;
+    const std::string labs = (clone() / "labs").string();
+    const std::vector<std::pair<std::string, std::string>> named = {{" --lab " + labs, ""},
+                                                                    {labs + "/", "labs/"}};
+    for (const auto& [from, to] : named)
+        for (std::size_t at; (at = theirsHere.find(from)) != std::string::npos;)
+            theirsHere.replace(at, from.size(), to);
+    EXPECT_NE(mineF3.out.find("reads your own labs/f2-shells/"), std::string::npos)
+        << "the earlier stages' slips, named where they are";
+    EXPECT_EQ(report(mineF3.out), report(theirsHere));
+    ScratchDir solved;
+    writeSolvedLabs(solved.path());
+    CommandResult solvedF3 = student("check --stage f3 --lab " + quote(solved.path()));
+    EXPECT_EQ(solvedF3.exitCode, 0) << solvedF3.all();
+    EXPECT_NE(solvedF3.out.find("PASS fin_count"), std::string::npos) << solvedF3.out;
 }

@@ -4,6 +4,7 @@
 #include "lab_files.h"
 #include "lab_folder.h"
 #include "paths.h"
+#include "shader_source.h"
 
 #include <map>
 
@@ -113,16 +114,31 @@ std::vector<OwnEarlierStage> ownEarlierStagesRead(const StageInfo& stage,
                                                   const StageSources& sources) {
     std::vector<OwnEarlierStage> out;
     if (!sources.lab || sources.earlierSolved || sources.chain.size() < 2) return out;
-    if (!solutionCodePresent(stage)) return out;
     std::error_code ec;
     // Each file is read from the first folder of the search that has it.
     std::map<std::string, fs::path> readFrom;
-    for (const auto& [name, file] : labFileSources(stage))
-        for (const fs::path& dir : sources.search)
-            if (fs::is_regular_file(dir / name, ec)) {
-                readFrom[name] = dir;
-                break;
-            }
+    if (solutionCodePresent(stage)) {
+        // The files the solution's programs read (a lab's own may not assemble).
+        for (const auto& [name, file] : labFileSources(stage))
+            for (const fs::path& dir : sources.search)
+                if (fs::is_regular_file(dir / name, ec)) {
+                    readFrom[name] = dir;
+                    break;
+                }
+    } else {
+        // A student repository holds no solution: the lab's own programs
+        // say what they read (none when they do not assemble).
+        try {
+            for (const auto& [key, program] : stage.allPrograms())
+                for (const std::string& entry :
+                     {program->vertex, program->geometry, program->fragment}) {
+                    if (entry.empty()) continue;
+                    for (const fs::path& f :
+                         assembleShader(entry, sources.search, stage.defines()).files)
+                        readFrom.emplace(f.filename().string(), f.parent_path());
+                }
+        } catch (const Error&) { return out; }
+    }
     // Newest first, as the search reads them.
     for (std::size_t i = 1; i < sources.chain.size(); ++i) {
         OwnEarlierStage e{sources.chain[i], {}};

@@ -7,7 +7,7 @@
 # served statically, then a submission downloaded from the page and graded,
 # then a grading report read as an instructor reads it), parity (the page's Check
 # against native's verdicts: every stage, every catalogued mistake in
-# Chromium, a different third of them in Firefox and in WebKit; ctest labels
+# Chromium, a different sixth of them in Firefox and in WebKit; ctest labels
 # web and web-parity). RAYLAB_BROWSER=firefox: in Firefox ESR instead
 # of Chromium (ctest's web_browser_firefox, web_parity_firefox); webkit: in
 # WebKitGTK, under an X display (web_parity_webkit).
@@ -60,10 +60,10 @@ case "$step" in
       node web/tests/browser/submission.mjs --raylab "$raylab" --labgen "$labgen"
     fi ;;
   parity)
-    # Chromium checks every mistake; Firefox and WebKit each a different third.
+    # Chromium checks every mistake; Firefox and WebKit each a different sixth.
     case "${RAYLAB_BROWSER:-}" in
-      firefox) share=(--every 3 --offset 0) ;;
-      webkit) share=(--every 3 --offset 1) ;;
+      firefox) share=(--every 6 --offset 0) ;;
+      webkit) share=(--every 6 --offset 3) ;;
       *) share=(--all) ;;
     esac
     node web/tests/browser/check_parity.mjs "${share[@]}" --labgen "$labgen" ;;

@@ -66,6 +66,11 @@ async function countResults(name: string, stage: StageJson, rendererFor: (scene:
   return results;
 }
 
+// The lab as handed out's pictures of each stage's check views ("stage/view"),
+// drawn by the first Check that needs them: the files they come from
+// (labs/ of the page's course) stay the same while the page is open.
+const handedOutPictures = new Map<string, Uint8Array>();
+
 // LABEL: where the code comes from, as the report's first line names it.
 // SCORE: end the report with the grader's score (when a view fails, the lab
 // as handed out is drawn from the check views for it, as natively).
@@ -122,19 +127,25 @@ export async function runCheck(gl: WebGL2RenderingContext, catalog: Catalog, sta
           });
         }
         // The score's rule on views the lab as handed out draws (native:
-        // cmd_check.cpp): drawn only when a view fails.
+        // cmd_check.cpp): drawn only when a view fails, once a page session
+        // (the lab as handed out does not change in it).
         if (score && views.some((v) => !v.passed)) {
           const handedOut = new Map<string, LoadedStage>();
           try {
             for (const view of stage.check_views) {
-              const scene = sceneOfView(stage, view);
-              let r = handedOut.get(scene);
-              if (!r) {
-                r = await loadStage(gl, catalog, stage, { kind: 'lab' }, scene, { bvh: true, todoMarks: true });
-                handedOut.set(scene, r);
+              const key = `${stage.id}/${view.name}`;
+              let rgba = handedOutPictures.get(key);
+              if (!rgba) {
+                const scene = sceneOfView(stage, view);
+                let r = handedOut.get(scene);
+                if (!r) {
+                  r = await loadStage(gl, catalog, stage, { kind: 'lab' }, scene, { bvh: true, todoMarks: true });
+                  handedOut.set(scene, r);
+                }
+                rgba = draw(r, view).rgba;
+                handedOutPictures.set(key, rgba);
               }
-              const read = draw(r, view);
-              const added = JSON.parse(session.addUntouched(view.name, read.rgba, CHECK_WIDTH, CHECK_HEIGHT)) as { error?: string };
+              const added = JSON.parse(session.addUntouched(view.name, rgba, CHECK_WIDTH, CHECK_HEIGHT)) as { error?: string };
               if (added.error) throw new Error(added.error);
             }
           } finally {

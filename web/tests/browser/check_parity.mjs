@@ -16,7 +16,7 @@
 // --all: every mistake (ctest web_parity, labels web and web-parity);
 // --every N [--offset K]: of all mistakes in course order, those whose index
 // is K modulo N (the second and third engines' parity: Chromium runs every
-// mistake, Firefox and WebKit each a different third; every engine still
+// mistake, Firefox and WebKit each a different sixth; every engine still
 // checks every stage's solution and untouched lab).
 // Usage: node tests/browser/check_parity.mjs [--all | --every N [--offset K]] [--stages 01,f3] [--labgen PATH]
 import { execFileSync } from 'node:child_process';

@@ -15,7 +15,7 @@ namespace {
 
 const std::string kGuide = "intro\n"
                            "<!-- with-solution -->\n"
-                           "build/raylab run --stage 01 --solution\n"
+                           "raylab run --stage 01 --solution\n"
                            "<!-- /with-solution -->\n"
                            "<!-- without-solution -->\n"
                            "your repository holds no solution\n"
@@ -32,9 +32,9 @@ const std::string kGuide = "intro\n"
 
 TEST(GuideSolutionBlocks, KeptInTheTemplateLeftOutOfAStudentRepository) {
     EXPECT_EQ(guideAtLevel(kGuide, Level::Guided, "g.md"),
-              "intro\nbuild/raylab run --stage 01 --solution\nend\n");
+              "intro\nraylab run --stage 01 --solution\nend\n");
     EXPECT_EQ(guideAtLevel(kGuide, Level::Open, "g.md"),
-              "intro\nbuild/raylab run --stage 01 --solution\nopen text\nopen and solution\nend\n");
+              "intro\nraylab run --stage 01 --solution\nopen text\nopen and solution\nend\n");
     EXPECT_EQ(guideAtLevel(kGuide, Level::Guided, "g.md", SolutionText::LeaveOut),
               "intro\nyour repository holds no solution\nend\n");
     EXPECT_EQ(guideAtLevel(kGuide, Level::Open, "g.md", SolutionText::LeaveOut),

@@ -19,66 +19,75 @@ std::string trimmedLine(const std::string& s) {
     return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
+// A guide's pair of marker lines "<!-- NAME -->" and "<!-- /NAME -->" for
+// one of two NAMES, not nested in itself.
+struct MarkedBlock {
+    const char* names[2];
+    bool section;      // "the guided section" in messages; else "<!-- NAME -->"
+    std::string name;  // the one open; empty when none is
+    int line = 0;      // where it opened
+
+    bool open() const { return !name.empty(); }
+    std::string shown() const { return section ? name + " section" : "<!-- " + name + " -->"; }
+    // Whether T is one of the markers (then taken); FAIL(N, WHY) when misplaced.
+    template <class Fail>
+    bool take(const std::string& t, int n, Fail fail) {
+        for (const char* candidate : names) {
+            if (t == "<!-- " + std::string(candidate) + " -->") {
+                if (open())
+                    fail(n,
+                         t + " inside the " + shown() + " opened on line " + std::to_string(line));
+                name = candidate, line = n;
+                return true;
+            }
+            if (t == "<!-- /" + std::string(candidate) + " -->") {
+                if (name != candidate)
+                    fail(n,
+                         t + " closes no " + (section ? "section" : "block") + " opened before it");
+                name.clear();
+                return true;
+            }
+        }
+        return false;
+    }
+    // At the end of the guide: FAIL when one is still open.
+    template <class Fail>
+    void close(Fail fail) const {
+        if (open()) fail(line, "<!-- " + name + " --> not closed with <!-- /" + name + " -->");
+    }
+};
+
 }  // namespace
 
 std::string guideAtLevel(const std::string& source, Level level, const std::string& file,
                          SolutionText solution) {
-    // The section we are in: "" (shared), "guided" or "open"; and whether in
-    // a with-solution block (which may hold level sections or sit in one).
-    std::string section;
-    std::string solutionBlock;  // "with-solution" or "without-solution"
-    int sectionLine = 0, solutionLine = 0;
-    std::string out;
-    std::istringstream in(source);
-    std::string line;
     auto fail = [&](int n, const std::string& what) -> void {
         throw Error(file + ":" + std::to_string(n) + ": " + what);
     };
+    // The level section we are in (none: shared), and the with-solution or
+    // without-solution block (which may hold level sections or sit in one).
+    MarkedBlock section{{"guided", "open"}, true},
+        block{{"with-solution", "without-solution"}, false};
+    std::string out;
+    std::istringstream in(source);
+    std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
         const std::string t = trimmedLine(line);
-        if (t == "<!-- guided -->" || t == "<!-- open -->") {
-            if (!section.empty())
-                fail(n, t + " inside the " + section + " section opened on line " +
-                            std::to_string(sectionLine));
-            section = t.substr(5, t.size() - 9);
-            sectionLine = n;
-            continue;
+        if (section.take(t, n, fail) || block.take(t, n, fail)) continue;
+        if (t.rfind("#", 0) == 0) {
+            if (section.open())
+                fail(n, "a heading inside the " + section.shown() +
+                            ": headings are shared by both levels (one outline)");
+            if (block.open())
+                fail(n, "a heading inside " + block.shown() +
+                            ": a student repository's guide keeps the outline");
         }
-        if (t == "<!-- /guided -->" || t == "<!-- /open -->") {
-            if (section != t.substr(6, t.size() - 10))
-                fail(n, t + " closes no section opened before it");
-            section.clear();
-            continue;
-        }
-        if (t == "<!-- with-solution -->" || t == "<!-- without-solution -->") {
-            if (solutionLine)
-                fail(n, t + " inside the <!-- " + solutionBlock + " --> opened on line " +
-                            std::to_string(solutionLine));
-            solutionBlock = t.substr(5, t.size() - 9);
-            solutionLine = n;
-            continue;
-        }
-        if (t == "<!-- /with-solution -->" || t == "<!-- /without-solution -->") {
-            if (!solutionLine || solutionBlock != t.substr(6, t.size() - 10))
-                fail(n, t + " closes no block opened before it");
-            solutionLine = 0;
-            continue;
-        }
-        if (!section.empty() && t.rfind("#", 0) == 0)
-            fail(n, "a heading inside the " + section +
-                        " section: headings are shared by both levels (one outline)");
-        if (solutionLine && t.rfind("#", 0) == 0)
-            fail(n, "a heading inside <!-- " + solutionBlock +
-                        " -->: a student repository's guide keeps the outline");
         const bool kept =
-            !solutionLine || (solutionBlock == "with-solution") == (solution == SolutionText::Keep);
-        if ((section.empty() || section == levelName(level)) && kept) out += line + "\n";
+            !block.open() || (block.name == "with-solution") == (solution == SolutionText::Keep);
+        if ((!section.open() || section.name == levelName(level)) && kept) out += line + "\n";
     }
-    if (!section.empty())
-        fail(sectionLine, "<!-- " + section + " --> not closed with <!-- /" + section + " -->");
-    if (solutionLine)
-        fail(solutionLine,
-             "<!-- " + solutionBlock + " --> not closed with <!-- /" + solutionBlock + " -->");
+    section.close(fail);
+    block.close(fail);
     return out;
 }
 

@@ -82,9 +82,9 @@ void WebFurStage::showMesh(int furMesh) {
 }
 
 FinCountVerdict WebFurStage::finCount(long emitted, const std::string& view) const {
-    static const std::string file = displayPath(projectRoot() / "web" / "function_tables.json");
-    static const CountTables tables =
-        parseCountTables(readTextFile(projectRoot() / "web" / "function_tables.json"), file);
+    static const std::filesystem::path path = projectRoot() / "web" / "function_tables.json";
+    static const std::string file = displayPath(path);
+    static const CountTables tables = parseCountTables(readTextFile(path), file);
     CountResult measured;
     measured.measuredOnly = true;
     measured.measured = emitted;

@@ -4,7 +4,8 @@
 // written. Then:
 //  - the answer search of the page's bundle, applied to it (and to its C++:
 //    no reference tracer, no reference or stand-in of a check), finds
-//    nothing, and finds each of three planted answers;
+//    nothing (no scene, picture or mesh of a stage not released either),
+//    and finds each of three planted answers and a planted texture;
 //  - its check passes a solved lab and fails the lab as handed out;
 //  - each catalogued mistake of 01-03 fails exactly the checks, with exactly
 //    the hints, that the instructors' build gives it (tests/mistakes:
@@ -147,12 +148,15 @@ TEST_F(StudentRepo, HoldsNoAnswerAndTheSearchFindsPlantedOnes) {
             EXPECT_EQ(f.find(part), std::string::npos) << f << " holds " << part;
 
     // Three answers planted in a copy: a solution file, the reference
-    // tracer's code, a check's reference put back.
+    // tracer's code, a check's reference put back; and a later stage's
+    // texture.
     ScratchDir planted;
     const fs::path copy = planted / "repo";
     fs::copy(origin(), copy, fs::copy_options::recursive);
     fs::remove_all(copy / ".git");
     fs::copy_file(sourceDir() / "solution/02-shading/blinn_phong.glsl", copy / "labs/notes.glsl");
+    fs::create_directories(copy / "assets/textures");
+    fs::copy_file(sourceDir() / "assets/textures/earth.png", copy / "assets/textures/earth.png");
     fs::copy_file(sourceDir() / "framework/src/raytrace/reference/reference_intersect.cpp",
                   copy / "framework/src/core/notes.cpp");
     replaceInFile(copy / "framework/src/grading/checks/intersect_function_cases.cpp",
@@ -163,7 +167,8 @@ TEST_F(StudentRepo, HoldsNoAnswerAndTheSearchFindsPlantedOnes) {
     for (const char* found :
          {"labs/notes.glsl: holds the solution region of solution/02-shading/blinn_phong.glsl",
           "framework/src/core/notes.cpp: holds the reference tracer's line",
-          "intersect_function_cases.cpp: a reference or stand-in left in"})
+          "intersect_function_cases.cpp: a reference or stand-in left in",
+          "assets/textures/earth.png: an asset no released stage draws"})
         EXPECT_NE(r.out.find(found), std::string::npos) << found << "\n" << r.out;
 }
 

@@ -90,6 +90,30 @@ function wasmStrings(coreJs) {
 // What in BUNDLE gives away an answer or holds a stage it does not release: one line per finding.
 // CARRY: solved, where the earlier stages the bundle does not release come
 // solved (their answers are the course's to give).
+// The files under assets/ that the RELEASED stages draw: their scenes (each
+// stage's own and its check views') and every .png or .obj a scene names
+// (relative to the scene's folder), with assets/LICENSES.md and the scenes'
+// README. Read from the scene files here, not from the C++ that writes the
+// release, so that the two are checked against each other.
+export function releasedAssets(released) {
+  const files = new Set(['assets/LICENSES.md', 'assets/scenes/README.md']);
+  const named = (value, out) => {
+    if (typeof value === 'string') { if (/\.(png|obj)$/.test(value)) out.push(value); }
+    else if (value && typeof value === 'object') for (const v of Object.values(value)) named(v, out);
+    return out;
+  };
+  for (const id of released) {
+    const stage = JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8'));
+    for (const scene of [stage.scene, ...(stage.check_views ?? []).map((v) => v.scene).filter(Boolean)]) {
+      const file = `assets/scenes/${scene}`;
+      files.add(file);
+      for (const p of named(JSON.parse(readFileSync(join(projectRoot, file), 'utf8')), []))
+        files.add(relative(projectRoot, join(projectRoot, dirname(file), p)));
+    }
+  }
+  return files;
+}
+
 export function leaksIn(bundle, released, level, carry = 'own', layout = BUNDLE) {
   const found = [];
   const stagesHeld = new Set(released);
@@ -98,6 +122,7 @@ export function leaksIn(bundle, released, level, carry = 'own', layout = BUNDLE)
       at = JSON.parse(readFileSync(join(projectRoot, 'solution', at, 'stage.json'), 'utf8')).builds_on) stagesHeld.add(at);
   const carried = carry === 'solved' ? [...stagesHeld].filter((id) => !released.includes(id)) : [];
   const functions = released.flatMap((id) => JSON.parse(readFileSync(join(projectRoot, 'solution', id, 'stage.json'), 'utf8')).function_checks ?? []);
+  const assets = releasedAssets(released);
   const searched = [...solutionRegions(level).filter((r) => !carried.some((id) => r.where.startsWith(`solution/${id}/`))),
     ...standIns([...new Set(functions)])];
   for (const file of filesUnder(bundle)) {
@@ -109,6 +134,7 @@ export function leaksIn(bundle, released, level, carry = 'own', layout = BUNDLE)
     if (rel.startsWith(`${layout.references}/`) && !released.includes(parts[2])) found.push(`${rel}: a reference of a stage not released`);
     if (rel.startsWith('framework/shaders/variants/') && !stagesHeld.has(parts[4])) found.push(`${rel}: a variant of a stage not released`);
     if (/test_api/.test(rel)) found.push(`${rel}: the page's test API`);
+    if (parts[0] === 'assets' && !assets.has(rel)) found.push(`${rel}: an asset no released stage draws`);
     if (!/\.(glsl|vert|frag|geom|json|md|html|js|mjs|css|txt|cpp|h|sh)$/.test(file)) continue;
     const text = squash(rel.endsWith('raylab_core.js') ? `${readFileSync(file, 'utf8')}\n${wasmStrings(file)}` : readFileSync(file, 'utf8'));
     for (const r of searched) if (r.code && text.includes(r.code)) found.push(`${rel}: holds ${r.where.endsWith('harness') ? 'the stand-ins of ' : 'the solution region of '}${r.where}`);

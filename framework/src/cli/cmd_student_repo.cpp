@@ -19,6 +19,7 @@
 #include "handout_folder.h"
 #include "lab_folder.h"
 #include "paths.h"
+#include "release_assets.h"
 #include "stage_list.h"
 #include "stage_sources.h"
 #include "student_release.h"
@@ -148,8 +149,7 @@ void writeCourse(const fs::path& root, const fs::path& handout,
     fs::copy_file(templates / "install.sh", root / "install.sh");
     fs::copy_file(templates / "gitignore", root / ".gitignore");
     writeFramework(root / "framework", stages);
-    for (const char* dir : {"assets/scenes", "assets/textures", "assets/meshes"})
-        copyTree(src / dir, root / dir);
+    copyReleasedAssets(root, plan, true);
     for (const StageInfo& s : allStages())
         if (stages.count(s.id))
             copyTree(s.folder() / "stage.json", root / "solution" / s.id / "stage.json");

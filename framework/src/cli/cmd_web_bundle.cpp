@@ -21,6 +21,7 @@
 #include "handout.h"
 #include "handout_folder.h"
 #include "paths.h"
+#include "release_assets.h"
 #include "stage_list.h"
 #include "stage_sources.h"
 #include "student_release.h"
@@ -95,9 +96,8 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
              {"web/index.html", "web/page.css", "web/guide.html", "web/guide.css"})
             copyTree(root / file, temp / file);
         writeTextFileAtomic(temp / "web" / "function_tables.json", releasedFunctionTables(plan));
-        for (const char* dir :
-             {"web/dist", "web/shaders", "assets/scenes", "assets/textures", "assets/meshes"})
-            copyTree(root / dir, temp / dir);
+        for (const char* dir : {"web/dist", "web/shaders"}) copyTree(root / dir, temp / dir);
+        copyReleasedAssets(temp, plan, false);
         // The page's test API stays at home (tests drive the dev page).
         for (const fs::directory_entry& e : fs::directory_iterator(temp / "web/dist/app"))
             if (e.path().filename().string().rfind("test_api.", 0) == 0) fs::remove(e.path());

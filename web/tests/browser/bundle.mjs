@@ -3,7 +3,8 @@
 //  1. a bundle holds its released stages only and no answer: no file of
 //     solution/ but stage.json (of its stages and those they build on, never a
 //     later one), no lab, reference picture or shader variant of a stage it
-//     does not release, function tables of its stages' checks only, no page
+//     does not release, no scene, picture or mesh its stages do not draw,
+//     function tables of its stages' checks only, no page
 //     test API, and no text of any stage's //@solution region (at the open
 //     level also the code the guided level gives) or of an unreleased check's
 //     stand-ins in any file, the WebAssembly core's strings included; the scan
@@ -120,11 +121,12 @@ try {
   execFileSync('cp', ['-r', guided.out, planted]);
   copyFileSync(join(projectRoot, 'solution/02-shading/blinn_phong.glsl'), join(planted, 'labs/02-shading/notes.glsl'));
   writeFileSync(join(planted, 'web/dist/notes.txt'), projectTables.lightVisibleFast.prelude);
+  copyFileSync(join(projectRoot, 'assets/scenes/pro.json'), join(planted, 'assets/scenes/pro.json'));
   const tables = JSON.parse(readFileSync(join(planted, 'web/function_tables.json'), 'utf8'));
   tables.functions.trace = projectTables.trace;
   writeFileSync(join(planted, 'web/function_tables.json'), JSON.stringify(tables));
   const caught = leaksIn(planted, released, 'guided');
-  for (const what of ['labs/02-shading/notes.glsl: holds the solution region', "web/dist/notes.txt: holds the stand-ins of lightVisibleFast's", 'web/function_tables.json: the table of trace'])
+  for (const what of ['labs/02-shading/notes.glsl: holds the solution region', "web/dist/notes.txt: holds the stand-ins of lightVisibleFast's", 'web/function_tables.json: the table of trace', 'assets/scenes/pro.json: an asset no released stage draws'])
     check(caught.some((f) => f.startsWith(what)), `planted, found: ${caught.find((f) => f.startsWith(what)) ?? `not found (${what})`}`);
   // The open level: none of the code the guided level gives and the open level takes away.
   const open = bundleOf('open', '--stages', '01-03', '--level', 'open');

@@ -1,0 +1,88 @@
+#include "release_assets.h"
+
+#include "atomic_file.h"
+#include "error.h"
+#include "fur_scene.h"
+#include "paths.h"
+#include "scene.h"
+#include "stage_catalog.h"
+#include "stage_setup.h"
+#include "student_release.h"
+
+#include <sstream>
+
+namespace raylab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// FILE (as a scene reader resolved it) relative to the project's root.
+std::string projectRelative(const fs::path& file) {
+    return fs::weakly_canonical(file)
+        .lexically_relative(fs::weakly_canonical(projectRoot()))
+        .string();
+}
+
+// SCENE (a file under assets/scenes/) and the files it names, into OUT.
+void addScene(const StageInfo& stage, const std::string& scene, std::set<std::string>& out) {
+    const fs::path file = stageSceneFile(scene);
+    out.insert(projectRelative(file));
+    if (stage.track == "raytrace") {
+        const Scene s = loadScene(file);
+        for (const fs::path& t : s.textures) out.insert(projectRelative(t));
+        if (s.skyBox)
+            for (const fs::path& face : *s.skyBox) out.insert(projectRelative(face));
+        for (const MeshObject& m : s.meshes) out.insert(projectRelative(m.file));
+    } else {
+        const FurScene s = loadFurScene(file);
+        for (const fs::path& p : {s.fur.colorMap, s.fur.pattern, s.fur.finMap})
+            if (!p.empty()) out.insert(projectRelative(p));
+        if (!s.mesh.obj.empty()) out.insert(projectRelative(s.mesh.obj));
+    }
+}
+
+// The row of assets/scenes/README.md's table kept when every scene file it
+// names (`name.json` in its first cell) is in the release.
+bool rowShipped(const std::string& line, const std::set<std::string>& files) {
+    if (line.rfind("| `", 0) != 0) return true;  // not a row of the table
+    const std::string cell = line.substr(0, line.find('|', 1));
+    for (std::size_t at = cell.find('`'); at != std::string::npos;) {
+        const std::size_t end = cell.find('`', at + 1);
+        if (end == std::string::npos) break;
+        if (!files.count("assets/scenes/" + cell.substr(at + 1, end - at - 1))) return false;
+        at = cell.find('`', end + 1);
+    }
+    return true;
+}
+
+}  // namespace
+
+std::set<std::string> releasedAssets(const std::set<std::string>& stages) {
+    std::set<std::string> files;
+    for (const StageInfo& s : allStages()) {
+        if (!stages.count(s.id)) continue;
+        addScene(s, s.scene, files);
+        for (const CheckView& view : s.checkViews)
+            if (!view.scene.empty()) addScene(s, view.scene, files);
+    }
+    return files;
+}
+
+void copyReleasedAssets(const fs::path& to, const std::vector<HandoutStage>& plan,
+                        bool scenesReadme) {
+    const fs::path root = projectRoot();
+    std::set<std::string> stages;
+    for (const HandoutStage& h : plan) stages.insert(h.stage->id);
+    const std::set<std::string> files = releasedAssets(stages);
+    for (const std::string& f : files) copyTree(root / f, to / f);
+    copyTree(root / "assets" / "LICENSES.md", to / "assets" / "LICENSES.md");
+    if (!scenesReadme) return;
+    std::istringstream in(readTextFile(root / "assets" / "scenes" / "README.md"));
+    std::string text, line;
+    while (std::getline(in, line))
+        if (rowShipped(line, files)) text += line + "\n";
+    writeTextFileAtomic(to / "assets" / "scenes" / "README.md", text);
+}
+
+}  // namespace raylab

@@ -1,0 +1,28 @@
+#pragma once
+// Which files under assets/ a release to students holds: the scenes its
+// stages draw (each stage's own and its check views') and the pictures and
+// meshes those scenes name, nothing of a stage it does not hand out (a
+// 01-03 release has no pro scene, no earth texture, no fur). Shared by
+// `raylab web-bundle` and `raylab student-repo`. Students need not read
+// this file.
+#include "handout.h"
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+namespace raylab {
+
+// The asset files STAGES (stage ids) use, relative to the project's root
+// (assets/scenes/stage01.json, assets/textures/earth.png, ...), sorted.
+// Throws Error for a scene that does not load (its file and cause).
+std::set<std::string> releasedAssets(const std::set<std::string>& stages);
+
+// The files PLAN's released stages use copied from the project into TO (a
+// release's root), and assets/LICENSES.md with them; with SCENES_README
+// also assets/scenes/README.md, its tables of scene files cut down to the
+// rows whose files are in the release.
+void copyReleasedAssets(const std::filesystem::path& to, const std::vector<HandoutStage>& plan,
+                        bool scenesReadme);
+
+}  // namespace raylab

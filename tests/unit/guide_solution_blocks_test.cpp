@@ -2,12 +2,18 @@
 // template's labs keep what needs the solution and leave out what a student
 // repository says instead; a student repository the other way round; every
 // guide of the course is well formed and, for a student repository, names no
-// command its build refuses.
+// command its build refuses or lacks, nor the reference tracer it lacks.
 #include "error.h"
 #include "lab_folder.h"
+#include "paths.h"
 #include "stage_catalog.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <regex>
+#include <set>
 
 using namespace raylab;
 
@@ -27,6 +33,26 @@ const std::string kGuide = "intro\n"
                            "<!-- /with-solution -->\n"
                            "<!-- /open -->\n"
                            "end\n";
+
+// The commands of a student repository's build: the cmd_*.cpp files that
+// framework/src/cli/CMakeLists.txt compiles when RAYLAB_STUDENT is on.
+std::set<std::string> studentBuildCommands() {
+    const std::string cmake =
+        readTextFile(projectRoot() / "framework" / "src" / "cli" / "CMakeLists.txt");
+    const std::size_t at = cmake.find("if(RAYLAB_STUDENT)");
+    const std::size_t end = cmake.find("else()", at);
+    EXPECT_NE(at, std::string::npos);
+    const std::string block = cmake.substr(at, end - at);
+    std::set<std::string> commands;
+    const std::regex file("cmd_([a-z_]+)\\.cpp");
+    for (auto m = std::sregex_iterator(block.begin(), block.end(), file);
+         m != std::sregex_iterator(); ++m) {
+        std::string name = (*m)[1];
+        std::replace(name.begin(), name.end(), '_', '-');
+        commands.insert(name);
+    }
+    return commands;
+}
 
 }  // namespace
 
@@ -72,7 +98,28 @@ TEST(GuideSolutionBlocks, NoStudentRepositoryGuideNamesWhatItsBuildRefuses) {
                         kept.find("--reference") != std::string::npos)
                 << stage.id;
             for (const char* refused :
-                 {"--solution", "--reference", "raylab demo", "-solution -->"})
+                 {"--solution", "--reference", "raylab demo", "-solution -->", "reference tracer"})
                 EXPECT_EQ(left.find(refused), std::string::npos) << stage.id << " says " << refused;
+            // Every command the guide has the student run (`raylab X` or
+            // build/raylab X) is one the student build has; the graders'
+            // command is only named, as the instructor's.
+            const std::set<std::string> commands = studentBuildCommands();
+            const std::regex run("(?:build/|`)raylab ([a-z-]+)");
+            std::string named = left;
+            for (std::size_t at;
+                 (at = named.find("grades with `raylab grade`")) != std::string::npos;)
+                named.erase(at, std::strlen("grades with `raylab grade`"));
+            for (auto m = std::sregex_iterator(named.begin(), named.end(), run);
+                 m != std::sregex_iterator(); ++m)
+                EXPECT_TRUE(commands.count((*m)[1]))
+                    << stage.id << " has students run " << m->str();
         }
+}
+
+TEST(GuideSolutionBlocks, TheStudentBuildsCommandsAreReadFromItsBuildFile) {
+    // The control for the check above: the list is the student build's,
+    // which has check and trace but not bench or rays.
+    const std::set<std::string> commands = studentBuildCommands();
+    EXPECT_TRUE(commands.count("check") && commands.count("trace") && commands.count("shader"));
+    EXPECT_FALSE(commands.count("bench") || commands.count("rays") || commands.count("demo"));
 }

@@ -6,7 +6,6 @@
 #include "paths.h"
 #include "scene.h"
 #include "stage_catalog.h"
-#include "stage_setup.h"
 #include "student_release.h"
 
 #include <sstream>
@@ -24,9 +23,8 @@ std::string projectRelative(const fs::path& file) {
         .string();
 }
 
-// SCENE (a file under assets/scenes/) and the files it names, into OUT.
-void addScene(const StageInfo& stage, const std::string& scene, std::set<std::string>& out) {
-    const fs::path file = stageSceneFile(scene);
+// FILE (a scene of STAGE's track) and the files it names, into OUT.
+void addScene(const StageInfo& stage, const fs::path& file, std::set<std::string>& out) {
     out.insert(projectRelative(file));
     if (stage.track == "raytrace") {
         const Scene s = loadScene(file);
@@ -62,9 +60,8 @@ std::set<std::string> releasedAssets(const std::set<std::string>& stages) {
     std::set<std::string> files;
     for (const StageInfo& s : allStages()) {
         if (!stages.count(s.id)) continue;
-        addScene(s, s.scene, files);
-        for (const CheckView& view : s.checkViews)
-            if (!view.scene.empty()) addScene(s, view.scene, files);
+        addScene(s, s.sceneFileOf(CheckView{}), files);  // the stage's own
+        for (const CheckView& view : s.checkViews) addScene(s, s.sceneFileOf(view), files);
     }
     return files;
 }

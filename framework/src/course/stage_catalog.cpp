@@ -355,6 +355,10 @@ std::vector<std::string> StageInfo::defines() const {
 
 fs::path StageInfo::folder() const { return projectRoot() / "solution" / id; }
 
+fs::path StageInfo::sceneFileOf(const CheckView& view) const {
+    return projectRoot() / "assets" / "scenes" / (view.scene.empty() ? scene : view.scene);
+}
+
 const std::vector<StageInfo>& allStages() {
     static const std::vector<StageInfo> stages = readStages();
     return stages;

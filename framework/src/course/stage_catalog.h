@@ -102,6 +102,9 @@ struct StageInfo {
     // GLSL has no empty arrays) and the extra defines.
     std::vector<std::string> defines() const;
     std::filesystem::path folder() const;  // solution/<id>
+    // The scene file VIEW draws: its own "scene", else the stage's, under
+    // assets/scenes/.
+    std::filesystem::path sceneFileOf(const CheckView& view) const;
     // The main program and the named ones, with their stage.json keys.
     std::vector<std::pair<std::string, const StageProgram*>> allPrograms() const;
 };

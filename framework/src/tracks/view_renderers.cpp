@@ -18,7 +18,7 @@ ViewRenderers::ViewRenderers(const StageInfo& stage, StageSources sources,
 
 std::filesystem::path ViewRenderers::sceneFileOf(const CheckView& view) const {
     if (!sceneOverride_.empty()) return sceneOverride_;  // an override puts every view in its scene
-    return stageSceneFile(view.scene.empty() ? stage_.scene : view.scene);
+    return stage_.sceneFileOf(view);
 }
 
 TrackRenderer& ViewRenderers::forView(const CheckView& view) {

@@ -26,8 +26,7 @@ json countTablesJson(const std::vector<const StageInfo*>& stages) {
             for (const CheckView& view : stage->checkViews) {
                 if (!view.fins || view.furTechnique != 0) continue;  // FurRenderer::countCheck
                 // The view as ViewRenderers draws it: its scene, its camera.
-                const auto file = projectRoot() / "assets" / "scenes" /
-                                  (view.scene.empty() ? stage->scene : view.scene);
+                const auto file = stage->sceneFileOf(view);
                 const FurScene scene = loadFurScene(file);
                 const Mesh mesh = loadFurMesh(scene);
                 const EdgeAdjacency adjacency = buildEdgeAdjacency(mesh);

@@ -208,6 +208,13 @@ TEST(GradeClass, TheSameWorkIsGradedOnceAndEachStudentKeepsTheirOwnPictures) {
     };
     const json ada = result("ada"), ben = result("ben");
     EXPECT_EQ(ada["score"], 100.0);
+    // Ben's copy ran no child: no time of its own in the class's results
+    // (ada's is the grading's), which grade --estimate adds up.
+    const json whole = json::parse(readFile(dir / "out/class.json"));
+    std::map<std::string, double> seconds;
+    for (const json& st : whole["students"]) seconds[st["name"]] = st["stages"][0]["seconds"];
+    EXPECT_GT(seconds["ada"], 0.0);
+    EXPECT_EQ(seconds["ben"], 0.0);
     ASSERT_EQ(ada["checks"].size(), ben["checks"].size());
     int pictures = 0;
     for (std::size_t i = 0; i < ada["checks"].size(); ++i) {

@@ -88,6 +88,10 @@ std::optional<StageResult> copySameWork(const StageResult& leader, const fs::pat
     const std::string fromPrefix = fs::path(fromDir).lexically_relative(out).generic_string() + "/",
                       toPrefix = fs::path(toDir).lexically_relative(out).generic_string() + "/";
     StageResult r = leader;
+    // No child graded this copy: it took no time and no memory (so that
+    // `raylab grade --estimate` counts the sharing it saw in its sample).
+    r.seconds = 0;
+    r.peakMb = 0;
     auto moved = [&](std::string& path) {
         if (path.rfind(fromPrefix, 0) == 0) path = toPrefix + path.substr(fromPrefix.size());
     };

@@ -26,7 +26,8 @@ std::optional<std::string> sameWorkKey(const StageInfo& stage,
 
 // LEADER, graded into OUT/students/<FROM>/<stage>/, as the result of the
 // same work by the student shown as TO: its pictures copied into TO's
-// folder and its image paths moved there. None, and nothing written, when
+// folder and its image paths moved there, its time and memory 0 (no child
+// ran for it). None, and nothing written, when
 // the result's texts or its log name the leader (NAMES: its folder's name
 // and how it is shown; a compiler's message names the file's folder): then
 // that student is graded on their own.

@@ -57,11 +57,12 @@ void writeHandoutFolder(const std::vector<HandoutStage>& plan, const fs::path& l
     for (const HandoutStage& h : plan) {
         const fs::path from = labs / h.stage->id, stageTo = to / h.stage->id;
         // The open level's own files and guide; none at the guided level (labs/ has them).
-        std::map<std::string, std::string> open = level == Level::Open
-                                                      ? labFolderFiles(*h.stage, Level::Open)
-                                                      : std::map<std::string, std::string>{};
-        // A guide without what needs the solution: from the stage's guide.md.
-        if (solution == SolutionText::LeaveOut &&
+        std::map<std::string, std::string> open =
+            level == Level::Open ? labFolderFiles(*h.stage, Level::Open, solution)
+                                 : std::map<std::string, std::string>{};
+        // A guided guide without what needs the solution: from the stage's
+        // guide.md (labs/ holds the one with it).
+        if (level == Level::Guided && solution == SolutionText::LeaveOut &&
             fs::is_regular_file(h.stage->folder() / "guide.md", ec))
             open["README.md"] = stageGuide(*h.stage, level, h.stage->grading, solution);
         fs::create_directories(stageTo);

@@ -119,11 +119,12 @@ std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& 
         guideAtLevel(readTextFile(source), level, displayPath(source), solution), stage, grading);
 }
 
-std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level) {
+std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level,
+                                                  SolutionText solution) {
     std::map<std::string, std::string> files = labFiles(stage, MarkedForm::Lab, level);
     std::error_code ec;  // a stage without a guide yet (just added) has no README.md
     if (std::filesystem::is_regular_file(stage.folder() / "guide.md", ec))
-        files["README.md"] = stageGuide(stage, level, stage.grading);
+        files["README.md"] = stageGuide(stage, level, stage.grading, solution);
     return files;
 }
 

@@ -46,9 +46,11 @@ std::string stageGuide(const StageInfo& stage, Level level, const StageGrading& 
                        SolutionText solution = SolutionText::Keep);
 
 // Every generated file of STAGE's lab folder at LEVEL: name -> text (the
-// shader files and README.md, the guide with the stage's own grading; none
-// for a stage without a guide.md yet).
-std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level);
+// shader files and README.md, the guide with the stage's own grading and
+// its with-solution or without-solution text; none for a stage without a
+// guide.md yet).
+std::map<std::string, std::string> labFolderFiles(const StageInfo& stage, Level level,
+                                                  SolutionText solution = SolutionText::Keep);
 
 }  // namespace raylab
 

@@ -1,7 +1,6 @@
 #include "release_assets.h"
 
 #include "atomic_file.h"
-#include "error.h"
 #include "fur_scene.h"
 #include "paths.h"
 #include "scene.h"

@@ -16,12 +16,15 @@ using nlohmann::json;
 
 namespace {
 
-// JSON has no NaN or infinity: those values are written as text.
+#ifndef RAYLAB_REFERENCES_AS_DATA
+// JSON has no NaN or infinity: those values are written as text. (Only the
+// instructors' build writes the tables.)
 json number(double v) {
     if (std::isnan(v)) return "nan";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     return v;
 }
+#endif
 
 double numberFrom(const json& v, const std::string& where) {
     if (v.is_number()) return v.get<double>();

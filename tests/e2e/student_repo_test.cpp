@@ -223,6 +223,9 @@ TEST_F(StudentRepo, RefusesWhatNeedsTheSolutionInOneLine) {
         {"render --stage 01 --solution --out x.png", "--solution: this is a student repository"},
         {"render --stage 01 --reference --out x.png", "--reference: the CPU reference tracer"},
         {"demo --scene pro", "raylab demo draws the solution"},
+        {"render --stage 01 --scene lite --out x.png",
+         "--scene lite: assets/scenes/lite.json is not in this repository (it holds the scenes "
+         "of the stages released so far: stage01.json, stage02.json, stage03-far.json)"},
         {"check --stage 04", "04"},
     };
     for (const auto& [args, why] : refused) {

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace raylab {
 
@@ -85,8 +86,23 @@ StageSetup resolveStageOptions(const StageOptions& o) {
 }
 
 std::string demoSceneFile(const std::string& name) {
-    if (name == "lite" || name == "pro")
-        return (projectRoot() / "assets" / "scenes" / (name + ".json")).string();
+    if (name == "lite" || name == "pro") {
+        const std::filesystem::path file = projectRoot() / "assets" / "scenes" / (name + ".json");
+        std::error_code ec;
+        // A student repository holds the scenes of its released stages only.
+        if (!std::filesystem::is_regular_file(file, ec)) {
+            std::set<std::string> scenes;
+            for (const auto& e : std::filesystem::directory_iterator(file.parent_path(), ec))
+                if (e.path().extension() == ".json") scenes.insert(e.path().filename().string());
+            std::string held;
+            for (const std::string& s : scenes) held += (held.empty() ? "" : ", ") + s;
+            throw Error("--scene " + name + ": assets/scenes/" + name +
+                        ".json is not in this repository (it holds the scenes of the stages "
+                        "released so far" +
+                        (held.empty() ? std::string(")") : ": " + held + ")"));
+        }
+        return file.string();
+    }
     // A guide's "--scene assets/scenes/fur/coarse.json" run from a handout
     // folder: a relative path not found here is the project's.
     const std::filesystem::path path(name);

@@ -10,10 +10,13 @@ const IN_THE_PAGE = `<p><b>In the browser page</b> you need none of the guide's
 <code>build/raylab</code> commands (they are for RayLab built on your own
 machine): edit your files in the page's editor (<b>Code: my work</b>), the
 picture follows your edits (the window of <code>raylab run</code>);
-<b>Check</b> is <code>raylab check</code>; <b>Download for submission</b>
-makes the zip to upload; <b>Screenshot</b> saves the picture. The guide's
-other views (<code>--view depth</code>, <code>raylab trace</code>) are not
-in the page yet.</p>`;
+<b>Check</b> is <code>raylab check</code>; the <b>View</b> menu draws the
+depth, normal and id views (<code>raylab render --view</code>);
+<b>Trace a pixel</b>, then a click on the picture, prints that pixel's rays
+as <code>raylab trace</code> prints your shader's; <b>Download for
+submission</b> makes the zip to upload; <b>Screenshot</b> saves the picture.
+What needs the course's own tracer (<code>--reference</code>, the
+<code>bounces</code> and <code>stack</code> views) is native only.</p>`;
 
 async function show(): Promise<void> {
   const stage = new URLSearchParams(location.search).get('stage') ?? '';

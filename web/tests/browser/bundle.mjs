@@ -178,7 +178,7 @@ try {
       note: document.getElementById('in-the-page').textContent,
     }));
     check(/^Lab \S+ - /.test(shown.heading) && shown.pictures.length >= 2 && shown.pictures.every(Boolean) &&
-      /Check is raylab check/.test(shown.note.replace(/\s+/g, ' ')) && guideProblems.length === 0,
+      /Check is raylab check/.test(shown.note.replace(/\s+/g, ' ')) && /Trace a pixel/.test(shown.note) && guideProblems.length === 0,
       `${set.name}: the Guide link shows "${shown.heading}" with ${shown.pictures.filter(Boolean).length}/${shown.pictures.length} pictures${guideProblems.length ? `; ${guideProblems.join('; ')}` : ''}`);
     await guide.close();
     if (failsHandedOut(set)) {

@@ -3,6 +3,7 @@
 // name, nothing of a stage it does not hand out. The bundle and student
 // repository tests check the same from the other side, with a search of
 // their own (web/tests/answer_search.mjs, releasedAssets).
+#include "error.h"
 #include "handout.h"
 #include "paths.h"
 #include "release_assets.h"
@@ -62,6 +63,22 @@ TEST(ReleaseAssets, TheCopyHoldsTheLicenceAndTheScenesTableOfItsFilesOnly) {
     EXPECT_NE(readme.find("## Keys"), std::string::npos);  // the format's reference stays whole
     for (const char* gone : {"`pro.json`", "`stage04.json` |", "`fur/sphere.json` |"})
         EXPECT_EQ(readme.find(gone), std::string::npos) << gone;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ReleaseAssets, ASceneOutsideTheProjectIsRefusedNotCopiedOutOfTheRelease) {
+    ScratchDir dir;  // not under the project
+    writeFile(dir / "mine.json", "{}");
+    try {
+        raylab::sceneAssets("raytrace", dir / "mine.json");
+        ADD_FAILURE() << "no error";
+    } catch (const raylab::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("is outside the project"), std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "release_assets.h"
 
 #include "atomic_file.h"
+#include "error.h"
 #include "fur_scene.h"
 #include "paths.h"
 #include "scene.h"
@@ -15,28 +16,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// FILE (as a scene reader resolved it) relative to the project's root.
-std::string projectRelative(const fs::path& file) {
-    return fs::weakly_canonical(file)
-        .lexically_relative(fs::weakly_canonical(projectRoot()))
-        .string();
-}
-
-// FILE (a scene of STAGE's track) and the files it names, into OUT.
-void addScene(const StageInfo& stage, const fs::path& file, std::set<std::string>& out) {
-    out.insert(projectRelative(file));
-    if (stage.track == "raytrace") {
-        const Scene s = loadScene(file);
-        for (const fs::path& t : s.textures) out.insert(projectRelative(t));
-        if (s.skyBox)
-            for (const fs::path& face : *s.skyBox) out.insert(projectRelative(face));
-        for (const MeshObject& m : s.meshes) out.insert(projectRelative(m.file));
-    } else {
-        const FurScene s = loadFurScene(file);
-        for (const fs::path& p : {s.fur.colorMap, s.fur.pattern, s.fur.finMap})
-            if (!p.empty()) out.insert(projectRelative(p));
-        if (!s.mesh.obj.empty()) out.insert(projectRelative(s.mesh.obj));
-    }
+// FILE (as SCENE's reader resolved it) relative to the project's root. A
+// file outside the project is refused: a release copies the project's
+// files, and the path would lead out of the release's folder.
+std::string projectRelative(const fs::path& file, const fs::path& scene) {
+    const fs::path rel =
+        fs::weakly_canonical(file).lexically_relative(fs::weakly_canonical(projectRoot()));
+    if (rel.empty() || rel.is_absolute() || *rel.begin() == "..")
+        throw Error(displayPath(scene) + ": " + file.string() +
+                    " is outside the project, and a release to students holds the project's "
+                    "files only (put it under assets/)");
+    return rel.generic_string();
 }
 
 // The row of assets/scenes/README.md's table kept when every scene file it
@@ -55,12 +45,32 @@ bool rowShipped(const std::string& line, const std::set<std::string>& files) {
 
 }  // namespace
 
+std::set<std::string> sceneAssets(const std::string& track, const fs::path& file) {
+    std::set<std::string> out;
+    auto add = [&](const fs::path& named) { out.insert(projectRelative(named, file)); };
+    add(file);
+    if (track == "raytrace") {
+        const Scene s = loadScene(file);
+        for (const fs::path& t : s.textures) add(t);
+        if (s.skyBox)
+            for (const fs::path& face : *s.skyBox) add(face);
+        for (const MeshObject& m : s.meshes) add(m.file);
+    } else {
+        const FurScene s = loadFurScene(file);
+        for (const fs::path& p : {s.fur.colorMap, s.fur.pattern, s.fur.finMap})
+            if (!p.empty()) add(p);
+        if (!s.mesh.obj.empty()) add(s.mesh.obj);
+    }
+    return out;
+}
+
 std::set<std::string> releasedAssets(const std::set<std::string>& stages) {
     std::set<std::string> files;
     for (const StageInfo& s : allStages()) {
         if (!stages.count(s.id)) continue;
-        addScene(s, s.sceneFileOf(CheckView{}), files);  // the stage's own
-        for (const CheckView& view : s.checkViews) addScene(s, s.sceneFileOf(view), files);
+        files.merge(sceneAssets(s.track, s.sceneFileOf(CheckView{})));  // the stage's own
+        for (const CheckView& view : s.checkViews)
+            files.merge(sceneAssets(s.track, s.sceneFileOf(view)));
     }
     return files;
 }

@@ -13,6 +13,11 @@
 
 namespace raylab {
 
+// FILE (a scene of TRACK: "raytrace" or a fur scene) and the pictures and
+// meshes it names, relative to the project's root. Throws Error for a
+// scene that does not load, or that names a file outside the project.
+std::set<std::string> sceneAssets(const std::string& track, const std::filesystem::path& file);
+
 // The asset files STAGES (stage ids) use, relative to the project's root
 // (assets/scenes/stage01.json, assets/textures/earth.png, ...), sorted.
 // Throws Error for a scene that does not load (its file and cause).

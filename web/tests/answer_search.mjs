@@ -87,9 +87,6 @@ function wasmStrings(coreJs) {
   return Buffer.from(m[1], 'base64').toString('latin1').replace(/[^\x20-\x7e\n]+/g, '\n');
 }
 
-// What in BUNDLE gives away an answer or holds a stage it does not release: one line per finding.
-// CARRY: solved, where the earlier stages the bundle does not release come
-// solved (their answers are the course's to give).
 // The files under assets/ that the RELEASED stages draw: their scenes (each
 // stage's own and its check views') and every .png or .obj a scene names
 // (relative to the scene's folder), with assets/LICENSES.md and the scenes'
@@ -114,6 +111,9 @@ export function releasedAssets(released) {
   return files;
 }
 
+// What in BUNDLE gives away an answer or holds a stage it does not release: one line per finding.
+// CARRY: solved, where the earlier stages the bundle does not release come
+// solved (their answers are the course's to give).
 export function leaksIn(bundle, released, level, carry = 'own', layout = BUNDLE) {
   const found = [];
   const stagesHeld = new Set(released);

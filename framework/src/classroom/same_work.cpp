@@ -9,8 +9,6 @@
 #include <sodium.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 
 namespace raylab {
 
@@ -48,11 +46,7 @@ std::optional<std::string> sameWorkKey(const StageInfo& stage, const fs::path& l
         const std::optional<std::vector<fs::path>> files = plainFiles(labRoot / id);
         if (!files) return false;
         for (const fs::path& f : *files) {
-            std::ifstream in(f, std::ios::binary);
-            if (!in) return false;
-            const std::string content((std::istreambuf_iterator<char>(in)),
-                                      std::istreambuf_iterator<char>());
-            if (in.bad()) return false;
+            const std::string content = readTextFile(f);  // throws: graded on its own
             material += id + "/" + f.lexically_relative(labRoot / id).generic_string() + '\0' +
                         std::to_string(content.size()) + '\0' + content;
         }
@@ -73,10 +67,8 @@ std::optional<std::string> sameWorkKey(const StageInfo& stage, const fs::path& l
     crypto_generichash(digest, sizeof digest,
                        reinterpret_cast<const unsigned char*>(material.data()), material.size(),
                        nullptr, 0);
-    static const char* hex = "0123456789abcdef";
-    std::string key;
-    for (unsigned char b : digest) key += {hex[b >> 4], hex[b & 15]};
-    return key;
+    char hex[2 * sizeof digest + 1];
+    return std::string(sodium_bin2hex(hex, sizeof hex, digest, sizeof digest));
 }
 
 std::optional<StageResult> copySameWork(const StageResult& leader, const fs::path& out,

@@ -75,9 +75,8 @@ StagePrograms harnessPrograms(const std::string& name, const StageSetup& setup, 
         throw Error("--function " + name + ": stage " + setup.stage->id +
                     " does not check it (stage " + stageCheckingFunction(name).id + " does)");
 #ifdef RAYLAB_STUDENT_BUILD  // the harness GLSL is data here (function_tables.h)
-    HarnessProgram h =
-        assembleHarness(withHarnessFrom(studentFunctionTables(), spec, kStudentFunctionTables),
-                        *setup.stage, setup.sources, {}, es);
+    HarnessProgram h = assembleHarness(withHarnessFrom(tablesAsData(), spec, kTablesAsData),
+                                       *setup.stage, setup.sources, {}, es);
 #else
     HarnessProgram h = assembleHarness(spec, *setup.stage, setup.sources, {}, es);
 #endif

@@ -79,10 +79,8 @@ FunctionOutcome runFunctionCheck(const FunctionSpec& checked, const StageInfo& s
 #ifdef RAYLAB_STUDENT_BUILD
     // No references or stand-ins here: the harness GLSL and the expected
     // values come from the repository's tables (function_tables.h).
-    const FunctionSpec spec =
-        withHarnessFrom(studentFunctionTables(), checked, kStudentFunctionTables);
-    const std::vector<glm::dvec4> wants =
-        tableOf(studentFunctionTables(), spec.name, kStudentFunctionTables).wants;
+    const FunctionSpec spec = withHarnessFrom(tablesAsData(), checked, kTablesAsData);
+    const std::vector<glm::dvec4> wants = tableOf(tablesAsData(), spec.name, kTablesAsData).wants;
 #else
     const FunctionSpec& spec = checked;
 #endif
@@ -113,7 +111,7 @@ std::vector<EarlierFailure> runEarlierFunctionChecks(const StageInfo& stage,
     for (const EarlierFunctionCheck& check : earlierFunctionChecks(stage, sources)) {
 #ifdef RAYLAB_STUDENT_BUILD
         // An earlier stage the repository does not release has no table.
-        if (!studentFunctionTables().count(check.spec->name)) continue;
+        if (!tablesAsData().count(check.spec->name)) continue;
 #endif
         // The earlier stage as the student's folders draw it.
         const StageSources own =

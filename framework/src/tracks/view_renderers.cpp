@@ -65,8 +65,8 @@ CountResult ViewRenderers::countCheck(const std::string& name, const CheckView& 
 #ifdef RAYLAB_STUDENT_BUILD
     // A student repository holds no reference of the count: its tables do.
     if (result.applies && result.measuredOnly)
-        result = judgedByTable(studentCountTables(), kStudentFunctionTables, stage_.id, name,
-                               view.name, result);
+        result =
+            judgedByTable(countTablesAsData(), kTablesAsData, stage_.id, name, view.name, result);
 #endif
     return result;
 }

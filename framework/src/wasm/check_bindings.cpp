@@ -32,21 +32,9 @@ namespace raylab {
 namespace {
 
 // The expected values the checks score against and their harness GLSL (no
-// reference code and no stand-in here): web/function_tables.json, read once;
-// a bundle's holds its released stages' checks.
-const std::string& tablesFile() {
-    static const std::string file = displayPath(projectRoot() / "web" / "function_tables.json");
-    return file;
-}
-const FunctionTables& tables() {
-    static const FunctionTables t =
-        parseFunctionTables(readTextFile(projectRoot() / "web" / "function_tables.json"),
-                            tablesFile(), TableCoverage::Some);
-    return t;
-}
-
+// reference code and no stand-in here): kTablesAsData (function_tables.h).
 std::vector<glm::dvec4> wantsOf(const FunctionSpec& spec) {
-    return tableOf(tables(), spec.name, tablesFile()).wants;
+    return tableOf(tablesAsData(), spec.name, kTablesAsData).wants;
 }
 
 // What a harness wrote (RGBA floats, one pixel per case), one vec4 per case.
@@ -75,7 +63,7 @@ public:
             const std::string lab = r.value("lab", "");
             sources_ = lab.empty() ? solutionSources(*stage_) : labSources(*stage_, lab);
             for (const FunctionSpec* spec : functionSpecsFor(*stage_))
-                specs_.push_back(withHarnessFrom(tables(), *spec, tablesFile()));
+                specs_.push_back(withHarnessFrom(tablesAsData(), *spec, kTablesAsData));
         } catch (const std::exception& e) { error_ = e.what(); }
     }
     std::string error() const { return error_; }
@@ -283,7 +271,8 @@ public:
         for (const FunctionOutcome& f : functions_) {
             out += formatFunctionLine(f, !failedFunctions.empty());
             if (f.passed == f.total) continue;
-            const FunctionSpec spec = withHarnessFrom(tables(), functionSpec(f.name), tablesFile());
+            const FunctionSpec spec =
+                withHarnessFrom(tablesAsData(), functionSpec(f.name), kTablesAsData);
             std::vector<const FunctionSpec*> above;
             for (const FunctionSpec& s : failedSpecs) above.push_back(&s);
             out += formatReadsFailedNote(spec, above);

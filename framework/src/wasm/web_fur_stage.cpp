@@ -2,6 +2,7 @@
 
 #include "count_tables.h"
 #include "error.h"
+#include "function_tables.h"
 #include "mesh_shapes.h"
 #include "paths.h"
 
@@ -82,14 +83,12 @@ void WebFurStage::showMesh(int furMesh) {
 }
 
 FinCountVerdict WebFurStage::finCount(long emitted, const std::string& view) const {
-    static const std::filesystem::path path = projectRoot() / "web" / "function_tables.json";
-    static const std::string file = displayPath(path);
-    static const CountTables tables = parseCountTables(readTextFile(path), file);
     CountResult measured;
     measured.measuredOnly = true;
     measured.measured = emitted;
     measured.outOf = long(adjacency_.edgeCount());
-    const CountResult r = judgedByTable(tables, file, stage_->id, "fin_count", view, measured);
+    const CountResult r =
+        judgedByTable(countTablesAsData(), kTablesAsData, stage_->id, "fin_count", view, measured);
     return {r.passed, r.detail};
 }
 

@@ -101,9 +101,9 @@ CountResult judgedByTable(const CountTables& tables, const std::string& file,
     return measured;
 }
 
-const CountTables& studentCountTables() {
-    static const CountTables tables = parseCountTables(
-        readTextFile(projectRoot() / kStudentFunctionTables), kStudentFunctionTables);
+const CountTables& countTablesAsData() {
+    static const CountTables tables =
+        parseCountTables(readTextFile(projectRoot() / kTablesAsData), kTablesAsData);
     return tables;
 }
 

@@ -43,7 +43,7 @@ CountResult judgedByTable(const CountTables& tables, const std::string& file,
                           const std::string& stage, const std::string& check,
                           const std::string& view, CountResult measured);
 
-// A student repository's (course/function_tables.json), read once.
-const CountTables& studentCountTables();
+// The count tables of kTablesAsData (function_tables.h), read once.
+const CountTables& countTablesAsData();
 
 }  // namespace raylab

@@ -165,10 +165,9 @@ const FunctionTable& tableOf(const FunctionTables& tables, const std::string& na
     return it->second;
 }
 
-const FunctionTables& studentFunctionTables() {
-    static const FunctionTables tables =
-        parseFunctionTables(readTextFile(projectRoot() / kStudentFunctionTables),
-                            kStudentFunctionTables, TableCoverage::Some);
+const FunctionTables& tablesAsData() {
+    static const FunctionTables tables = parseFunctionTables(
+        readTextFile(projectRoot() / kTablesAsData), kTablesAsData, TableCoverage::Some);
     return tables;
 }
 

@@ -58,10 +58,17 @@ const FunctionTable& tableOf(const FunctionTables& tables, const std::string& na
 FunctionSpec withHarnessFrom(const FunctionTables& tables, const FunctionSpec& spec,
                              const std::string& file);
 
-// A student repository's tables (`raylab student-repo`: its released
-// stages' checks), read once; the file's name for messages. Throws Error
-// when the file cannot be read or does not match today's cases.
-inline constexpr const char* kStudentFunctionTables = "course/function_tables.json";
-const FunctionTables& studentFunctionTables();
+// Where a build without the references (RAYLAB_REFERENCES_AS_DATA) reads
+// its tables, also the file's name for messages: a student repository's
+// course/function_tables.json (`raylab student-repo`), the page core's
+// web/function_tables.json (a bundle's: its released stages' checks).
+#ifdef RAYLAB_STUDENT_BUILD
+inline constexpr const char* kTablesAsData = "course/function_tables.json";
+#else
+inline constexpr const char* kTablesAsData = "web/function_tables.json";
+#endif
+// Those tables, read once. Throws Error when the file cannot be read or
+// does not match today's cases.
+const FunctionTables& tablesAsData();
 
 }  // namespace raylab

@@ -68,9 +68,10 @@ std::set<std::string> releasedAssets(const std::set<std::string>& stages) {
     std::set<std::string> files;
     for (const StageInfo& s : allStages()) {
         if (!stages.count(s.id)) continue;
-        files.merge(sceneAssets(s.track, s.sceneFileOf(CheckView{})));  // the stage's own
-        for (const CheckView& view : s.checkViews)
-            files.merge(sceneAssets(s.track, s.sceneFileOf(view)));
+        // Each scene once (most views share the stage's own).
+        std::set<fs::path> scenes = {s.sceneFileOf(CheckView{})};
+        for (const CheckView& view : s.checkViews) scenes.insert(s.sceneFileOf(view));
+        for (const fs::path& scene : scenes) files.merge(sceneAssets(s.track, scene));
     }
     return files;
 }

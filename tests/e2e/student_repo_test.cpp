@@ -252,6 +252,10 @@ TEST_F(StudentRepo, RefusesWhatNeedsTheSolutionInOneLine) {
         EXPECT_EQ(help.out.find("\n  " + std::string(absent) + " "), std::string::npos)
             << absent << "\n"
             << help.out;
+    // Nor does a command's help offer stage 08's scenes, which it lacks.
+    help = student("render --help");
+    EXPECT_NE(help.out.find("--scene"), std::string::npos) << help.out;
+    EXPECT_EQ(help.out.find("lite, pro"), std::string::npos) << help.out;
 }
 
 // Runs last (gtest keeps the file's order): it changes the clone.

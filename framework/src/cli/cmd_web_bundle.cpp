@@ -81,14 +81,17 @@ int cmdWebBundle(const std::string& list, const std::string& outDir, const std::
     const fs::path out = newOutputFolder(outDir);
     writeWhole(out, "the bundle", [&](const fs::path& temp) {
         fs::create_directories(temp / "labs");
-        writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course, level);
+        // The guides as a student repository has them (without what needs the
+        // solution: `--solution`, `--reference`): a bundle's reader is a student.
+        writeHandoutFolder(plan, defaultLabRoot(), temp / "labs", "", course, level,
+                           SolutionText::LeaveOut);
         if (carry == Carry::Own && !earlier.empty()) {
             // The earlier stages' folders as handed out: the page opens and
             // checks on them until the student brings in their own.
             const fs::path before = temp / "earlier";
             fs::create_directories(before);
             writeHandoutFolder(planHandout(earlier, Carry::Own), defaultLabRoot(), before, "",
-                               course, level);
+                               course, level, SolutionText::LeaveOut);
             for (const StageInfo* s : earlier) fs::rename(before / s->id, temp / "labs" / s->id);
             fs::remove_all(before);
         }

@@ -14,9 +14,12 @@ picture follows your edits (the window of <code>raylab run</code>);
 depth, normal and id views (<code>raylab render --view</code>);
 <b>Trace a pixel</b>, then a click on the picture, prints that pixel's rays
 as <code>raylab trace</code> prints your shader's; <b>Download for
-submission</b> makes the zip to upload; <b>Screenshot</b> saves the picture.
-What needs the course's own tracer (<code>--reference</code>, the
-<code>bounces</code> and <code>stack</code> views) is native only.</p>`;
+submission</b> makes the zip to upload; <b>Screenshot</b> saves the picture.</p>`;
+// Only the project's own guides name the course's tracer: a bundle's (raylab
+// web-bundle) are a student repository's, without it.
+const NATIVE_ONLY = `<p>What needs the course's own tracer (<code>--reference</code>,
+<code>--solution</code>, the <code>bounces</code> and <code>stack</code> views)
+is in RayLab's own repository only.</p>`;
 
 async function show(): Promise<void> {
   const stage = new URLSearchParams(location.search).get('stage') ?? '';
@@ -30,8 +33,9 @@ async function show(): Promise<void> {
   base.href = folder.href;
   document.head.append(base);
   document.title = `RayLab guide: ${stage}`;
-  document.getElementById('in-the-page')!.innerHTML = IN_THE_PAGE;
-  article.innerHTML = await marked.parse(await r.text());
+  const text = await r.text();
+  document.getElementById('in-the-page')!.innerHTML = IN_THE_PAGE + (/--reference|--solution/.test(text) ? NATIVE_ONLY : '');
+  article.innerHTML = await marked.parse(text);
 }
 
 show().catch((e) => {

@@ -12,7 +12,8 @@
 //  2. served by a plain static server (python3 -m http.server), a bundle of
 //     every single stage and ranges of both tracks, both levels, both carries
 //     (each holding its stages only, as in 1) open with their stages only,
-//     the Guide link shows the stage's guide rendered with its pictures, and
+//     the Guide link shows the stage's guide rendered with its pictures and
+//     naming nothing that needs the solution (a student repository's), and
 //     the page's own Check button (no test hook: a bundle has none) gives a
 //     verdict on a solved lab folder
 //     picked through the browser's folder input (passes) and, for the first
@@ -176,10 +177,15 @@ try {
       heading: document.querySelector('#guide h1')?.textContent ?? '',
       pictures: [...document.images].map((i) => i.naturalWidth > 0),
       note: document.getElementById('in-the-page').textContent,
+      text: document.getElementById('guide').textContent,
     }));
     check(/^Lab \S+ - /.test(shown.heading) && shown.pictures.length >= 2 && shown.pictures.every(Boolean) &&
       /Check is raylab check/.test(shown.note.replace(/\s+/g, ' ')) && /Trace a pixel/.test(shown.note) && guideProblems.length === 0,
       `${set.name}: the Guide link shows "${shown.heading}" with ${shown.pictures.filter(Boolean).length}/${shown.pictures.length} pictures${guideProblems.length ? `; ${guideProblems.join('; ')}` : ''}`);
+    // A student's guide, as in a student repository: nothing that needs the solution.
+    const needsSolution = shown.text.match(/--solution|--reference|raylab demo|solution\//g) ?? [];
+    check(needsSolution.length === 0 && !/own tracer/.test(shown.note),
+      `${set.name}: the guide names nothing that needs the solution${needsSolution.length ? ` (it names ${[...new Set(needsSolution)].join(', ')})` : ''}`);
     await guide.close();
     if (failsHandedOut(set)) {
       await choose(page, 'source', 'lab');

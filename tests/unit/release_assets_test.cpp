@@ -63,6 +63,30 @@ TEST(ReleaseAssets, TheCopyHoldsTheLicenceAndTheScenesTableOfItsFilesOnly) {
     EXPECT_NE(readme.find("## Keys"), std::string::npos);  // the format's reference stays whole
     for (const char* gone : {"`pro.json`", "`stage04.json` |", "`fur/sphere.json` |"})
         EXPECT_EQ(readme.find(gone), std::string::npos) << gone;
+    // The licence: its statement whole, nothing on files the release lacks,
+    // no maintainers' paragraph (tools a release does not hold).
+    const std::string project = readFile(raylab::projectRoot() / "assets/LICENSES.md");
+    const std::string licence = readFile(out / "assets/LICENSES.md");
+    EXPECT_NE(licence.find("**Nothing third-party is included**"), std::string::npos) << licence;
+    EXPECT_NE(licence.find("## Scenes (`assets/scenes/`)"), std::string::npos) << licence;
+    for (const char* gone :
+         {"## Textures", "## Meshes", "earth.png", "blob.obj", "tools/", "with-solution"}) {
+        EXPECT_NE(project.find(gone), std::string::npos)
+            << gone;  // so that its absence says something
+        EXPECT_EQ(licence.find(gone), std::string::npos) << gone << "\n" << licence;
+    }
+}
+
+TEST(ReleaseAssets, TheLicenceOfATexturedStageListsItsTexturesOnly) {
+    ScratchDir out;
+    raylab::copyReleasedAssets(
+        out.path(), raylab::planHandout(raylab::parseStageList("06"), raylab::Carry::Own), false);
+    const std::string licence = readFile(out / "assets/LICENSES.md");
+    for (const char* kept : {"## Textures (`assets/textures/`)", "| `earth.png` | 512x256 |",
+                             "| `sky_px.png`, `sky_nx.png`", "### Conventions", "`raylab-texgen`"})
+        EXPECT_NE(licence.find(kept), std::string::npos) << kept << "\n" << licence;
+    for (const char* gone : {"fur_color.png", "fur_fin.png", "## Meshes", "tools/texgen", "tests/"})
+        EXPECT_EQ(licence.find(gone), std::string::npos) << gone << "\n" << licence;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "atomic_file.h"
 #include "error.h"
 #include "fur_scene.h"
+#include "lab_folder.h"
 #include "paths.h"
 #include "scene.h"
 #include "stage_catalog.h"
@@ -29,18 +30,44 @@ std::string projectRelative(const fs::path& file, const fs::path& scene) {
     return rel.generic_string();
 }
 
-// The row of assets/scenes/README.md's table kept when every scene file it
-// names (`name.json` in its first cell) is in the release.
-bool rowShipped(const std::string& line, const std::set<std::string>& files) {
+// The row of a table of FOLDER's files (assets/scenes/README.md's scenes,
+// assets/LICENSES.md's textures) kept when every file it names (`name` in
+// its first cell) is in the release.
+bool rowShipped(const std::string& line, const std::set<std::string>& files,
+                const std::string& folder) {
     if (line.rfind("| `", 0) != 0) return true;  // not a row of the table
     const std::string cell = line.substr(0, line.find('|', 1));
     for (std::size_t at = cell.find('`'); at != std::string::npos;) {
         const std::size_t end = cell.find('`', at + 1);
         if (end == std::string::npos) break;
-        if (!files.count("assets/scenes/" + cell.substr(at + 1, end - at - 1))) return false;
+        if (!files.count(folder + cell.substr(at + 1, end - at - 1))) return false;
         at = cell.find('`', end + 1);
     }
     return true;
+}
+
+// assets/LICENSES.md as a release holds it: the sections on a folder
+// ("## Textures (`assets/textures/`)") only where the release holds files
+// of that folder, their tables cut down to its files, and without the
+// maintainers' paragraphs (<!-- with-solution -->: how to regenerate the
+// files, with tools a release does not hold).
+std::string releasedLicences(const std::set<std::string>& files) {
+    const std::string file = "assets/LICENSES.md";
+    std::istringstream in(guideAtLevel(readTextFile(projectRoot() / file), Level::Guided, file,
+                                       SolutionText::LeaveOut));
+    std::string out, line, folder;  // folder: the section's, "assets/textures/"
+    bool kept = true;
+    while (std::getline(in, line)) {
+        if (line.rfind("## ", 0) == 0) {
+            const std::size_t at = line.find("(`"), end = line.find("`)");
+            folder = at != std::string::npos && end > at ? line.substr(at + 2, end - at - 2) : "";
+            const auto first = files.lower_bound(folder);
+            kept = folder.empty() ||
+                   (first != files.end() && first->compare(0, folder.size(), folder) == 0);
+        }
+        if (kept && rowShipped(line, files, folder)) out += line + "\n";
+    }
+    return out;
 }
 
 }  // namespace
@@ -83,12 +110,12 @@ void copyReleasedAssets(const fs::path& to, const std::vector<HandoutStage>& pla
     for (const HandoutStage& h : plan) stages.insert(h.stage->id);
     const std::set<std::string> files = releasedAssets(stages);
     for (const std::string& f : files) copyTree(root / f, to / f);
-    copyTree(root / "assets" / "LICENSES.md", to / "assets" / "LICENSES.md");
+    writeTextFileAtomic(to / "assets" / "LICENSES.md", releasedLicences(files));
     if (!scenesReadme) return;
     std::istringstream in(readTextFile(root / "assets" / "scenes" / "README.md"));
     std::string text, line;
     while (std::getline(in, line))
-        if (rowShipped(line, files)) text += line + "\n";
+        if (rowShipped(line, files, "assets/scenes/")) text += line + "\n";
     writeTextFileAtomic(to / "assets" / "scenes" / "README.md", text);
 }
 

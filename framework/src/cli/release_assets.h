@@ -24,7 +24,9 @@ std::set<std::string> sceneAssets(const std::string& track, const std::filesyste
 std::set<std::string> releasedAssets(const std::set<std::string>& stages);
 
 // The files PLAN's released stages use copied from the project into TO (a
-// release's root), and assets/LICENSES.md with them; with SCENES_README
+// release's root), and assets/LICENSES.md cut down to them (its sections
+// and table rows of files the release lacks left out, and the maintainers'
+// <!-- with-solution --> paragraphs); with SCENES_README
 // also assets/scenes/README.md, its tables of scene files cut down to the
 // rows whose files are in the release.
 void copyReleasedAssets(const std::filesystem::path& to, const std::vector<HandoutStage>& plan,

@@ -15,11 +15,11 @@ depth, normal and id views (<code>raylab render --view</code>);
 <b>Trace a pixel</b>, then a click on the picture, prints that pixel's rays
 as <code>raylab trace</code> prints your shader's; <b>Download for
 submission</b> makes the zip to upload; <b>Screenshot</b> saves the picture.</p>`;
-// Only the project's own guides name the course's tracer: a bundle's (raylab
-// web-bundle) are a student repository's, without it.
-const NATIVE_ONLY = `<p>What needs the course's own tracer (<code>--reference</code>,
-<code>--solution</code>, the <code>bounces</code> and <code>stack</code> views)
-is in RayLab's own repository only.</p>`;
+// Only the project's own guides name the solution and the course's tracer:
+// a bundle's (raylab web-bundle) are a student repository's, without them.
+const NATIVE_ONLY = `<p>What needs the solution or the course's own tracer
+(<code>--solution</code>, <code>--reference</code>, the <code>bounces</code>
+and <code>stack</code> views) is in RayLab's own repository only.</p>`;
 
 async function show(): Promise<void> {
   const stage = new URLSearchParams(location.search).get('stage') ?? '';

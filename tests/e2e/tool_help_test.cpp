@@ -112,3 +112,33 @@ TEST(ToolHelp, SubmitWithoutAClusterSaysWhyAndLeavesNothing) {
                " 2 class kept 7");
     EXPECT_TRUE(fs::is_directory(dir / "kept"));
 }
+
+// tools/bench/lane_occupancy.py (docs/bench/README.md's share of busy lanes):
+// a 4x4 picture of one ray a pixel but one pixel of three. In blocks of 8,
+// two blocks run turn 1 with every lane busy; one runs turns 2 and 3 with
+// one busy lane of 8; over all turns 18 busy lanes of 32 run (56.2%).
+TEST(ToolHelp, LaneOccupancyCountsTheBusyLanesOfEachTurn) {
+    ScratchDir dir;
+    std::string pfm = "Pf\n4 4\n-1.0\n";
+    for (int i = 0; i < 16; ++i) {
+        const float rays = i == 5 ? 3.0f : 1.0f;
+        pfm.append(reinterpret_cast<const char*>(&rays), sizeof rays);  // little-endian here
+    }
+    writeFile(dir / "bounces.pfm", pfm);
+    const std::string tool =
+        "python3 " + quote((sourceDir() / "tools/bench/lane_occupancy.py").string());
+    CommandResult r = runCommand(tool + " " + quote((dir / "bounces.pfm").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.all();
+    for (const char* line :
+         {"18 rays, at most 3 a pixel", "blocks of 4 x 2: 56.2% of the lanes run busy",
+          "blocks of 2 x 4: 56.2% of the lanes run busy", "turn 1: 2 blocks, 100.0%",
+          "turn 2: 1 blocks, 12.5%", "turn 3: 1 blocks, 12.5%"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+    EXPECT_EQ(runCommand(tool + " --help").exitCode, 0);
+    // Not a bounces picture: one line, exit 1.
+    writeFile(dir / "rgb.pfm", "PF\n1 1\n-1.0\n000000000000");
+    r = runCommand(tool + " " + quote((dir / "rgb.pfm").string()));
+    EXPECT_EQ(r.exitCode, 1) << r.all();
+    EXPECT_NE(r.err.find("not a one-channel PFM"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}

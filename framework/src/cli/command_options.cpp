@@ -1,7 +1,6 @@
 #include "command_options.h"
 
-#include "paths.h"
-
+#include <filesystem>
 #include <system_error>
 
 namespace raylab {
@@ -10,16 +9,19 @@ namespace {
 
 // lite and pro are stage 08's scenes: a student repository holds them only
 // once it releases stage 08 (release_assets.h), so its help offers them
-// only then (asked for anyway, they are refused in one line: stage_setup.cpp).
-std::string sceneOptionHelp() {
-    const char* where = "a scene file (default: the stage's scene under assets/scenes/)";
+// only then (asked for anyway, they are refused in one line: demoSceneFile).
+// Looked up once, not for every command that has --scene.
+const std::string& sceneOptionHelp() {
+    static const std::string help = [] {
+        const std::string where = "a scene file (default: the stage's scene under assets/scenes/)";
 #ifdef RAYLAB_STUDENT_BUILD
-    std::error_code ec;
-    if (!fs::is_regular_file(projectRoot() / "assets/scenes/lite.json", ec) ||
-        !fs::is_regular_file(projectRoot() / "assets/scenes/pro.json", ec))
-        return where;
+        std::error_code ec;
+        for (const char* name : {"lite", "pro"})
+            if (!std::filesystem::is_regular_file(demoScenePath(name), ec)) return where;
 #endif
-    return std::string("lite, pro or ") + where;
+        return "lite, pro or " + where;
+    }();
+    return help;
 }
 
 }  // namespace

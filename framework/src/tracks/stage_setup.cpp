@@ -85,9 +85,13 @@ StageSetup resolveStageOptions(const StageOptions& o) {
     return s;
 }
 
+std::filesystem::path demoScenePath(const std::string& name) {
+    return projectRoot() / "assets" / "scenes" / (name + ".json");
+}
+
 std::string demoSceneFile(const std::string& name) {
     if (name == "lite" || name == "pro") {
-        const std::filesystem::path file = projectRoot() / "assets" / "scenes" / (name + ".json");
+        const std::filesystem::path file = demoScenePath(name);
         std::error_code ec;
         // A student repository holds the scenes of its released stages only.
         if (!std::filesystem::is_regular_file(file, ec)) {

@@ -11,6 +11,7 @@
 #include "stage_catalog.h"
 #include "stage_sources.h"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -61,6 +62,9 @@ StageSetup resolveStageOptions(const StageOptions& options);
 // folder, the project's (a guide's command run from a handout folder). Empty
 // stays empty (the stage's own scene).
 std::string demoSceneFile(const std::string& name);
+// Where the demo scene NAME ("lite" or "pro") lives, whether or not this
+// repository holds it (a student repository holds it once stage 08 is out).
+std::filesystem::path demoScenePath(const std::string& name);
 
 // The camera a check view uses in SCENE.
 Camera cameraFor(const std::optional<CameraPose>& pose, const Scene& scene);
